@@ -1,0 +1,40 @@
+# Two commands on a fresh Debian machine: `make demo` and `make test`.
+BUILD      ?= build
+BENCH_BUILD?= build-bench
+JOBS       ?= $(shell nproc)
+CMAKE_ARGS ?=
+
+.PHONY: all deps build demo test bench install clean
+
+all: build
+
+deps:
+	@scripts/install-deps
+
+$(BUILD)/CMakeCache.txt: | deps
+	cmake -S . -B $(BUILD) $(CMAKE_ARGS)
+
+build: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS)
+
+demo: build
+	$(BUILD)/preimage demo --out $(BUILD)/demo
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# Benchmarks build in Release in their own tree; results go to build/bench/*.json.
+bench: deps
+	cmake -S . -B $(BENCH_BUILD) -DCMAKE_BUILD_TYPE=Release -DPREIMAGE_BUILD_TESTS=OFF -DPREIMAGE_BUILD_BENCH=ON
+	cmake --build $(BENCH_BUILD) -j $(JOBS)
+	mkdir -p $(BUILD)/bench
+	@for b in $(BENCH_BUILD)/bench/bench_*; do \
+	  [ -x "$$b" ] || continue; n=$$(basename $$b); \
+	  echo "== $$n"; "$$b" --benchmark_out=$(BUILD)/bench/$$n.json --benchmark_out_format=json || exit 1; \
+	done
+
+install: build
+	cmake --install $(BUILD)
+
+clean:
+	rm -rf $(BUILD) $(BENCH_BUILD)

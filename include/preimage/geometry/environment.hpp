@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: Apache-2.0
+// Environment = bounded outer boundary with disjoint polygonal holes.
+#pragma once
+#include <preimage/geometry/kernel.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace preimage::geometry {
+
+using Ring = std::vector<Point>;
+
+/// A validated environment. Vertices of all rings are stored flat: ring r occupies
+/// [ring_begin(r), ring_end(r)); ring 0 is the outer boundary (counter-clockwise),
+/// rings 1.. are holes (clockwise), so free space is always to the left of every
+/// directed edge v -> next(v). Edge e is identified with its start vertex e.
+class Environment {
+ public:
+  /// Validates and normalises orientation. Throws InputError naming the element
+  /// ("obstacles[2]: edges 3 and 7 intersect near (1.5, 2)"); `outer_name` and
+  /// `hole_prefix` let callers put the element in their own terms (e.g. JSON paths).
+  static Environment make(Ring outer, std::vector<Ring> holes,
+                          const std::string& outer_name = "boundary",
+                          const std::string& hole_prefix = "obstacles");
+
+  std::size_t num_vertices() const { return pts_.size(); }
+  std::size_t num_rings() const { return ring_begin_.size() - 1; }
+  std::size_t num_holes() const { return num_rings() - 1; }
+  const std::vector<Point>& vertices() const { return pts_; }
+  const Point& vertex(std::size_t v) const { return pts_[v]; }
+
+  std::size_t ring_begin(std::size_t r) const { return ring_begin_[r]; }
+  std::size_t ring_end(std::size_t r) const { return ring_begin_[r + 1]; }
+  std::size_t ring_size(std::size_t r) const { return ring_end(r) - ring_begin(r); }
+  std::size_t ring_of(std::size_t v) const { return ring_of_[v]; }
+  std::size_t next(std::size_t v) const { return v + 1 == ring_end(ring_of_[v]) ? ring_begin(ring_of_[v]) : v + 1; }
+  std::size_t prev(std::size_t v) const { return v == ring_begin(ring_of_[v]) ? ring_end(ring_of_[v]) - 1 : v - 1; }
+  Segment edge(std::size_t e) const { return Segment(pts_[e], pts_[next(e)]); }
+
+  /// Vertices of ring r in stored (normalised) order.
+  Ring ring(std::size_t r) const;
+  /// Vertex index in the caller's input ring (before orientation was normalised).
+  std::size_t input_index(std::size_t v) const { return input_index_[v]; }
+  /// "boundary" / "obstacles[k]" (as given to make()).
+  const std::string& ring_name(std::size_t r) const { return ring_names_[r]; }
+
+  /// Turn at v: +1 convex, 0 straight (collinear neighbours), -1 reflex (w.r.t. free space).
+  int turn(std::size_t v) const { return orientation(pts_[prev(v)], pts_[v], pts_[next(v)]); }
+  bool is_reflex(std::size_t v) const { return turn(v) < 0; }
+
+  /// Free area (outer minus holes), computed in double for reports; exact value: exact_area().
+  double area() const;
+  ExactFT exact_area() const;
+  /// Bounding box of the outer boundary.
+  CGAL::Bbox_2 bbox() const;
+
+ private:
+  std::vector<Point> pts_;
+  std::vector<std::size_t> ring_begin_;
+  std::vector<std::uint32_t> ring_of_;
+  std::vector<std::size_t> input_index_;
+  std::vector<std::string> ring_names_;
+};
+
+}  // namespace preimage::geometry

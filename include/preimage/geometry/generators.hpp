@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: Apache-2.0
+// Environments for tests, benchmarks, examples and the demo. All are deterministic in
+// their seed and valid by construction (tests re-validate them exactly).
+#pragma once
+#include <preimage/geometry/environment.hpp>
+
+#include <cstdint>
+
+namespace preimage::geometry::generators {
+
+/// Random simple polygon on n random points in [0, size]^2 by space partitioning
+/// (Auer & Held, "RPG"): recursive splits by random lines make disjoint convex regions,
+/// one chain in each. O(n log n) expected; fine up to 10^5 vertices and beyond.
+Ring random_simple_polygon(std::size_t n, std::uint64_t seed, double size = 1.0);
+
+/// n vertices in all: a star-shaped outer boundary (half the vertices) around `holes`
+/// random simple polygons placed in disjoint grid cells. holes == 0 gives a random
+/// simple polygon of n vertices.
+Environment random_environment(std::size_t n, std::size_t holes, std::uint64_t seed);
+
+/// Star with `points` tips, alternating radii r_out and r_in around (0, 0).
+Ring star(std::size_t points, double r_in = 0.4, double r_out = 1.0);
+/// Comb: a base bar with `teeth` vertical teeth (vertical edges, equal x everywhere).
+Ring comb(std::size_t teeth, double tooth_width = 1.0, double gap = 1.0, double height = 4.0);
+/// Spiral corridor with `turns` turns.
+Ring spiral(double turns, double corridor = 1.0, std::size_t samples_per_turn = 36);
+/// Office floor plan: rows x cols rooms of side `room` with axis-aligned walls as
+/// obstacles, door gaps, and collinear vertices on every long wall.
+Environment office(std::size_t rows, std::size_t cols, double room = 4.0);
+
+}  // namespace preimage::geometry::generators

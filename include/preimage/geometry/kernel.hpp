@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: Apache-2.0
+// The exact-predicate core every module decides with.
+//
+// Input coordinates are doubles, so input points are represented exactly by
+// `Point` (CGAL's Epick kernel) and every orientation / incidence test on them is
+// an exact filtered predicate. Points that are *constructed* (ray hits, visibility
+// vertices on an edge) are `ExactPoint` (Epeck, lazy exact) so later decisions on
+// them stay exact. No decision anywhere uses an epsilon.
+#pragma once
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <cstddef>
+#include <string>
+
+namespace preimage::geometry {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;  // predicates exact
+using ExactKernel = CGAL::Exact_predicates_exact_constructions_kernel;
+using Point = Kernel::Point_2;
+using Vector = Kernel::Vector_2;
+using Segment = Kernel::Segment_2;
+using ExactPoint = ExactKernel::Point_2;
+using ExactFT = ExactKernel::FT;
+
+/// Sign of the turn a -> b -> c: +1 left (counter-clockwise), 0 collinear, -1 right.
+inline int orientation(const Point& a, const Point& b, const Point& c) {
+  return static_cast<int>(CGAL::orientation(a, b, c));
+}
+inline int orientation(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c) {
+  return static_cast<int>(CGAL::orientation(a, b, c));
+}
+
+/// Lexicographic order (x, then y): the sweep order used by segment sweeps.
+inline bool lex_less_xy(const Point& a, const Point& b) {
+  return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+}
+
+/// True if c lies on the closed segment [a, b] (exact).
+inline bool on_segment(const Point& a, const Point& b, const Point& c) {
+  return orientation(a, b, c) == 0 && CGAL::collinear_are_ordered_along_line(a, c, b);
+}
+/// True if c lies strictly inside the segment (a, b), not at an endpoint.
+inline bool strictly_inside_segment(const Point& a, const Point& b, const Point& c) {
+  return orientation(a, b, c) == 0 && CGAL::collinear_are_strictly_ordered_along_line(a, c, b);
+}
+
+inline ExactPoint to_exact(const Point& p) { return ExactPoint(p.x(), p.y()); }
+inline Point to_double(const ExactPoint& p) {
+  return Point(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+}
+
+/// "(1.5, 2)" — for error messages and reports.
+std::string format_point(double x, double y);
+inline std::string format_point(const Point& p) { return format_point(p.x(), p.y()); }
+
+}  // namespace preimage::geometry

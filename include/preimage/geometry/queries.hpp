@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: Apache-2.0
+// Exact one-shot queries on an Environment: point location, ray shooting, two-point
+// visibility. Each is O(n) and needs no preprocessing; VisibilityIndex answers many
+// visibility queries on one environment faster.
+#pragma once
+#include <preimage/geometry/environment.hpp>
+
+#include <optional>
+
+namespace preimage::geometry {
+
+struct Location {
+  enum class Kind { Interior, OnEdge, AtVertex, InHole, Outside };
+  Kind kind;
+  std::size_t index = 0;  // edge id (OnEdge), vertex id (AtVertex), hole number 0.. (InHole)
+  bool in_free_space() const { return kind == Kind::Interior || kind == Kind::OnEdge || kind == Kind::AtVertex; }
+};
+const char* to_string(Location::Kind k);
+
+/// Where q lies: in the open free space, on the relative interior of edge e, at vertex v,
+/// strictly inside hole h, or outside the outer boundary.
+Location locate(const Environment& env, const Point& q);
+
+struct RayHit {
+  ExactPoint point;         // exact first contact
+  std::size_t edge;         // edge containing it (for a vertex: the edge starting there)
+  std::optional<std::size_t> vertex;  // set when the contact is a vertex
+  bool along_edge = false;  // the ray runs along `edge` from its origin
+};
+
+/// First boundary point met by the ray from `origin` in direction `dir`, strictly
+/// beyond the origin. The origin is meant to lie in closed free space.
+std::optional<RayHit> shoot_ray(const Environment& env, const ExactPoint& origin,
+                                const ExactKernel::Vector_2& dir);
+inline std::optional<RayHit> shoot_ray(const Environment& env, const Point& origin, const Point& toward) {
+  return shoot_ray(env, to_exact(origin), to_exact(toward) - to_exact(origin));
+}
+
+/// Does the closed segment pq lie in closed free space (grazing the boundary allowed)?
+/// p and q may be interior points, on edges or at vertices.
+bool visible(const Environment& env, const Point& p, const Point& q);
+
+/// Is direction towards t, from boundary vertex v, inside the closed free-space wedge at v?
+bool in_free_wedge(const Environment& env, std::size_t v, const Point& t);
+
+}  // namespace preimage::geometry

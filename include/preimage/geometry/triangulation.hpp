@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: Apache-2.0
+// Constrained Delaunay triangulation of an Environment (outer boundary with holes),
+// built without CGAL's GPL triangulation packages:
+//   1. y-monotone partition by plane sweep (de Berg et al., Computational Geometry,
+//      ch. 3), ties broken lexicographically so equal y and horizontal edges are fine;
+//   2. each monotone piece ear-clipped with strict exact tests, so collinear vertices
+//      never yield zero-area triangles;
+//   3. Lawson edge flips with the exact in-circle predicate until every interior
+//      edge is locally Delaunay.
+#pragma once
+#include <preimage/geometry/environment.hpp>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace preimage::geometry {
+
+inline constexpr std::uint32_t kNone = UINT32_MAX;
+
+struct Triangle {
+  std::array<std::uint32_t, 3> v;    // environment vertex ids, counter-clockwise
+  std::array<std::uint32_t, 3> nbr;  // nbr[i]: triangle across edge (v[i], v[i+1]); kNone on the boundary
+  std::array<std::uint32_t, 3> edge; // edge[i]: environment edge id when edge i is a boundary edge, else kNone
+};
+
+class Triangulation {
+ public:
+  explicit Triangulation(const Environment& env);
+
+  const Environment& environment() const { return *env_; }
+  const std::vector<Triangle>& triangles() const { return tris_; }
+  std::size_t size() const { return tris_.size(); }
+  /// Triangle and slot holding boundary edge e (environment edge id).
+  std::pair<std::uint32_t, std::uint8_t> boundary_slot(std::size_t e) const { return edge_slot_[e]; }
+
+  /// Throws std::logic_error if any structural invariant fails (tests use this):
+  /// positive orientation, symmetric adjacency, boundary edges exactly the
+  /// environment's, triangle count n + 2h - 2, exact area equal to the free area.
+  void check() const;
+  /// Number of interior edges that are not locally Delaunay (0 after construction).
+  std::size_t non_delaunay_edges() const;
+
+ private:
+  void monotone_partition(std::vector<std::pair<std::uint32_t, std::uint32_t>>& diagonals) const;
+  void triangulate_pieces(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& diagonals);
+  void link();
+  void make_delaunay();
+  bool illegal(std::uint32_t t, int i) const;
+  void flip(std::uint32_t t, int i);
+
+  const Environment* env_;
+  std::vector<Triangle> tris_;
+  std::vector<std::pair<std::uint32_t, std::uint8_t>> edge_slot_;
+};
+
+}  // namespace preimage::geometry

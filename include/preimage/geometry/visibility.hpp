@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: Apache-2.0
+// Exact visibility polygons by triangular expansion (Bungiu, Hemmer, Hershberger,
+// Huang, Kröller 2014) over this library's own constrained Delaunay triangulation.
+// Every decision is an orientation test on input points (the query and environment
+// vertices), so it is exact and fast; only output vertices on edges are constructed,
+// lazily exact (ExactPoint).
+#pragma once
+#include <preimage/geometry/queries.hpp>
+#include <preimage/geometry/triangulation.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace preimage::geometry {
+
+/// Where a visibility-polygon vertex comes from.
+struct VisibilityVertex {
+  enum class Kind : std::uint8_t { EnvironmentVertex, RayHit, Query };
+  Kind kind;
+  std::uint32_t vertex = kNone;  // EnvironmentVertex: its id; RayHit: the vertex the ray passes through
+  std::uint32_t edge = kNone;    // RayHit: environment edge hit
+  ExactPoint point;
+};
+
+/// An edge of the visibility polygon, from vertex i to vertex i+1.
+struct VisibilityEdge {
+  enum class Kind : std::uint8_t { Solid, Free };
+  Kind kind;
+  std::uint32_t edge = kNone;    // Solid: the environment edge it lies on
+  std::uint32_t reflex = kNone;  // Free: the vertex whose occlusion causes the gap
+  bool occluder_on_left = false; // Free: the occluding obstacle lies left of the ray query -> reflex
+};
+
+/// Visibility polygon V(q), counter-clockwise, regularised (no needles).
+struct VisibilityPolygon {
+  Point query;
+  Location location;  // of the query
+  std::vector<VisibilityVertex> vertices;
+  std::vector<VisibilityEdge> edges;
+  std::vector<ExactPoint> points() const;
+  double area() const;
+};
+
+/// Preprocesses one environment (triangulation + point-location grid) for many queries.
+class VisibilityIndex {
+ public:
+  explicit VisibilityIndex(const Environment& env);
+  const Environment& environment() const { return *env_; }
+  const Triangulation& triangulation() const { return tri_; }
+
+  /// Where q is, in O(1) expected (grid of triangles).
+  Location locate(const Point& q) const;
+  /// V(q) for q in the interior, on an edge, or at a vertex; throws InputError if q is
+  /// outside free space.
+  VisibilityPolygon compute(const Point& q) const;
+
+ private:
+  struct Located { Location loc; std::uint32_t tri; int slot; };
+  Located locate_triangle(const Point& q) const;
+
+  const Environment* env_;
+  Triangulation tri_;
+  // Point-location grid over triangle bounding boxes.
+  double x0_, y0_, cw_, ch_;
+  std::uint32_t gx_, gy_;
+  std::vector<std::uint32_t> cell_off_, cell_tris_;
+};
+
+/// Removes repeated and collinear middle vertices and rotates the cycle to start at its
+/// lexicographically smallest vertex: two polygons are the same region iff equal after this.
+std::vector<ExactPoint> canonical_cycle(std::vector<ExactPoint> pts);
+
+}  // namespace preimage::geometry

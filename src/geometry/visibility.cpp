@@ -1,0 +1,290 @@
+// SPDX-License-Identifier: Apache-2.0
+#include <preimage/geometry/visibility.hpp>
+
+#include <preimage/error.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace preimage::geometry {
+
+std::vector<ExactPoint> VisibilityPolygon::points() const {
+  std::vector<ExactPoint> out;
+  out.reserve(vertices.size());
+  for (auto& v : vertices) out.push_back(v.point);
+  return out;
+}
+
+double VisibilityPolygon::area() const {
+  double twice = 0;
+  const std::size_t n = vertices.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    Point a = to_double(vertices[i].point), b = to_double(vertices[(i + 1) % n].point);
+    twice += a.x() * b.y() - b.x() * a.y();
+  }
+  return twice / 2;
+}
+
+std::vector<ExactPoint> canonical_cycle(std::vector<ExactPoint> pts) {
+  bool changed = true;
+  while (changed && pts.size() >= 3) {
+    changed = false;
+    std::vector<ExactPoint> out;
+    const std::size_t n = pts.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const ExactPoint &a = pts[(i + n - 1) % n], &b = pts[i], &c = pts[(i + 1) % n];
+      if (b == c || (a != b && orientation(a, b, c) == 0 && CGAL::collinear_are_ordered_along_line(a, b, c))) {
+        changed = true;
+        continue;
+      }
+      out.push_back(b);
+    }
+    pts.swap(out);
+  }
+  if (pts.empty()) return pts;
+  auto first = std::min_element(pts.begin(), pts.end(), [](const ExactPoint& a, const ExactPoint& b) {
+    return CGAL::compare_xy(a, b) == CGAL::SMALLER;
+  });
+  std::rotate(pts.begin(), first, pts.end());
+  return pts;
+}
+
+// ---------------------------------------------------------------- preprocessing
+VisibilityIndex::VisibilityIndex(const Environment& env) : env_(&env), tri_(env) {
+  const auto& P = env.vertices();
+  const auto& T = tri_.triangles();
+  CGAL::Bbox_2 box = env.bbox();
+  x0_ = box.xmin(), y0_ = box.ymin();
+  const double w = std::max(box.xmax() - box.xmin(), 1e-300), h = std::max(box.ymax() - box.ymin(), 1e-300);
+  const double cells = std::max<double>(1.0, static_cast<double>(T.size()));
+  const double aspect = w / h;
+  gx_ = static_cast<std::uint32_t>(std::clamp(std::sqrt(cells * aspect), 1.0, 4096.0));
+  gy_ = static_cast<std::uint32_t>(std::clamp(cells / gx_, 1.0, 4096.0));
+  cw_ = w / gx_, ch_ = h / gy_;
+  auto cx = [&](double x) { return std::min<std::uint32_t>(gx_ - 1, static_cast<std::uint32_t>(std::max(0.0, (x - x0_) / cw_))); };
+  auto cy = [&](double y) { return std::min<std::uint32_t>(gy_ - 1, static_cast<std::uint32_t>(std::max(0.0, (y - y0_) / ch_))); };
+  // Two passes (count, fill) into a CSR layout. Cells are widened by one on each side so
+  // rounding in the cell index can never lose a triangle; the containment test is exact.
+  cell_off_.assign(std::size_t(gx_) * gy_ + 1, 0);
+  for (int pass = 0; pass < 2; ++pass) {
+    std::vector<std::uint32_t> fill;
+    if (pass == 1) {
+      for (std::size_t i = 1; i < cell_off_.size(); ++i) cell_off_[i] += cell_off_[i - 1];
+      cell_tris_.resize(cell_off_.back());
+      fill.assign(cell_off_.begin(), cell_off_.end() - 1);
+    }
+    for (std::uint32_t t = 0; t < T.size(); ++t) {
+      CGAL::Bbox_2 b = P[T[t].v[0]].bbox() + P[T[t].v[1]].bbox() + P[T[t].v[2]].bbox();
+      std::uint32_t i0 = cx(b.xmin()), i1 = cx(b.xmax()), j0 = cy(b.ymin()), j1 = cy(b.ymax());
+      i0 = i0 ? i0 - 1 : 0, j0 = j0 ? j0 - 1 : 0, i1 = std::min(gx_ - 1, i1 + 1), j1 = std::min(gy_ - 1, j1 + 1);
+      for (std::uint32_t j = j0; j <= j1; ++j)
+        for (std::uint32_t i = i0; i <= i1; ++i) {
+          std::size_t c = std::size_t(j) * gx_ + i;
+          if (pass == 0) ++cell_off_[c + 1];
+          else cell_tris_[fill[c]++] = t;
+        }
+    }
+  }
+}
+
+VisibilityIndex::Located VisibilityIndex::locate_triangle(const Point& q) const {
+  const auto& P = env_->vertices();
+  const auto& T = tri_.triangles();
+  auto test = [&](std::uint32_t t) -> std::optional<Located> {
+    const Triangle& tr = T[t];
+    int o[3];
+    for (int i = 0; i < 3; ++i) {
+      o[i] = orientation(P[tr.v[i]], P[tr.v[(i + 1) % 3]], q);
+      if (o[i] < 0) return std::nullopt;
+    }
+    for (int i = 0; i < 3; ++i)
+      if (q == P[tr.v[i]]) return Located{{Location::Kind::AtVertex, tr.v[i]}, t, i};
+    for (int i = 0; i < 3; ++i)
+      if (o[i] == 0) {
+        if (tr.nbr[i] == kNone) return Located{{Location::Kind::OnEdge, tr.edge[i]}, t, i};
+        return Located{{Location::Kind::Interior, 0}, t, i};  // on a diagonal: slot marks it
+      }
+    return Located{{Location::Kind::Interior, 0}, t, -1};
+  };
+  const double fx = (q.x() - x0_) / cw_, fy = (q.y() - y0_) / ch_;
+  if (fx >= -1 && fy >= -1 && fx <= gx_ + 1 && fy <= gy_ + 1) {
+    std::uint32_t i = std::min<std::uint32_t>(gx_ - 1, static_cast<std::uint32_t>(std::max(0.0, fx)));
+    std::uint32_t j = std::min<std::uint32_t>(gy_ - 1, static_cast<std::uint32_t>(std::max(0.0, fy)));
+    std::size_t c = std::size_t(j) * gx_ + i;
+    for (auto k = cell_off_[c]; k < cell_off_[c + 1]; ++k)
+      if (auto r = test(cell_tris_[k])) return *r;
+  }
+  // Not in any triangle: classify with the exact O(n) locator (outside or in a hole).
+  return Located{geometry::locate(*env_, q), kNone, -1};
+}
+
+Location VisibilityIndex::locate(const Point& q) const { return locate_triangle(q).loc; }
+
+// ---------------------------------------------------------------- expansion
+namespace {
+
+// Symbolic polygon vertex: exact points are constructed only once, at the end.
+struct Sym {
+  VisibilityVertex::Kind kind;
+  std::uint32_t vertex, edge;
+  bool operator==(const Sym&) const = default;
+};
+
+struct Piece {  // visible part of one boundary edge, between two cone rays
+  std::uint32_t edge;
+  std::uint32_t ray_r, ray_l;  // vertices defining the rays bounding it (kNone: through the query)
+  Sym start, end;
+};
+
+}  // namespace
+
+VisibilityPolygon VisibilityIndex::compute(const Point& q) const {
+  const Located where = locate_triangle(q);
+  if (!where.loc.in_free_space())
+    throw InputError("visibility: query point " + format_point(q) + " is " + to_string(where.loc.kind) +
+                     " (not in free space)");
+  const auto& P = env_->vertices();
+  const auto& T = tri_.triangles();
+  const Environment& E = *env_;
+
+  auto sym_vertex = [](std::uint32_t v) { return Sym{VisibilityVertex::Kind::EnvironmentVertex, v, kNone}; };
+  auto sym_hit = [](std::uint32_t through, std::uint32_t e) { return Sym{VisibilityVertex::Kind::RayHit, through, e}; };
+  const Sym sym_query{VisibilityVertex::Kind::Query, kNone, kNone};
+
+  std::vector<Piece> pieces;
+  // Work item: cross edge `slot` of triangle `t` inside the cone between rays q->R and q->L.
+  struct Item { std::uint32_t t; int slot; std::uint32_t R, L; };
+  std::vector<Item> stack;
+  auto run = [&](std::uint32_t t0, int s0, std::uint32_t R0, std::uint32_t L0) {
+    stack.push_back({t0, s0, R0, L0});
+    while (!stack.empty()) {
+      Item it = stack.back();
+      stack.pop_back();
+      const Triangle& tr = T[it.t];
+      const std::uint32_t r = tr.v[it.slot], l = tr.v[(it.slot + 1) % 3];
+      if (tr.nbr[it.slot] == kNone) {  // boundary: emit the visible piece of this edge
+        const std::uint32_t e = tr.edge[it.slot];
+        Piece pc{e, it.R, it.L, {}, {}};
+        pc.start = (it.R == r || orientation(q, P[it.R], P[r]) == 0) ? sym_vertex(r) : sym_hit(it.R, e);
+        pc.end = (it.L == l || orientation(q, P[it.L], P[l]) == 0) ? sym_vertex(l) : sym_hit(it.L, e);
+        pieces.push_back(pc);
+        continue;
+      }
+      const std::uint32_t u = tr.nbr[it.slot];
+      const Triangle& nt = T[u];
+      int j = 0;
+      while (nt.v[j] != l) ++j;  // entry edge in u runs l -> r
+      const std::uint32_t c = nt.v[(j + 2) % 3];
+      const int right_slot = (j + 1) % 3, left_slot = (j + 2) % 3;  // (r, c) and (c, l)
+      const int cr = orientation(q, P[it.R], P[c]);
+      const int cl = orientation(q, P[it.L], P[c]);
+      if (cr <= 0) {
+        stack.push_back({u, left_slot, it.R, it.L});
+      } else if (cl >= 0) {
+        stack.push_back({u, right_slot, it.R, it.L});
+      } else {  // c splits the cone; right part first (counter-clockwise output)
+        stack.push_back({u, left_slot, c, it.L});
+        stack.push_back({u, right_slot, it.R, c});
+      }
+    }
+  };
+
+  VisibilityPolygon out;
+  out.query = q;
+  out.location = where.loc;
+  const Triangle& t0 = T[where.tri];
+  switch (where.loc.kind) {
+    case Location::Kind::Interior:
+      if (where.slot < 0) {
+        for (int i = 0; i < 3; ++i) run(where.tri, i, t0.v[i], t0.v[(i + 1) % 3]);
+      } else {  // on a diagonal: expand the two other edges of both triangles
+        const int s = where.slot;
+        const std::uint32_t u = t0.nbr[s];
+        int j = 0;
+        while (T[u].nbr[j] != where.tri || T[u].v[j] != t0.v[(s + 1) % 3]) ++j;
+        for (int k : {(s + 1) % 3, (s + 2) % 3}) run(where.tri, k, t0.v[k], t0.v[(k + 1) % 3]);
+        for (int k : {(j + 1) % 3, (j + 2) % 3}) run(u, k, T[u].v[k], T[u].v[(k + 1) % 3]);
+      }
+      break;
+    case Location::Kind::OnEdge: {  // q inside boundary edge (a, b) of t0
+      const int s = where.slot;
+      const std::uint32_t a = t0.v[s], b = t0.v[(s + 1) % 3];
+      pieces.push_back({t0.edge[s], kNone, b, sym_query, sym_vertex(b)});
+      for (int k : {(s + 1) % 3, (s + 2) % 3}) run(where.tri, k, t0.v[k], t0.v[(k + 1) % 3]);
+      pieces.push_back({t0.edge[s], a, kNone, sym_vertex(a), sym_query});
+      break;
+    }
+    case Location::Kind::AtVertex: {  // fan of triangles around v inside the free wedge
+      const std::uint32_t v = static_cast<std::uint32_t>(where.loc.index);
+      const std::uint32_t w = static_cast<std::uint32_t>(E.next(v)), pv = static_cast<std::uint32_t>(E.prev(v));
+      pieces.push_back({v, kNone, w, sym_vertex(v), sym_vertex(w)});
+      auto [t, s] = tri_.boundary_slot(v);  // slot s = (v, w)
+      while (true) {
+        const Triangle& tr = T[t];
+        const int opp = (s + 1) % 3;  // edge opposite v
+        run(t, opp, tr.v[opp], tr.v[(opp + 1) % 3]);
+        const int back = (s + 2) % 3;  // edge (x, v): continue counter-clockwise around v
+        if (tr.nbr[back] == kNone) break;
+        const std::uint32_t u = tr.nbr[back];
+        int k = 0;
+        while (T[u].v[k] != v) ++k;
+        t = u, s = static_cast<std::uint8_t>(k);
+      }
+      pieces.push_back({pv, pv, kNone, sym_vertex(pv), sym_vertex(v)});
+      break;
+    }
+    default: break;
+  }
+
+  // Merge consecutive pieces of one edge that continue each other.
+  auto same = [](const Sym& a, const Sym& b) { return a == b; };
+  {
+    std::vector<Piece> merged;
+    for (auto& pc : pieces) {
+      if (!merged.empty() && merged.back().edge == pc.edge && same(merged.back().end, pc.start)) {
+        merged.back().end = pc.end, merged.back().ray_l = pc.ray_l;
+      } else {
+        merged.push_back(pc);
+      }
+    }
+    while (merged.size() > 1 && merged.back().edge == merged.front().edge && same(merged.back().end, merged.front().start)) {
+      merged.front().start = merged.back().start, merged.front().ray_r = merged.back().ray_r;
+      merged.pop_back();
+    }
+    pieces.swap(merged);
+  }
+
+  const ExactPoint eq = to_exact(q);
+  auto realise = [&](const Sym& sv) -> VisibilityVertex {
+    switch (sv.kind) {
+      case VisibilityVertex::Kind::EnvironmentVertex: return {sv.kind, sv.vertex, kNone, to_exact(P[sv.vertex])};
+      case VisibilityVertex::Kind::Query: return {sv.kind, kNone, kNone, eq};
+      case VisibilityVertex::Kind::RayHit: break;
+    }
+    // q + s (w - q) on line a b:  s = cross(a - q, b - a) / cross(w - q, b - a)
+    const ExactPoint w = to_exact(P[sv.vertex]), a = to_exact(P[sv.edge]), b = to_exact(P[E.next(sv.edge)]);
+    const auto d = w - eq, ab = b - a, aq = a - eq;
+    const ExactFT s = (aq.x() * ab.y() - aq.y() * ab.x()) / (d.x() * ab.y() - d.y() * ab.x());
+    return {sv.kind, sv.vertex, sv.edge, eq + s * d};
+  };
+  const std::size_t m = pieces.size();
+  out.vertices.reserve(2 * m);
+  out.edges.reserve(2 * m);
+  std::vector<VisibilityVertex> starts;
+  starts.reserve(m);
+  for (const Piece& pc : pieces) starts.push_back(realise(pc.start));
+  for (std::size_t k = 0; k < m; ++k) {
+    const Piece& pc = pieces[k];
+    out.vertices.push_back(starts[k]);
+    out.edges.push_back({VisibilityEdge::Kind::Solid, pc.edge, kNone, false});
+    if (same(pc.end, pieces[(k + 1) % m].start)) continue;
+    // A gap along the shared cone ray q -> c: a free edge between the two hits.
+    out.vertices.push_back(realise(pc.end));
+    const bool outward = CGAL::compare_distance_to_point(eq, out.vertices.back().point, starts[(k + 1) % m].point) ==
+                         CGAL::SMALLER;
+    out.edges.push_back({VisibilityEdge::Kind::Free, kNone, pc.ray_l, !outward});
+  }
+  return out;
+}
+
+}  // namespace preimage::geometry
