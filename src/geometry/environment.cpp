@@ -128,6 +128,11 @@ Environment Environment::make(Ring outer, std::vector<Ring> holes, const std::st
       env.ring_of_.push_back(static_cast<std::uint32_t>(r));
     }
   }
+  env.exact_pts_.reserve(env.pts_.size());
+  for (const Point& p : env.pts_) env.exact_pts_.push_back(to_exact(p));
+  env.exact_lines_.reserve(env.pts_.size());
+  for (std::size_t e = 0; e < env.pts_.size(); ++e)
+    env.exact_lines_.emplace_back(env.exact_pts_[e], env.exact_pts_[env.next(e)]);
   return env;
 }
 

@@ -8,10 +8,27 @@
 
 namespace preimage::geometry {
 
+namespace {
+ExactPoint exact_vertex(const Environment* environment, const ExactPoint& query, const VisibilityVertex& v) {
+  switch (v.kind) {
+    case VisibilityVertex::Kind::EnvironmentVertex: return environment->exact_vertex(v.vertex);
+    case VisibilityVertex::Kind::Query: return query;
+    case VisibilityVertex::Kind::RayHit: break;
+  }
+  // One lazy-exact construction: the two supporting lines meet in a single point
+  // (the ray is not parallel to the edge it hits).
+  const ExactKernel::Line_2 ray(query, environment->exact_vertex(v.vertex));
+  const auto hit = CGAL::intersection(ray, environment->exact_edge_line(v.edge));
+  return *boost::get<ExactPoint>(&*hit);
+}
+}  // namespace
+
+ExactPoint VisibilityPolygon::exact(std::size_t i) const { return exact_vertex(environment, exact_query, vertices[i]); }
+
 std::vector<ExactPoint> VisibilityPolygon::points() const {
   std::vector<ExactPoint> out;
   out.reserve(vertices.size());
-  for (auto& v : vertices) out.push_back(v.point);
+  for (std::size_t i = 0; i < vertices.size(); ++i) out.push_back(exact(i));
   return out;
 }
 
@@ -19,7 +36,7 @@ double VisibilityPolygon::area() const {
   double twice = 0;
   const std::size_t n = vertices.size();
   for (std::size_t i = 0; i < n; ++i) {
-    Point a = to_double(vertices[i].point), b = to_double(vertices[(i + 1) % n].point);
+    const Point &a = vertices[i].approx, &b = vertices[(i + 1) % n].approx;
     twice += a.x() * b.y() - b.x() * a.y();
   }
   return twice / 2;
@@ -190,7 +207,9 @@ VisibilityPolygon VisibilityIndex::compute(const Point& q) const {
   };
 
   VisibilityPolygon out;
+  out.environment = env_;
   out.query = q;
+  out.exact_query = to_exact(q);
   out.location = where.loc;
   const Triangle& t0 = T[where.tri];
   switch (where.loc.kind) {
@@ -254,18 +273,17 @@ VisibilityPolygon VisibilityIndex::compute(const Point& q) const {
     pieces.swap(merged);
   }
 
-  const ExactPoint eq = to_exact(q);
   auto realise = [&](const Sym& sv) -> VisibilityVertex {
     switch (sv.kind) {
-      case VisibilityVertex::Kind::EnvironmentVertex: return {sv.kind, sv.vertex, kNone, to_exact(P[sv.vertex])};
-      case VisibilityVertex::Kind::Query: return {sv.kind, kNone, kNone, eq};
+      case VisibilityVertex::Kind::EnvironmentVertex: return {sv.kind, sv.vertex, kNone, P[sv.vertex]};
+      case VisibilityVertex::Kind::Query: return {sv.kind, kNone, kNone, q};
       case VisibilityVertex::Kind::RayHit: break;
     }
-    // q + s (w - q) on line a b:  s = cross(a - q, b - a) / cross(w - q, b - a)
-    const ExactPoint w = to_exact(P[sv.vertex]), a = to_exact(P[sv.edge]), b = to_exact(P[E.next(sv.edge)]);
-    const auto d = w - eq, ab = b - a, aq = a - eq;
-    const ExactFT s = (aq.x() * ab.y() - aq.y() * ab.x()) / (d.x() * ab.y() - d.y() * ab.x());
-    return {sv.kind, sv.vertex, sv.edge, eq + s * d};
+    // Double rounding of the hit, for drawing only; decisions never read it.
+    const Point &w = P[sv.vertex], &a = P[sv.edge], &b = P[E.next(sv.edge)];
+    const double dx = w.x() - q.x(), dy = w.y() - q.y(), ex = b.x() - a.x(), ey = b.y() - a.y();
+    const double s = ((a.x() - q.x()) * ey - (a.y() - q.y()) * ex) / (dx * ey - dy * ex);
+    return {sv.kind, sv.vertex, sv.edge, Point(q.x() + s * dx, q.y() + s * dy)};
   };
   const std::size_t m = pieces.size();
   out.vertices.reserve(2 * m);
@@ -278,10 +296,26 @@ VisibilityPolygon VisibilityIndex::compute(const Point& q) const {
     out.vertices.push_back(starts[k]);
     out.edges.push_back({VisibilityEdge::Kind::Solid, pc.edge, kNone, false});
     if (same(pc.end, pieces[(k + 1) % m].start)) continue;
-    // A gap along the shared cone ray q -> c: a free edge between the two hits.
+    // A gap along the shared cone ray q -> c between the two hits X (end of this piece)
+    // and Y (start of the next).
     out.vertices.push_back(realise(pc.end));
-    const bool outward = CGAL::compare_distance_to_point(eq, out.vertices.back().point, starts[(k + 1) % m].point) ==
-                         CGAL::SMALLER;
+    const Sym &X = pc.end, &Y = pieces[(k + 1) % m].start;
+    const bool both_vertices = X.kind == VisibilityVertex::Kind::EnvironmentVertex &&
+                               Y.kind == VisibilityVertex::Kind::EnvironmentVertex;
+    if (both_vertices && E.next(X.vertex) == Y.vertex) {  // the ray runs along an edge
+      out.edges.push_back({VisibilityEdge::Kind::Solid, X.vertex, kNone, false});
+      continue;
+    }
+    if (both_vertices && E.next(Y.vertex) == X.vertex) {
+      out.edges.push_back({VisibilityEdge::Kind::Solid, Y.vertex, kNone, false});
+      continue;
+    }
+    // Usually one end is c itself, the occluder, nearer to q; otherwise compare exactly.
+    bool outward;
+    if (X == sym_vertex(pc.ray_l)) outward = true;
+    else if (Y == sym_vertex(pc.ray_l)) outward = false;
+    else outward = CGAL::compare_distance_to_point(out.exact_query, exact_vertex(env_, out.exact_query, out.vertices.back()),
+                                                   exact_vertex(env_, out.exact_query, starts[(k + 1) % m])) == CGAL::SMALLER;
     out.edges.push_back({VisibilityEdge::Kind::Free, kNone, pc.ray_l, !outward});
   }
   return out;

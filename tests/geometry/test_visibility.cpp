@@ -25,7 +25,7 @@ int compare_with_cgal(const Environment& env, std::size_t interior, std::size_t 
     // Every edge tag says something true.
     const std::size_t n = mine.vertices.size();
     for (std::size_t i = 0; i < n; ++i) {
-      const auto &p = mine.vertices[i].point, &r = mine.vertices[(i + 1) % n].point;
+      const auto p = mine.exact(i), r = mine.exact((i + 1) % n);
       const auto& e = mine.edges[i];
       if (e.kind == VisibilityEdge::Kind::Solid) {
         const auto s = to_exact(env.vertex(e.edge)), t = to_exact(env.vertex(env.next(e.edge)));

@@ -72,6 +72,7 @@ class CgalVisibility {
   }
 
   const Arrangement& arrangement() const { return arr_; }
+  const TEV& tev() const { return *tev_; }
 
  private:
   const Environment& env_;

@@ -29,6 +29,10 @@ class Environment {
   std::size_t num_holes() const { return num_rings() - 1; }
   const std::vector<Point>& vertices() const { return pts_; }
   const Point& vertex(std::size_t v) const { return pts_[v]; }
+  /// The same vertex as a lazy-exact point (shared handle, no construction per call).
+  const ExactPoint& exact_vertex(std::size_t v) const { return exact_pts_[v]; }
+  /// Supporting line of edge e, lazy-exact, built once (ray hits are constructed against it).
+  const ExactKernel::Line_2& exact_edge_line(std::size_t e) const { return exact_lines_[e]; }
 
   std::size_t ring_begin(std::size_t r) const { return ring_begin_[r]; }
   std::size_t ring_end(std::size_t r) const { return ring_begin_[r + 1]; }
@@ -57,6 +61,8 @@ class Environment {
 
  private:
   std::vector<Point> pts_;
+  std::vector<ExactPoint> exact_pts_;
+  std::vector<ExactKernel::Line_2> exact_lines_;
   std::vector<std::size_t> ring_begin_;
   std::vector<std::uint32_t> ring_of_;
   std::vector<std::size_t> input_index_;

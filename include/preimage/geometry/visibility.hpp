@@ -13,13 +13,16 @@
 
 namespace preimage::geometry {
 
-/// Where a visibility-polygon vertex comes from.
+/// A visibility-polygon vertex, described exactly by where it comes from: an environment
+/// vertex, the query itself, or the point where the ray from the query through `vertex`
+/// meets environment edge `edge`. Exact coordinates are constructed on demand
+/// (VisibilityPolygon::exact); `approx` is a double rounding for drawing and reports.
 struct VisibilityVertex {
   enum class Kind : std::uint8_t { EnvironmentVertex, RayHit, Query };
   Kind kind;
   std::uint32_t vertex = kNone;  // EnvironmentVertex: its id; RayHit: the vertex the ray passes through
   std::uint32_t edge = kNone;    // RayHit: environment edge hit
-  ExactPoint point;
+  Point approx;
 };
 
 /// An edge of the visibility polygon, from vertex i to vertex i+1.
@@ -33,10 +36,16 @@ struct VisibilityEdge {
 
 /// Visibility polygon V(q), counter-clockwise, regularised (no needles).
 struct VisibilityPolygon {
+  const Environment* environment = nullptr;
   Point query;
+  ExactPoint exact_query;
   Location location;  // of the query
   std::vector<VisibilityVertex> vertices;
   std::vector<VisibilityEdge> edges;
+
+  /// Exact coordinates of vertex i (lazy exact construction for ray hits).
+  ExactPoint exact(std::size_t i) const;
+  /// All vertices, exact.
   std::vector<ExactPoint> points() const;
   double area() const;
 };
