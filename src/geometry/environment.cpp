@@ -13,6 +13,12 @@
 
 namespace preimage::geometry {
 
+std::string format_number(double v) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.12g", v);
+  return buf;
+}
+
 std::string format_point(double x, double y) {
   char buf[96];
   std::snprintf(buf, sizeof buf, "(%.12g, %.12g)", x, y);

@@ -50,6 +50,8 @@ inline Point to_double(const ExactPoint& p) {
   return Point(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
 }
 
+/// "1.5" — shortest faithful-enough decimal for messages.
+std::string format_number(double v);
 /// "(1.5, 2)" — for error messages and reports.
 std::string format_point(double x, double y);
 inline std::string format_point(const Point& p) { return format_point(p.x(), p.y()); }

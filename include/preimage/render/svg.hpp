@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: Apache-2.0
+// SVG drawing of environments with overlays, reused by every module's figures.
+#pragma once
+#include <preimage/geometry/environment.hpp>
+
+#include <string>
+#include <vector>
+
+namespace preimage::render {
+
+using geometry::Point;
+
+struct Style {
+  std::string fill = "none";
+  std::string stroke = "#222";
+  double stroke_width = 1.5;  // pixels
+  double opacity = 1.0;
+  std::string dash;           // SVG dasharray, e.g. "4 3"
+};
+
+/// A canvas mapping a world box (y up) onto pixels (y down), with a legend.
+class SvgCanvas {
+ public:
+  explicit SvgCanvas(CGAL::Bbox_2 world, double width_px = 720, double margin_px = 16);
+
+  /// Free space white, obstacles and outside grey, walls dark.
+  void environment(const geometry::Environment& env);
+  void polygon(const std::vector<Point>& pts, const Style& style, const std::string& title = "");
+  void polyline(const std::vector<Point>& pts, const Style& style, const std::string& title = "");
+  void segment(const Point& a, const Point& b, const Style& style, const std::string& title = "");
+  void point(const Point& p, double radius_px, const Style& style, const std::string& title = "");
+  void label(const Point& p, const std::string& text, double size_px = 12, const std::string& colour = "#222");
+  /// Adds a legend entry drawn with the given style.
+  void legend(const std::string& text, const Style& style);
+
+  std::string str() const;
+  void save(const std::string& path) const;
+
+  double scale() const { return scale_; }
+
+ private:
+  std::string px(const Point& p) const;
+  std::string style_attr(const Style& s) const;
+  CGAL::Bbox_2 world_;
+  double scale_, margin_, width_, height_;
+  std::string body_;
+  std::vector<std::pair<std::string, Style>> legend_;
+};
+
+/// XML/HTML text escaping.
+std::string escape(const std::string& text);
+
+}  // namespace preimage::render

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: Apache-2.0
+// The JSON scene format (docs/scene-format.md): an environment plus the slots the
+// modules read (start/goal, robot size, landmarks, beams). Every error names its
+// JSON path, e.g. "$.environment.obstacles[2][3]: expected [x, y] with finite numbers".
+#pragma once
+#include <preimage/geometry/environment.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace preimage::scene {
+
+using geometry::Point;
+
+/// A labelled point landmark (landmark module; also beams in the unbounded plane).
+struct Landmark {
+  std::string label;
+  Point at;
+};
+
+/// A sensor beam: a segment from `from` to `to` with a label. Beams sharing a label are
+/// indistinguishable; a directed beam reports which way it was crossed.
+struct Beam {
+  std::string label;
+  Point from, to;
+  bool directed = true;
+};
+
+struct Scene {
+  std::string name;
+  std::string description;
+  std::optional<geometry::Environment> environment;
+  std::optional<Point> start, goal;
+  std::optional<double> robot_radius;
+  std::vector<Landmark> landmarks;
+  std::vector<Beam> beams;
+
+  /// The environment, or InputError("<source>: the scene has no environment").
+  const geometry::Environment& require_environment() const;
+  std::string source;  // file name, for messages
+};
+
+/// Parses scene JSON text. `source` (a file name) prefixes syntax errors as
+/// "source:line:column: ...". Throws InputError.
+Scene parse_scene(const std::string& text, const std::string& source = "<scene>");
+/// Reads and parses a scene file. Throws InputError (also for unreadable files).
+Scene load_scene(const std::string& path);
+
+/// The scene as JSON in the same format (round-trips through parse_scene).
+nlohmann::json to_json(const Scene& scene);
+void save_scene(const Scene& scene, const std::string& path);
+
+/// Reads a whole file, or throws InputError naming it.
+std::string read_file(const std::string& path);
+
+}  // namespace preimage::scene

@@ -1,0 +1,196 @@
+// SPDX-License-Identifier: Apache-2.0
+#include <preimage/scene/scene.hpp>
+
+#include <preimage/error.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace preimage::scene {
+
+using nlohmann::json;
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open file");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  if (in.bad()) throw InputError(path + ": read error");
+  return ss.str();
+}
+
+const geometry::Environment& Scene::require_environment() const {
+  if (!environment) throw InputError((source.empty() ? "scene" : source) + ": the scene has no environment");
+  return *environment;
+}
+
+namespace {
+
+[[noreturn]] void fail(const std::string& path, const std::string& what) { throw InputError(path + ": " + what); }
+
+std::string type_name(const json& j) { return j.type_name(); }
+
+void allow_keys(const json& obj, const std::string& path, std::initializer_list<const char*> keys) {
+  if (!obj.is_object()) fail(path, "expected an object, got " + type_name(obj));
+  std::set<std::string> ok(keys.begin(), keys.end());
+  for (auto it = obj.begin(); it != obj.end(); ++it)
+    if (!ok.count(it.key())) {
+      std::string list;
+      for (auto* k : keys) list += (list.empty() ? "" : ", ") + std::string(k);
+      fail(path + "." + it.key(), "unknown key (expected one of: " + list + ")");
+    }
+}
+
+double number(const json& j, const std::string& path) {
+  if (!j.is_number()) fail(path, "expected a number, got " + type_name(j));
+  const double v = j.get<double>();
+  if (!std::isfinite(v)) fail(path, "number is not finite");
+  return v;
+}
+
+Point point(const json& j, const std::string& path) {
+  if (!j.is_array() || j.size() != 2) fail(path, "expected [x, y], got " + (j.is_array() ? "an array of " + std::to_string(j.size()) : type_name(j)));
+  return Point(number(j[0], path + "[0]"), number(j[1], path + "[1]"));
+}
+
+geometry::Ring ring(const json& j, const std::string& path) {
+  if (!j.is_array()) fail(path, "expected an array of [x, y] vertices, got " + type_name(j));
+  geometry::Ring r;
+  for (std::size_t i = 0; i < j.size(); ++i) r.push_back(point(j[i], path + "[" + std::to_string(i) + "]"));
+  return r;
+}
+
+std::string string_at(const json& j, const std::string& path) {
+  if (!j.is_string()) fail(path, "expected a string, got " + type_name(j));
+  return j.get<std::string>();
+}
+
+json point_json(const Point& p) { return json::array({p.x(), p.y()}); }
+
+}  // namespace
+
+Scene parse_scene(const std::string& text, const std::string& source) {
+  json doc;
+  try {
+    doc = json::parse(text);
+  } catch (const json::parse_error& e) {
+    // byte is 1-based position of the error: turn it into line:column.
+    std::size_t line = 1, col = 1;
+    for (std::size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) {
+      if (text[i] == '\n') ++line, col = 1;
+      else ++col;
+    }
+    std::string what = e.what();
+    auto colon = what.rfind(": ");
+    throw InputError(source + ":" + std::to_string(line) + ":" + std::to_string(col) + ": JSON syntax error: " +
+                     (colon == std::string::npos ? what : what.substr(colon + 2)));
+  }
+  Scene s;
+  s.source = source;
+  allow_keys(doc, "$", {"name", "description", "environment", "start", "goal", "robot", "landmarks", "beams"});
+  if (doc.contains("name")) s.name = string_at(doc["name"], "$.name");
+  if (doc.contains("description")) s.description = string_at(doc["description"], "$.description");
+  if (doc.contains("environment")) {
+    const json& e = doc["environment"];
+    allow_keys(e, "$.environment", {"boundary", "obstacles"});
+    if (!e.contains("boundary")) fail("$.environment", "missing key \"boundary\"");
+    geometry::Ring outer = ring(e["boundary"], "$.environment.boundary");
+    std::vector<geometry::Ring> holes;
+    if (e.contains("obstacles")) {
+      const json& obs = e["obstacles"];
+      if (!obs.is_array()) fail("$.environment.obstacles", "expected an array of polygons, got " + type_name(obs));
+      for (std::size_t i = 0; i < obs.size(); ++i) holes.push_back(ring(obs[i], "$.environment.obstacles[" + std::to_string(i) + "]"));
+    }
+    s.environment = geometry::Environment::make(std::move(outer), std::move(holes), "$.environment.boundary",
+                                                "$.environment.obstacles");
+  }
+  if (doc.contains("start")) s.start = point(doc["start"], "$.start");
+  if (doc.contains("goal")) s.goal = point(doc["goal"], "$.goal");
+  if (doc.contains("robot")) {
+    allow_keys(doc["robot"], "$.robot", {"radius"});
+    if (doc["robot"].contains("radius")) {
+      const double r = number(doc["robot"]["radius"], "$.robot.radius");
+      if (r < 0) fail("$.robot.radius", "must not be negative");
+      s.robot_radius = r;
+    }
+  }
+  if (doc.contains("landmarks")) {
+    const json& L = doc["landmarks"];
+    if (!L.is_array()) fail("$.landmarks", "expected an array, got " + type_name(L));
+    for (std::size_t i = 0; i < L.size(); ++i) {
+      const std::string p = "$.landmarks[" + std::to_string(i) + "]";
+      allow_keys(L[i], p, {"label", "at"});
+      if (!L[i].contains("at")) fail(p, "missing key \"at\"");
+      Landmark lm{L[i].contains("label") ? string_at(L[i]["label"], p + ".label") : std::to_string(i + 1),
+                  point(L[i]["at"], p + ".at")};
+      s.landmarks.push_back(std::move(lm));
+    }
+  }
+  if (doc.contains("beams")) {
+    const json& B = doc["beams"];
+    if (!B.is_array()) fail("$.beams", "expected an array, got " + type_name(B));
+    for (std::size_t i = 0; i < B.size(); ++i) {
+      const std::string p = "$.beams[" + std::to_string(i) + "]";
+      allow_keys(B[i], p, {"label", "from", "to", "directed"});
+      for (const char* k : {"label", "from", "to"})
+        if (!B[i].contains(k)) fail(p, std::string("missing key \"") + k + "\"");
+      Beam b{string_at(B[i]["label"], p + ".label"), point(B[i]["from"], p + ".from"), point(B[i]["to"], p + ".to"), true};
+      if (B[i].contains("directed")) {
+        if (!B[i]["directed"].is_boolean()) fail(p + ".directed", "expected true or false, got " + type_name(B[i]["directed"]));
+        b.directed = B[i]["directed"].get<bool>();
+      }
+      if (b.from == b.to) fail(p, "beam endpoints coincide");
+      s.beams.push_back(std::move(b));
+    }
+  }
+  return s;
+}
+
+Scene load_scene(const std::string& path) { return parse_scene(read_file(path), path); }
+
+json to_json(const Scene& s) {
+  json doc = json::object();
+  if (!s.name.empty()) doc["name"] = s.name;
+  if (!s.description.empty()) doc["description"] = s.description;
+  if (s.environment) {
+    const auto& env = *s.environment;
+    json env_j;
+    json outer = json::array();
+    for (auto& p : env.ring(0)) outer.push_back(point_json(p));
+    env_j["boundary"] = outer;
+    json obs = json::array();
+    for (std::size_t r = 1; r < env.num_rings(); ++r) {
+      json h = json::array();
+      for (auto& p : env.ring(r)) h.push_back(point_json(p));
+      obs.push_back(h);
+    }
+    if (!obs.empty()) env_j["obstacles"] = obs;
+    doc["environment"] = env_j;
+  }
+  if (s.start) doc["start"] = point_json(*s.start);
+  if (s.goal) doc["goal"] = point_json(*s.goal);
+  if (s.robot_radius) doc["robot"] = {{"radius", *s.robot_radius}};
+  if (!s.landmarks.empty()) {
+    json L = json::array();
+    for (auto& l : s.landmarks) L.push_back({{"label", l.label}, {"at", point_json(l.at)}});
+    doc["landmarks"] = L;
+  }
+  if (!s.beams.empty()) {
+    json B = json::array();
+    for (auto& b : s.beams)
+      B.push_back({{"label", b.label}, {"from", point_json(b.from)}, {"to", point_json(b.to)}, {"directed", b.directed}});
+    doc["beams"] = B;
+  }
+  return doc;
+}
+
+void save_scene(const Scene& s, const std::string& path) {
+  std::ofstream out(path);
+  if (!out) throw InputError(path + ": cannot write file");
+  out << to_json(s).dump(2) << "\n";
+  if (!out) throw InputError(path + ": write error");
+}
+
+}  // namespace preimage::scene
