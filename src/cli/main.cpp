@@ -1,1 +1,35 @@
-int main(){return 0;}
+// SPDX-License-Identifier: Apache-2.0
+// preimage: the command line. Each module registers its subcommands here.
+#include "common.hpp"
+
+#include <preimage/error.hpp>
+
+#include <iostream>
+
+int main(int argc, char** argv) {
+  CLI::App app{"preimage: exact combinatorial planning and filtering in the plane"};
+  app.set_version_flag("--version", std::string("preimage ") + PREIMAGE_VERSION);
+  app.require_subcommand(1);
+  preimage::cli::add_geometry_commands(app);
+  preimage::cli::add_demo_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    // One line, naming what was wrong; usage is one --help away.
+    std::cerr << "preimage: " << e.what() << " (see preimage --help)\n";
+    return e.get_exit_code() ? e.get_exit_code() : 2;
+  } catch (const preimage::InputError& e) {
+    std::cerr << "preimage: " << e.what() << "\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "preimage: internal error: " << e.what() << "\n";
+    return 3;
+  }
+  return 0;
+}

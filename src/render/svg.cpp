@@ -93,7 +93,11 @@ void SvgCanvas::label(const Point& p, const std::string& text, double size, cons
            num(size) + "\" fill=\"" + escape(colour) + "\">" + escape(text) + "</text>\n";
 }
 
-void SvgCanvas::legend(const std::string& text, const Style& s) { legend_.emplace_back(text, s); }
+void SvgCanvas::legend(const std::string& text, const Style& s) {
+  for (auto& [t, st] : legend_)
+    if (t == text) return;  // one entry per meaning, however many times it is drawn
+  legend_.emplace_back(text, s);
+}
 
 std::string SvgCanvas::str() const {
   const double legend_h = legend_.empty() ? 0 : 8 + 18.0 * static_cast<double>(legend_.size());

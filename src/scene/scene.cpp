@@ -86,6 +86,10 @@ Scene parse_scene(const std::string& text, const std::string& source) {
     auto colon = what.rfind(": ");
     throw InputError(source + ":" + std::to_string(line) + ":" + std::to_string(col) + ": JSON syntax error: " +
                      (colon == std::string::npos ? what : what.substr(colon + 2)));
+  } catch (const json::exception& e) {  // e.g. a number too large for a double
+    std::string what = e.what();
+    auto bracket = what.find("] ");
+    throw InputError(source + ": JSON error: " + (bracket == std::string::npos ? what : what.substr(bracket + 2)));
   }
   Scene s;
   s.source = source;

@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "common.hpp"
+
+#include <preimage/error.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+namespace preimage::cli {
+
+geometry::Point parse_point(const std::string& text, const std::string& flag) {
+  auto bad = [&] { return InputError(flag + ": expected X,Y (two numbers separated by a comma), got '" + text + "'"); };
+  const auto comma = text.find(',');
+  if (comma == std::string::npos) throw bad();
+  auto num = [&](const std::string& s) {
+    std::size_t used = 0;
+    double v;
+    try {
+      v = std::stod(s, &used);
+    } catch (const std::exception&) {
+      throw bad();
+    }
+    while (used < s.size() && std::isspace(static_cast<unsigned char>(s[used]))) ++used;
+    if (used != s.size() || !std::isfinite(v)) throw bad();
+    return v;
+  };
+  return geometry::Point(num(text.substr(0, comma)), num(text.substr(comma + 1)));
+}
+
+std::string exact_string(const geometry::ExactFT& v) {
+  std::ostringstream ss;
+  ss << CGAL::exact(v);
+  return ss.str();
+}
+
+void make_dirs(const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw InputError(dir + ": cannot create directory (" + ec.message() + ")");
+}
+
+void print_json(const nlohmann::json& j) { std::cout << j.dump(2) << "\n"; }
+
+}  // namespace preimage::cli

@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: Apache-2.0
+// Shared pieces of the preimage command line.
+#pragma once
+#include <preimage/geometry/kernel.hpp>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace preimage::cli {
+
+/// "1.5,2" -> point; InputError "<flag>: expected X,Y, got '...'".
+geometry::Point parse_point(const std::string& text, const std::string& flag);
+/// Exact coordinate as a decimal-free rational string ("7/2", "-3").
+std::string exact_string(const geometry::ExactFT& v);
+/// Creates a directory (and parents); InputError if impossible.
+void make_dirs(const std::string& dir);
+/// Prints JSON to stdout, pretty.
+void print_json(const nlohmann::json& j);
+
+/// Registration of each command group.
+void add_geometry_commands(CLI::App& app);
+void add_demo_command(CLI::App& app);
+
+}  // namespace preimage::cli

@@ -1,0 +1,19 @@
+// SPDX-License-Identifier: Apache-2.0
+// `preimage demo`: every module adds one section (figures + a line of text per result).
+#pragma once
+#include <preimage/render/html.hpp>
+
+#include <string>
+
+namespace preimage::cli {
+
+struct DemoContext {
+  std::string out_dir;
+  render::HtmlReport& report;
+  /// Writes an SVG next to the report and inlines it as a figure.
+  void figure(const std::string& file, const std::string& svg, const std::string& caption);
+};
+
+void demo_geometry(DemoContext& ctx);
+
+}  // namespace preimage::cli

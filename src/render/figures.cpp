@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: Apache-2.0
+#include <preimage/render/figures.hpp>
+
+namespace preimage::render {
+
+CGAL::Bbox_2 scene_box(const scene::Scene& s) {
+  CGAL::Bbox_2 b;
+  bool any = false;
+  auto add = [&](const Point& p) { b = any ? b + p.bbox() : p.bbox(), any = true; };
+  if (s.environment)
+    for (auto& p : s.environment->vertices()) add(p);
+  for (auto& l : s.landmarks) add(l.at);
+  for (auto& bm : s.beams) add(bm.from), add(bm.to);
+  if (s.start) add(*s.start);
+  if (s.goal) add(*s.goal);
+  if (!any) return CGAL::Bbox_2(0, 0, 1, 1);
+  const double pad = 0.03 * std::max(b.xmax() - b.xmin(), b.ymax() - b.ymin()) + 1e-9;
+  return CGAL::Bbox_2(b.xmin() - pad, b.ymin() - pad, b.xmax() + pad, b.ymax() + pad);
+}
+
+void draw_scene(SvgCanvas& c, const scene::Scene& s) {
+  if (s.environment) c.environment(*s.environment);
+  if (!s.beams.empty()) {
+    Style beam{"none", "#d93025", 2.0, 1.0, ""};
+    for (auto& b : s.beams) {
+      c.segment(b.from, b.to, beam, "beam " + b.label);
+      c.label(Point((b.from.x() + b.to.x()) / 2, (b.from.y() + b.to.y()) / 2), b.label, 13, "#d93025");
+    }
+    c.legend("beams", beam);
+  }
+  if (!s.landmarks.empty()) {
+    Style lm{"#1a73e8", "#0b3d91", 1.0, 1.0, ""};
+    for (auto& l : s.landmarks) {
+      c.point(l.at, 4, lm, "landmark " + l.label);
+      c.label(l.at, " " + l.label, 12, "#0b3d91");
+    }
+    c.legend("landmarks", lm);
+  }
+  if (s.start) {
+    Style st{"#188038", "#0d652d", 1.0, 1.0, ""};
+    c.point(*s.start, 6, st, "start");
+    c.legend("start", st);
+  }
+  if (s.goal) {
+    Style g{"#a142f4", "#681da8", 1.0, 1.0, ""};
+    c.point(*s.goal, 6, g, "goal");
+    c.legend("goal", g);
+  }
+}
+
+void draw_triangulation(SvgCanvas& c, const geometry::Triangulation& t) {
+  const auto& P = t.environment().vertices();
+  Style tri{"none", "#9aa0a6", 0.6, 1.0, ""};
+  for (const auto& T : t.triangles())
+    for (int i = 0; i < 3; ++i)
+      if (T.nbr[i] != geometry::kNone && T.nbr[i] > static_cast<std::uint32_t>(&T - t.triangles().data()))
+        c.segment(P[T.v[i]], P[T.v[(i + 1) % 3]], tri);
+  c.legend("constrained Delaunay triangulation", tri);
+}
+
+void draw_visibility(SvgCanvas& c, const geometry::VisibilityPolygon& v, const std::string& colour,
+                     const std::string& label) {
+  std::vector<Point> pts;
+  for (auto& vv : v.vertices) pts.push_back(vv.approx);
+  c.polygon(pts, Style{colour, "none", 0, 0.35, ""});
+  const std::size_t n = v.vertices.size();
+  Style solid{"none", colour, 2.5, 1.0, ""}, free{"none", "#d93025", 1.5, 1.0, "5 3"};
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& e = v.edges[i];
+    const bool is_free = e.kind == geometry::VisibilityEdge::Kind::Free;
+    c.segment(pts[i], pts[(i + 1) % n], is_free ? free : solid,
+              is_free ? "free edge: occlusion at vertex " + std::to_string(e.reflex) : "on edge " + std::to_string(e.edge));
+  }
+  c.point(v.query, 4.5, Style{"#202124", "#ffffff", 1.5, 1.0, ""}, "query " + geometry::format_point(v.query));
+  c.legend(label, Style{colour, colour, 2.5, 0.6, ""});
+  c.legend("free edges (occlusion gaps)", free);
+}
+
+}  // namespace preimage::render

@@ -1,0 +1,109 @@
+// Scene files and importers: JSON-path errors, round trips, and the real floor plans.
+#include <gtest/gtest.h>
+#include <preimage/error.hpp>
+#include <preimage/geometry/visibility.hpp>
+#include <preimage/scene/import.hpp>
+
+#include "support/cgal_oracle.hpp"
+
+using namespace preimage;
+
+namespace {
+std::string error_of(const std::string& text) {
+  try {
+    scene::parse_scene(text, "t.json");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+std::string fixture(const std::string& rel) { return std::string(PREIMAGE_FIXTURES) + "/" + rel; }
+std::string load_error(const std::string& path) {
+  try {
+    scene::load_scene(path);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+TEST(Scene, ErrorsNameTheJsonPath) {
+  EXPECT_EQ(error_of(R"({"environment": {"boundary": [[0,0],[1,0],[1,1]], "walls": 1}})"),
+            "$.environment.walls: unknown key (expected one of: boundary, obstacles)");
+  EXPECT_EQ(error_of(R"({"environment": {"boundary": [[0,0],[1,0],[1,"x"]]}})"),
+            "$.environment.boundary[2][1]: expected a number, got string");
+  EXPECT_EQ(error_of(R"({"environment": {"boundary": [[0,0],[1,0],[1]]}})"),
+            "$.environment.boundary[2]: expected [x, y], got an array of 1");
+  EXPECT_EQ(error_of(R"({"environment": {}})"), "$.environment: missing key \"boundary\"");
+  EXPECT_EQ(error_of(R"({"start": [0, 1e999]})"), "t.json: JSON error: number overflow parsing '1e999'");
+  EXPECT_EQ(error_of(R"({"robot": {"radius": -1}})"), "$.robot.radius: must not be negative");
+  EXPECT_EQ(error_of(R"({"beams": [{"label": "a", "from": [0,0]}]})"), "$.beams[0]: missing key \"to\"");
+  EXPECT_EQ(error_of(R"({"beams": [{"label": "a", "from": [0,0], "to": [1,1], "directed": "yes"}]})"),
+            "$.beams[0].directed: expected true or false, got string");
+  EXPECT_EQ(error_of("{\n  \"name\": \"x\",\n  oops\n}").rfind("t.json:3:3: JSON syntax error", 0), 0u);
+}
+
+TEST(Scene, GeometryErrorsCarryTheJsonPath) {
+  EXPECT_EQ(load_error(fixture("scenes/self_intersecting.json")),
+            "$.environment.boundary: edges 1 and 3 intersect near (1, 1)");
+  EXPECT_EQ(load_error(fixture("scenes/touching_obstacles.json")),
+            "$.environment.obstacles[1] vertex 0 touches $.environment.obstacles[0] vertex 2 at (3, 3)");
+  EXPECT_EQ(load_error(fixture("scenes/bad_coordinate.json")),
+            "$.environment.obstacles[0][2][1]: expected a number, got string");
+  EXPECT_EQ(load_error(fixture("scenes/missing.json")), fixture("scenes/missing.json") + ": cannot open file");
+}
+
+TEST(Scene, RoundTripsThroughJson) {
+  auto s = scene::load_scene(std::string(PREIMAGE_FIXTURES) + "/../../examples/gallery.json");
+  ASSERT_TRUE(s.environment);
+  EXPECT_EQ(s.environment->num_holes(), 3u);
+  EXPECT_EQ(s.landmarks.size(), 2u);
+  EXPECT_EQ(s.beams.size(), 1u);
+  auto again = scene::parse_scene(scene::to_json(s).dump());
+  EXPECT_EQ(scene::to_json(again), scene::to_json(s));
+  EXPECT_EQ(again.environment->exact_area(), s.environment->exact_area());
+}
+
+TEST(Import, VisiLibityFiles) {
+  auto s = scene::import_visilibity(scene::read_file(fixture("visilibity/room_with_pillar.txt")), "room.txt");
+  ASSERT_TRUE(s.environment);
+  EXPECT_EQ(s.environment->num_holes(), 1u);
+  EXPECT_EQ(s.environment->exact_area(), geometry::ExactFT(56));
+  try {
+    scene::import_visilibity(scene::read_file(fixture("visilibity/bad_token.txt")), "bad.txt");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "bad.txt:3: expected 'x y', got '10 zero'");
+  }
+  try {
+    scene::import_visilibity(scene::read_file(fixture("visilibity/hole_crossing_wall.txt")), "h.txt");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("h.txt: holes[0] edge", 0), 0u) << e.what();
+    EXPECT_NE(std::string(e.what()).find("(holes[0] starts at line 7)"), std::string::npos) << e.what();
+  }
+}
+
+// The two real HouseExpo plans (vertices 1 cm apart, many near-collinear runs): they
+// import, triangulate, and give the same visibility polygons as CGAL.
+TEST(Import, RealHouseExpoFloorPlansMatchCgalVisibility) {
+  for (const char* name : {"house_expo_room_0000.json", "house_expo_room_1451.json"}) {
+    const std::string path = std::string(PREIMAGE_SHARED_DATA) + "/floorplans/" + name;
+    auto s = scene::import_houseexpo(scene::read_file(path), path);
+    ASSERT_TRUE(s.environment) << name;
+    const auto& env = *s.environment;
+    EXPECT_GT(env.num_vertices(), 100u);
+    geometry::VisibilityIndex index(env);
+    EXPECT_NO_THROW(index.triangulation().check());
+    preimage::testing::CgalVisibility cgal(env);
+    int compared = 0;
+    for (auto& q : preimage::testing::random_queries(env, 150, 0, 80, 42)) {
+      auto mine = geometry::canonical_cycle(index.compute(q.p).points());
+      auto theirs = geometry::canonical_cycle(cgal.compute(q.p, q.loc));
+      EXPECT_EQ(mine, theirs) << name << " query " << geometry::format_point(q.p);
+      ++compared;
+    }
+    EXPECT_EQ(compared, 230);
+  }
+}
