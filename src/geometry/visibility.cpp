@@ -158,8 +158,9 @@ struct Piece {  // visible part of one boundary edge, between two cone rays
 VisibilityPolygon VisibilityIndex::compute(const Point& q) const {
   const Located where = locate_triangle(q);
   if (!where.loc.in_free_space())
-    throw InputError("visibility: query point " + format_point(q) + " is " + to_string(where.loc.kind) +
-                     " (not in free space)");
+    throw InputError("visibility: query point " + format_point(q) + " is not in free space: it lies " +
+                     (where.loc.kind == Location::Kind::InHole ? "inside " + env_->ring_name(where.loc.index + 1)
+                                                               : "outside " + env_->ring_name(0)));
   const auto& P = env_->vertices();
   const auto& T = tri_.triangles();
   const Environment& E = *env_;
