@@ -1,0 +1,136 @@
+// Trapezoidal decomposition: exact areas, adjacency, and cell counts against CGAL's
+// vertical decomposition of the arrangement (test-only oracle).
+#include <gtest/gtest.h>
+#include <preimage/decompose/trapezoidal.hpp>
+#include <preimage/geometry/generators.hpp>
+#include <preimage/geometry/queries.hpp>
+#include <preimage/scene/import.hpp>
+
+#include "support/cgal_oracle.hpp"
+
+#include <CGAL/Arr_vertical_decomposition_2.h>
+
+#include <cmath>
+#include <fstream>
+
+using namespace preimage;
+using decompose::TrapezoidalDecomposition;
+using geometry::Environment;
+
+namespace {
+
+// Number of free-space faces after adding, for every vertex, the vertical extensions CGAL's
+// decompose() reports that run into free space.
+std::size_t cgal_cell_count(const Environment& env) {
+  using Arr = preimage::testing::CgalVisibility::Arrangement;
+  using EK = geometry::ExactKernel;
+  preimage::testing::CgalVisibility oracle(env);
+  const Arr& arr = oracle.arrangement();
+  using Entry = std::pair<Arr::Vertex_const_handle,
+                          std::pair<boost::optional<boost::variant<Arr::Vertex_const_handle, Arr::Halfedge_const_handle,
+                                                                   Arr::Face_const_handle>>,
+                                    boost::optional<boost::variant<Arr::Vertex_const_handle, Arr::Halfedge_const_handle,
+                                                                   Arr::Face_const_handle>>>>;
+  std::vector<Entry> vd;
+  CGAL::decompose(arr, std::back_inserter(vd));
+  Arr cut = arr;
+  std::vector<EK::Segment_2> extra;
+  for (auto& [v, below_above] : vd) {
+    const EK::Point_2 p = v->point();
+    const geometry::Point pd = geometry::to_double(p);
+    std::size_t id = 0;
+    while (env.vertex(id) != pd) ++id;
+    for (int up = 0; up < 2; ++up) {
+      const auto& obj = up ? below_above.second : below_above.first;
+      if (!obj) continue;
+      const geometry::Point probe(pd.x(), up ? std::nextafter(pd.y(), INFINITY) : std::nextafter(pd.y(), -INFINITY));
+      if (!geometry::in_free_wedge(env, id, probe)) continue;
+      EK::Point_2 q;
+      if (auto* w = boost::get<Arr::Vertex_const_handle>(&*obj)) q = (*w)->point();
+      else if (auto* h = boost::get<Arr::Halfedge_const_handle>(&*obj)) {
+        EK::Line_2 line((*h)->source()->point(), (*h)->target()->point());
+        q = EK::Point_2(p.x(), line.y_at_x(p.x()));
+      } else continue;
+      extra.emplace_back(p, q);
+    }
+  }
+  CGAL::insert(cut, extra.begin(), extra.end());
+  return cut.number_of_faces() - 1 - env.num_holes();
+}
+
+void check(const Environment& env, const std::string& what, bool with_cgal = true) {
+  TrapezoidalDecomposition d(env);
+  geometry::ExactFT total = 0;
+  for (std::size_t c = 0; c < d.cells().size(); ++c) {
+    const auto a = d.area(c);
+    EXPECT_GT(a, 0) << what << ": cell " << c << " has no area";
+    total += a;
+    EXPECT_LT(d.cells()[c].x_left, d.cells()[c].x_right);
+  }
+  EXPECT_EQ(total, env.exact_area()) << what << ": cell areas do not sum to the free area";
+  // Adjacency: the cell graph of one connected free space is connected.
+  std::vector<int> seen(d.cells().size(), 0);
+  std::vector<std::uint32_t> stack{0};
+  seen[0] = 1;
+  while (!stack.empty()) {
+    auto c = stack.back();
+    stack.pop_back();
+    for (auto x : d.extensions_of(c))
+      for (auto o : {d.extensions()[x].left_cell, d.extensions()[x].right_cell})
+        if (!seen[o]) seen[o] = 1, stack.push_back(o);
+  }
+  EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<long>(d.cells().size())) << what << ": cell graph not connected";
+  // Extensions run through free space, on x = const, between their two cells.
+  for (std::size_t x = 0; x < d.extensions().size(); ++x) {
+    auto [p, q] = d.segment(x);
+    EXPECT_EQ(p.x(), q.x());
+    EXPECT_LT(p.y(), q.y());
+    const auto& ext = d.extensions()[x];
+    EXPECT_EQ(d.cells()[ext.left_cell].x_right, ext.x);
+    EXPECT_EQ(d.cells()[ext.right_cell].x_left, ext.x);
+  }
+  if (with_cgal) {
+    EXPECT_EQ(d.cells().size(), cgal_cell_count(env)) << what;
+  }
+}
+
+}  // namespace
+
+TEST(Trapezoidal, SquareWithHole) {
+  auto env = Environment::make({{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {{{1, 1}, {2, 1}, {2, 2}, {1, 2}}});
+  TrapezoidalDecomposition d(env);
+  // x = 1 and x = 2 each carry two extensions (above and below the hole): 4 cells.
+  EXPECT_EQ(d.cells().size(), 4u);
+  EXPECT_EQ(d.extensions().size(), 4u);
+  check(env, "square with hole");
+}
+
+TEST(Trapezoidal, GeneralPositionTriangleFan) {
+  auto env = Environment::make({{0, 0}, {5, 1}, {3, 2}, {6, 4}, {1, 3}}, {});
+  check(env, "pentagon");
+}
+
+TEST(Trapezoidal, RandomEnvironmentsMatchCgal) {
+  for (std::uint64_t s = 1; s <= 10; ++s) check(geometry::generators::random_environment(100 + 40 * s, s % 5, s), "seed " + std::to_string(s));
+}
+
+TEST(Trapezoidal, DegenerateInputsMatchCgal) {
+  // Axis-aligned office plans: equal x everywhere, vertical walls, collinear vertices.
+  check(geometry::generators::office(2, 3), "office 2x3");
+  check(geometry::generators::office(4, 4), "office 4x4");
+  check(Environment::make(geometry::generators::comb(8), {}), "comb");
+  for (std::uint64_t s = 1; s <= 15; ++s)
+    check(preimage::testing::snapped_random_environment(30 + 2 * s, s % 3, s, 40.0), "snapped seed " + std::to_string(s));
+  // Vertices stacked on one vertical line with free space between them.
+  check(Environment::make({{0, 0}, {6, 0}, {6, 6}, {0, 6}},
+                          {{{2, 1}, {3, 1.5}, {2, 2}}, {{2, 3}, {3, 3.5}, {2, 4}}, {{2, 5}, {1, 5.2}, {1.5, 5.5}}}),
+        "stacked vertical vertices");
+}
+
+TEST(Trapezoidal, RealHouseExpoFloorPlansMatchCgal) {
+  for (const char* name : {"house_expo_room_0000.json", "house_expo_room_1451.json"}) {
+    const std::string path = std::string(PREIMAGE_SHARED_DATA) + "/floorplans/" + name;
+    if (!std::ifstream(path)) GTEST_SKIP() << "shared data not found beside the checkout: " << path;
+    check(*scene::import_houseexpo(scene::read_file(path), path).environment, name);
+  }
+}
