@@ -1,7 +1,7 @@
 // Trapezoidal decomposition: exact areas, adjacency, and cell counts against CGAL's
 // vertical decomposition of the arrangement (test-only oracle).
 #include <gtest/gtest.h>
-#include <preimage/decompose/trapezoidal.hpp>
+#include <preimage/decompose/cell_locator.hpp>
 #include <preimage/geometry/generators.hpp>
 #include <preimage/geometry/queries.hpp>
 #include <preimage/scene/import.hpp>
@@ -132,5 +132,34 @@ TEST(Trapezoidal, RealHouseExpoFloorPlansMatchCgal) {
     const std::string path = std::string(PREIMAGE_SHARED_DATA) + "/floorplans/" + name;
     if (!std::ifstream(path)) GTEST_SKIP() << "shared data not found beside the checkout: " << path;
     check(*scene::import_houseexpo(scene::read_file(path), path).environment, name);
+  }
+}
+
+TEST(CellLocator, AgreesWithExactContainment) {
+  for (std::uint64_t s = 1; s <= 6; ++s) {
+    auto env = preimage::testing::snapped_random_environment(30 + 4 * s, s % 3, s, 50.0);
+    TrapezoidalDecomposition d(env);
+    decompose::CellLocator loc(d);
+    // Integer queries land on vertices, edges, extensions and event lines often.
+    const auto box = env.bbox();
+    int in = 0, out = 0;
+    for (int x = static_cast<int>(box.xmin()) - 1; x <= static_cast<int>(box.xmax()) + 1; ++x)
+      for (int y = static_cast<int>(box.ymin()) - 1; y <= static_cast<int>(box.ymax()) + 1; ++y) {
+        const geometry::Point q(x, y);
+        const bool free = geometry::locate(env, q).in_free_space();
+        auto c = loc.locate(q);
+        ASSERT_EQ(c.has_value(), free) << "seed " << s << " at " << geometry::format_point(q);
+        if (!c) {
+          ++out;
+          continue;
+        }
+        ++in;
+        // The cell's closure contains q: exact test against its corners.
+        auto poly = d.polygon(*c);
+        for (std::size_t i = 0; i < poly.size(); ++i)
+          EXPECT_GE(CGAL::orientation(poly[i], poly[(i + 1) % poly.size()], geometry::to_exact(q)), CGAL::COLLINEAR);
+      }
+    EXPECT_GT(in, 100);
+    EXPECT_GT(out, 100);
   }
 }

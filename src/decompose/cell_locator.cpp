@@ -1,0 +1,153 @@
+// SPDX-License-Identifier: Apache-2.0
+#include <preimage/decompose/cell_locator.hpp>
+
+#include <algorithm>
+
+namespace preimage::decompose {
+
+using geometry::lex_less_xy;
+using geometry::orientation;
+
+namespace {
+constexpr std::uint32_t kNil = UINT32_MAX;
+}
+
+CellLocator::CellLocator(const TrapezoidalDecomposition& d) : d_(&d) {
+  const auto& cells = d.cells();
+  for (auto& c : cells) xs_.push_back(c.x_left), xs_.push_back(c.x_right);
+  std::sort(xs_.begin(), xs_.end());
+  xs_.erase(std::unique(xs_.begin(), xs_.end()), xs_.end());
+  std::vector<std::uint32_t> by_left(cells.size()), by_right(cells.size());
+  for (std::uint32_t i = 0; i < cells.size(); ++i) by_left[i] = by_right[i] = i;
+  std::sort(by_left.begin(), by_left.end(), [&](auto a, auto b) { return cells[a].x_left < cells[b].x_left; });
+  std::sort(by_right.begin(), by_right.end(), [&](auto a, auto b) { return cells[a].x_right < cells[b].x_right; });
+  nodes_.reserve(cells.size() * 24);
+  std::uint32_t root = kNil;
+  std::size_t li = 0, ri = 0;
+  for (std::size_t j = 0; j + 1 < xs_.size(); ++j) {
+    // Cells ending at xs_[j] leave (compared in the slab they span), then cells starting enter.
+    while (ri < by_right.size() && cells[by_right[ri]].x_right <= xs_[j]) root = erase(root, by_right[ri++]);
+    while (li < by_left.size() && cells[by_left[li]].x_left <= xs_[j]) root = insert(root, by_left[li++]);
+    roots_.push_back(root);
+  }
+}
+
+bool CellLocator::cell_below(std::uint32_t a, std::uint32_t b) const {
+  // Floors of cells crossing one slab do not cross: one exact orientation decides.
+  const auto& env = d_->environment();
+  const std::uint32_t ea = d_->cells()[a].floor, eb = d_->cells()[b].floor;
+  auto ends = [&](std::uint32_t e) {
+    const Point &p = env.vertex(e), &q = env.vertex(env.next(e));
+    return lex_less_xy(p, q) ? std::pair(p, q) : std::pair(q, p);
+  };
+  auto [La, Ra] = ends(ea);
+  auto [Lb, Rb] = ends(eb);
+  if (La == Lb) return orientation(La, Ra, Rb) > 0;
+  if (lex_less_xy(Lb, La)) return orientation(Lb, Rb, La) < 0;
+  return orientation(La, Ra, Lb) > 0;
+}
+
+std::uint32_t CellLocator::copy(std::uint32_t n) {
+  nodes_.push_back(nodes_[n]);
+  return static_cast<std::uint32_t>(nodes_.size() - 1);
+}
+
+std::uint32_t CellLocator::merge(std::uint32_t a, std::uint32_t b) {
+  if (a == kNil) return b;
+  if (b == kNil) return a;
+  if (nodes_[a].prio > nodes_[b].prio) {
+    const std::uint32_t c = copy(a);
+    const std::uint32_t r = merge(nodes_[a].right, b);
+    nodes_[c].right = r;
+    return c;
+  }
+  const std::uint32_t c = copy(b);
+  const std::uint32_t l = merge(a, nodes_[b].left);
+  nodes_[c].left = l;
+  return c;
+}
+
+std::uint32_t CellLocator::insert(std::uint32_t root, std::uint32_t cell) {
+  rng_ ^= rng_ << 13, rng_ ^= rng_ >> 7, rng_ ^= rng_ << 17;  // xorshift priorities
+  const std::uint32_t prio = static_cast<std::uint32_t>(rng_ >> 32);
+  // Split the path by key, copying it, and hang the new node where its priority belongs.
+  struct Rec {
+    CellLocator* self;
+    std::uint32_t cell, prio;
+    std::uint32_t go(std::uint32_t n) {
+      if (n == kNil || self->nodes_[n].prio < prio) {
+        std::uint32_t l = kNil, r = kNil;
+        split(n, l, r);
+        self->nodes_.push_back({cell, prio, l, r});
+        return static_cast<std::uint32_t>(self->nodes_.size() - 1);
+      }
+      const std::uint32_t c = self->copy(n);
+      if (self->cell_below(cell, self->nodes_[n].cell)) {
+        const std::uint32_t l = go(self->nodes_[n].left);
+        self->nodes_[c].left = l;
+      } else {
+        const std::uint32_t r = go(self->nodes_[n].right);
+        self->nodes_[c].right = r;
+      }
+      return c;
+    }
+    void split(std::uint32_t n, std::uint32_t& l, std::uint32_t& r) {
+      if (n == kNil) { l = r = kNil; return; }
+      const std::uint32_t c = self->copy(n);
+      if (self->cell_below(cell, self->nodes_[n].cell)) {
+        std::uint32_t ll, lr;
+        split(self->nodes_[n].left, ll, lr);
+        self->nodes_[c].left = lr;
+        l = ll, r = c;
+      } else {
+        std::uint32_t rl, rr;
+        split(self->nodes_[n].right, rl, rr);
+        self->nodes_[c].right = rl;
+        l = c, r = rr;
+      }
+    }
+  };
+  return Rec{this, cell, prio}.go(root);
+}
+
+std::uint32_t CellLocator::erase(std::uint32_t root, std::uint32_t cell) {
+  if (root == kNil) return kNil;
+  const Node n = nodes_[root];
+  if (n.cell == cell) return merge(n.left, n.right);
+  const std::uint32_t c = copy(root);
+  if (cell_below(cell, n.cell)) {
+    const std::uint32_t l = erase(n.left, cell);
+    nodes_[c].left = l;
+  } else {
+    const std::uint32_t r = erase(n.right, cell);
+    nodes_[c].right = r;
+  }
+  return c;
+}
+
+std::optional<std::uint32_t> CellLocator::search(std::uint32_t n, const Point& q) const {
+  const auto& env = d_->environment();
+  auto side = [&](std::uint32_t e) {  // > 0: q above edge e (taken left to right)
+    const Point &p = env.vertex(e), &r = env.vertex(env.next(e));
+    return lex_less_xy(p, r) ? orientation(p, r, q) : orientation(r, p, q);
+  };
+  while (n != kNil) {
+    const Trapezoid& t = d_->cells()[nodes_[n].cell];
+    if (side(t.floor) < 0) n = nodes_[n].left;
+    else if (side(t.ceiling) > 0) n = nodes_[n].right;
+    else return nodes_[n].cell;
+  }
+  return std::nullopt;
+}
+
+std::optional<std::uint32_t> CellLocator::locate(const Point& q) const {
+  if (xs_.size() < 2 || q.x() < xs_.front() || q.x() > xs_.back()) return std::nullopt;
+  std::size_t j = static_cast<std::size_t>(std::upper_bound(xs_.begin(), xs_.end(), q.x()) - xs_.begin());
+  j = std::min(j == 0 ? 0 : j - 1, roots_.size() - 1);
+  if (auto c = search(roots_[j], q)) return c;
+  // On an event line, the closed cell may lie in the slab to the left (e.g. on a wall).
+  if (j > 0 && q.x() == xs_[j]) return search(roots_[j - 1], q);
+  return std::nullopt;
+}
+
+}  // namespace preimage::decompose
