@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("preimage ") + PREIMAGE_VERSION);
   app.require_subcommand(1);
   preimage::cli::add_geometry_commands(app);
+  preimage::cli::add_decompose_commands(app);
   preimage::cli::add_demo_command(app);
   try {
     app.parse(argc, argv);

@@ -1,7 +1,8 @@
 // Trapezoidal decomposition: exact areas, adjacency, and cell counts against CGAL's
 // vertical decomposition of the arrangement (test-only oracle).
 #include <gtest/gtest.h>
-#include <preimage/decompose/cell_locator.hpp>
+#include <preimage/decompose/planner.hpp>
+#include <preimage/error.hpp>
 #include <preimage/geometry/generators.hpp>
 #include <preimage/geometry/queries.hpp>
 #include <preimage/scene/import.hpp>
@@ -162,4 +163,38 @@ TEST(CellLocator, AgreesWithExactContainment) {
     EXPECT_GT(in, 100);
     EXPECT_GT(out, 100);
   }
+}
+
+TEST(Planner, PathsAreCollisionFreeAndConnectStartToGoal) {
+  for (std::uint64_t s = 1; s <= 5; ++s) {
+    auto env = geometry::generators::random_environment(150 + 50 * s, s, s);
+    TrapezoidalDecomposition d(env);
+    decompose::TrapezoidalPlanner planner(d);
+    auto qs = preimage::testing::random_queries(env, 20, 0, 0, s);
+    for (std::size_t k = 0; k + 1 < qs.size(); k += 2) {
+      for (bool shorten : {false, true}) {
+        auto plan = planner.plan(qs[k].p, qs[k + 1].p, shorten);
+        ASSERT_TRUE(plan.found);  // one connected free space
+        EXPECT_EQ(plan.path.front(), qs[k].p);
+        EXPECT_EQ(plan.path.back(), qs[k + 1].p);
+        for (std::size_t i = 0; i + 1 < plan.path.size(); ++i)
+          EXPECT_TRUE(geometry::visible(env, plan.path[i], plan.path[i + 1]))
+              << "seed " << s << " segment " << i << (shorten ? " (shortened)" : "");
+      }
+    }
+  }
+}
+
+TEST(Planner, RejectsPointsOutsideFreeSpace) {
+  auto env = Environment::make({{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {{{1, 1}, {3, 1}, {3, 3}, {1, 3}}});
+  TrapezoidalDecomposition d(env);
+  decompose::TrapezoidalPlanner planner(d);
+  EXPECT_TRUE(planner.plan(geometry::Point(0.5, 0.5), geometry::Point(3.5, 3.5)).found);
+  try {
+    planner.plan(geometry::Point(2, 2), geometry::Point(0.5, 0.5));
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "start (2, 2) is not in free space: it lies inside obstacles[0]");
+  }
+  EXPECT_THROW(planner.plan(geometry::Point(0.5, 0.5), geometry::Point(9, 9)), InputError);
 }

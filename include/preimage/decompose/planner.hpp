@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: Apache-2.0
+// Path planning on the trapezoidal decomposition (section 6.1): locate start and goal,
+// search the adjacency graph, and connect extension midpoints and cell centroids into
+// a collision-free polyline; optionally shortened with exact visibility checks.
+#pragma once
+#include <preimage/decompose/cell_locator.hpp>
+
+#include <optional>
+
+namespace preimage::decompose {
+
+struct Plan {
+  bool found = false;
+  std::vector<Point> path;           // start ... goal (empty when not found)
+  std::vector<std::uint32_t> cells;  // cells crossed, in order
+  double length = 0;
+};
+
+class TrapezoidalPlanner {
+ public:
+  explicit TrapezoidalPlanner(const TrapezoidalDecomposition& d);
+  /// Throws InputError when start or goal is not in free space (naming which and where).
+  /// `found` is false when the cell graph does not connect them (the free space of a valid
+  /// Environment is connected, so today that means start and goal were both rejected first).
+  Plan plan(const Point& start, const Point& goal, bool shorten = true) const;
+
+  const CellLocator& locator() const { return locator_; }
+  /// Double approximations used for the path (midpoint of an extension, cell centroid).
+  Point extension_midpoint(std::size_t x) const;
+  Point centroid(std::size_t cell) const;
+
+ private:
+  const TrapezoidalDecomposition* d_;
+  CellLocator locator_;
+};
+
+}  // namespace preimage::decompose

@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: Apache-2.0
+#include <preimage/decompose/planner.hpp>
+
+#include <preimage/error.hpp>
+#include <preimage/geometry/queries.hpp>
+
+#include <cmath>
+#include <limits>
+#include <queue>
+
+namespace preimage::decompose {
+
+TrapezoidalPlanner::TrapezoidalPlanner(const TrapezoidalDecomposition& d) : d_(&d), locator_(d) {}
+
+Point TrapezoidalPlanner::extension_midpoint(std::size_t x) const {
+  auto [a, b] = d_->segment(x);
+  return Point(d_->extensions()[x].x, (CGAL::to_double(a.y()) + CGAL::to_double(b.y())) / 2);
+}
+
+Point TrapezoidalPlanner::centroid(std::size_t cell) const {
+  double sx = 0, sy = 0;
+  auto poly = d_->polygon(cell);
+  for (auto& p : poly) sx += CGAL::to_double(p.x()), sy += CGAL::to_double(p.y());
+  return Point(sx / static_cast<double>(poly.size()), sy / static_cast<double>(poly.size()));
+}
+
+Plan TrapezoidalPlanner::plan(const Point& start, const Point& goal, bool shorten) const {
+  const Environment& env = d_->environment();
+  auto locate_or_throw = [&](const Point& p, const char* what) {
+    if (auto c = locator_.locate(p)) return *c;
+    const auto loc = geometry::locate(env, p);
+    throw InputError(std::string(what) + " " + geometry::format_point(p) + " is not in free space: it lies " +
+                     (loc.kind == geometry::Location::Kind::InHole ? "inside " + env.ring_name(loc.index + 1)
+                                                                   : "outside " + env.ring_name(0)));
+  };
+  const std::uint32_t cs = locate_or_throw(start, "start"), cg = locate_or_throw(goal, "goal");
+  Plan out;
+
+  // Dijkstra over cells, entering each through an extension; cost = distance between the
+  // entry points (midpoints), which is what the unshortened path will travel.
+  const std::size_t m = d_->cells().size();
+  std::vector<double> dist(m, std::numeric_limits<double>::infinity());
+  std::vector<std::uint32_t> via(m, UINT32_MAX);  // extension used to enter the cell
+  std::vector<Point> entry(m, start);
+  using Item = std::pair<double, std::uint32_t>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> pq;
+  dist[cs] = 0;
+  pq.push({0, cs});
+  auto gap = [](const Point& a, const Point& b) { return std::sqrt(CGAL::to_double(CGAL::squared_distance(a, b))); };
+  while (!pq.empty()) {
+    auto [dcur, c] = pq.top();
+    pq.pop();
+    if (dcur > dist[c]) continue;
+    if (c == cg) break;
+    for (auto x : d_->extensions_of(c)) {
+      const auto& ext = d_->extensions()[x];
+      const std::uint32_t o = ext.left_cell == c ? ext.right_cell : ext.left_cell;
+      const Point mid = extension_midpoint(x);
+      const double nd = dcur + gap(entry[c], mid);
+      if (nd < dist[o]) dist[o] = nd, via[o] = x, entry[o] = mid, pq.push({nd, o});
+    }
+  }
+  if (!std::isfinite(dist[cg])) return out;
+
+  // Cells and extensions back from the goal; the path as in the text: start, then per
+  // cell crossed its extension midpoint and the next cell's centroid, then the goal.
+  std::vector<std::uint32_t> exts;
+  for (std::uint32_t c = cg; c != cs;) {
+    out.cells.push_back(c);
+    const auto& ext = d_->extensions()[via[c]];
+    exts.push_back(via[c]);
+    c = ext.left_cell == c ? ext.right_cell : ext.left_cell;
+  }
+  out.cells.push_back(cs);
+  std::reverse(out.cells.begin(), out.cells.end());
+  std::reverse(exts.begin(), exts.end());
+  out.path.push_back(start);
+  for (std::size_t k = 0; k < exts.size(); ++k) {
+    out.path.push_back(extension_midpoint(exts[k]));
+    if (out.cells[k + 1] != cg) out.path.push_back(centroid(out.cells[k + 1]));
+  }
+  out.path.push_back(goal);
+  if (shorten && out.path.size() > 2) {
+    // Greedy string pulling: from each kept point jump to the farthest point it sees (exact).
+    std::vector<Point> s{out.path.front()};
+    std::size_t i = 0;
+    while (i + 1 < out.path.size()) {
+      std::size_t j = i + 1;
+      while (j + 1 < out.path.size() && geometry::visible(env, out.path[i], out.path[j + 1])) ++j;
+      s.push_back(out.path[j]);
+      i = j;
+    }
+    out.path.swap(s);
+  }
+  for (std::size_t k = 0; k + 1 < out.path.size(); ++k) out.length += gap(out.path[k], out.path[k + 1]);
+  out.found = true;
+  return out;
+}
+
+}  // namespace preimage::decompose
