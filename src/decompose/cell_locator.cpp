@@ -14,6 +14,17 @@ constexpr std::uint32_t kNil = UINT32_MAX;
 
 CellLocator::CellLocator(const TrapezoidalDecomposition& d) : d_(&d) {
   const auto& cells = d.cells();
+  const auto& env = d.environment();
+  auto ends = [&](std::uint32_t e) {
+    const Point &p = env.vertex(e), &q = env.vertex(env.next(e));
+    return lex_less_xy(p, q) ? std::pair(p, q) : std::pair(q, p);
+  };
+  bounds_.reserve(cells.size());
+  for (const auto& c : cells) {
+    auto [fl, fr] = ends(c.floor);
+    auto [cl, cr] = ends(c.ceiling);
+    bounds_.push_back({fl, fr, cl, cr});
+  }
   for (auto& c : cells) xs_.push_back(c.x_left), xs_.push_back(c.x_right);
   std::sort(xs_.begin(), xs_.end());
   xs_.erase(std::unique(xs_.begin(), xs_.end()), xs_.end());
@@ -34,14 +45,7 @@ CellLocator::CellLocator(const TrapezoidalDecomposition& d) : d_(&d) {
 
 bool CellLocator::cell_below(std::uint32_t a, std::uint32_t b) const {
   // Floors of cells crossing one slab do not cross: one exact orientation decides.
-  const auto& env = d_->environment();
-  const std::uint32_t ea = d_->cells()[a].floor, eb = d_->cells()[b].floor;
-  auto ends = [&](std::uint32_t e) {
-    const Point &p = env.vertex(e), &q = env.vertex(env.next(e));
-    return lex_less_xy(p, q) ? std::pair(p, q) : std::pair(q, p);
-  };
-  auto [La, Ra] = ends(ea);
-  auto [Lb, Rb] = ends(eb);
+  const Point &La = bounds_[a].floor_l, &Ra = bounds_[a].floor_r, &Lb = bounds_[b].floor_l, &Rb = bounds_[b].floor_r;
   if (La == Lb) return orientation(La, Ra, Rb) > 0;
   if (lex_less_xy(Lb, La)) return orientation(Lb, Rb, La) < 0;
   return orientation(La, Ra, Lb) > 0;
@@ -126,16 +130,12 @@ std::uint32_t CellLocator::erase(std::uint32_t root, std::uint32_t cell) {
 }
 
 std::optional<std::uint32_t> CellLocator::search(std::uint32_t n, const Point& q) const {
-  const auto& env = d_->environment();
-  auto side = [&](std::uint32_t e) {  // > 0: q above edge e (taken left to right)
-    const Point &p = env.vertex(e), &r = env.vertex(env.next(e));
-    return lex_less_xy(p, r) ? orientation(p, r, q) : orientation(r, p, q);
-  };
   while (n != kNil) {
-    const Trapezoid& t = d_->cells()[nodes_[n].cell];
-    if (side(t.floor) < 0) n = nodes_[n].left;
-    else if (side(t.ceiling) > 0) n = nodes_[n].right;
-    else return nodes_[n].cell;
+    const Node& node = nodes_[n];
+    const Bounds& b = bounds_[node.cell];
+    if (orientation(b.floor_l, b.floor_r, q) < 0) n = node.left;        // below the floor
+    else if (orientation(b.ceil_l, b.ceil_r, q) > 0) n = node.right;   // above the ceiling
+    else return node.cell;
   }
   return std::nullopt;
 }

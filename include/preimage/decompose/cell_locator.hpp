@@ -27,6 +27,9 @@ class CellLocator {
   std::optional<std::uint32_t> search(std::uint32_t root, const Point& q) const;
 
   const TrapezoidalDecomposition* d_;
+  // Floor and ceiling of each cell, left end first: the search reads only this array.
+  struct Bounds { Point floor_l, floor_r, ceil_l, ceil_r; };
+  std::vector<Bounds> bounds_;
   std::vector<double> xs_;             // distinct event abscissae
   std::vector<std::uint32_t> roots_;   // treap root per slab (xs_[j], xs_[j+1])
   std::vector<Node> nodes_;
