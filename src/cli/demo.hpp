@@ -15,5 +15,6 @@ struct DemoContext {
 };
 
 void demo_geometry(DemoContext& ctx);
+void demo_decompose(DemoContext& ctx);
 
 }  // namespace preimage::cli
