@@ -2,7 +2,7 @@
 // preimage decompose | plan
 #include "common.hpp"
 
-#include <preimage/decompose/planner.hpp>
+#include <preimage/decompose/figures.hpp>
 #include <preimage/error.hpp>
 #include <preimage/render/figures.hpp>
 
@@ -14,33 +14,7 @@ namespace {
 
 using nlohmann::json;
 
-json edge_json(const geometry::Environment& env, std::uint32_t e) {
-  const std::size_t r = env.ring_of(e), a = env.input_index(e), b = env.input_index(env.next(e));
-  return json{{"ring", env.ring_name(r)}, {"index", b == (a + 1) % env.ring_size(r) ? a : b}};
-}
-
 json point_json(const geometry::ExactPoint& p) { return json::array({CGAL::to_double(p.x()), CGAL::to_double(p.y())}); }
-
-void draw_decomposition(render::SvgCanvas& c, const decompose::TrapezoidalPlanner& planner,
-                        const decompose::TrapezoidalDecomposition& d) {
-  static const char* fills[] = {"#e8f0fe", "#fce8e6", "#e6f4ea", "#fef7e0", "#f3e8fd"};
-  for (std::size_t i = 0; i < d.cells().size(); ++i) {
-    std::vector<geometry::Point> pts;
-    for (auto& p : d.polygon(i)) pts.push_back(geometry::to_double(p));
-    c.polygon(pts, render::Style{fills[i % 5], "#9aa0a6", 0.5, 0.7, ""}, "cell " + std::to_string(i));
-  }
-  render::Style ext{"none", "#5f6368", 1.0, 1.0, "3 3"}, graph{"none", "#1a73e8", 1.0, 0.8, ""};
-  for (std::size_t x = 0; x < d.extensions().size(); ++x) {
-    auto [a, b] = d.segment(x);
-    c.segment(geometry::to_double(a), geometry::to_double(b), ext);
-    const auto& e = d.extensions()[x];
-    const auto mid = planner.extension_midpoint(x);
-    c.polyline({planner.centroid(e.left_cell), mid, planner.centroid(e.right_cell)}, graph);
-  }
-  for (std::size_t i = 0; i < d.cells().size(); ++i) c.point(planner.centroid(i), 2, render::Style{"#1a73e8", "none", 0, 1, ""});
-  c.legend("vertical extensions", ext);
-  c.legend("adjacency graph (centroids through extension midpoints)", graph);
-}
 
 void run_decompose(const std::string& path, const std::string& method, bool as_json, const std::string& svg) {
   const scene::Scene s = scene::load_scene(path);
@@ -51,7 +25,7 @@ void run_decompose(const std::string& path, const std::string& method, bool as_j
   if (!svg.empty()) {
     render::SvgCanvas c(render::scene_box(s));
     c.environment(env);
-    draw_decomposition(c, planner, d);
+    decompose::draw_decomposition(c, d, &planner);
     c.save(svg);
   }
   if (as_json) {
@@ -89,7 +63,7 @@ void run_plan(const std::string& path, const std::string& start_s, const std::st
   if (!svg.empty()) {
     render::SvgCanvas c(render::scene_box(s));
     render::draw_scene(c, s);
-    draw_decomposition(c, planner, d);
+    decompose::draw_decomposition(c, d, &planner);
     if (plan.found) {
       render::Style route{"none", "#d93025", 3, 1.0, ""};
       c.polyline(plan.path, route, "planned path");

@@ -95,15 +95,9 @@ json visibility_json(const geometry::VisibilityPolygon& v) {
     }
     verts.push_back(j);
   }
-  // Edges in input terms: edge k of a ring runs from its input vertex k to k+1.
-  auto input_edge = [&](std::size_t e) {
-    const std::size_t r = env.ring_of(e), a = env.input_index(e), b = env.input_index(env.next(e));
-    const std::size_t n = env.ring_size(r);
-    return json{{"ring", env.ring_name(r)}, {"index", (b == (a + 1) % n) ? a : b}};
-  };
   for (const auto& e : v.edges) {
     if (e.kind == geometry::VisibilityEdge::Kind::Solid) {
-      edges.push_back({{"kind", "solid"}, {"on", input_edge(e.edge)}});
+      edges.push_back({{"kind", "solid"}, {"on", edge_json(env, e.edge)}});
     } else {
       edges.push_back({{"kind", "free"},
                        {"occluding_vertex", {{"ring", env.ring_name(env.ring_of(e.reflex))}, {"index", env.input_index(e.reflex)}}},

@@ -41,6 +41,10 @@ void make_dirs(const std::string& dir) {
   if (ec) throw InputError(dir + ": cannot create directory (" + ec.message() + ")");
 }
 
+nlohmann::json edge_json(const geometry::Environment& env, std::size_t e) {
+  return {{"ring", env.ring_name(env.ring_of(e))}, {"index", env.input_edge_index(e)}};
+}
+
 void print_json(const nlohmann::json& j) { std::cout << j.dump(2) << "\n"; }
 
 }  // namespace preimage::cli

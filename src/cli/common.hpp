@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Shared pieces of the preimage command line.
 #pragma once
-#include <preimage/geometry/kernel.hpp>
+#include <preimage/geometry/environment.hpp>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -16,6 +16,8 @@ geometry::Point parse_point(const std::string& text, const std::string& flag);
 std::string exact_string(const geometry::ExactFT& v);
 /// Creates a directory (and parents); InputError if impossible.
 void make_dirs(const std::string& dir);
+/// {"ring": "<ring name>", "index": k}: environment edge e in the caller's terms.
+nlohmann::json edge_json(const geometry::Environment& env, std::size_t e);
 /// Prints JSON to stdout, pretty.
 void print_json(const nlohmann::json& j);
 

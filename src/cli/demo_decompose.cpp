@@ -2,7 +2,7 @@
 // Demo section of the decompose module: trapezoidal decomposition and a planned path.
 #include "demo.hpp"
 
-#include <preimage/decompose/planner.hpp>
+#include <preimage/decompose/figures.hpp>
 #include <preimage/geometry/generators.hpp>
 #include <preimage/render/figures.hpp>
 
@@ -32,18 +32,7 @@ void demo_decompose(DemoContext& ctx) {
 
   render::SvgCanvas c(render::scene_box(office));
   render::draw_scene(c, office);
-  static const char* fills[] = {"#e8f0fe", "#fce8e6", "#e6f4ea", "#fef7e0", "#f3e8fd"};
-  for (std::size_t i = 0; i < d.cells().size(); ++i) {
-    std::vector<Point> pts;
-    for (auto& p : d.polygon(i)) pts.push_back(to_double(p));
-    c.polygon(pts, render::Style{fills[i % 5], "#9aa0a6", 0.5, 0.7, ""});
-  }
-  render::Style ext{"none", "#5f6368", 1.0, 1.0, "3 3"};
-  for (std::size_t x = 0; x < d.extensions().size(); ++x) {
-    auto [a, b] = d.segment(x);
-    c.segment(to_double(a), to_double(b), ext);
-  }
-  c.legend("vertical extensions", ext);
+  decompose::draw_decomposition(c, d);
   render::Style rawst{"none", "#1a73e8", 1.5, 1.0, "4 3"}, route{"none", "#d93025", 3, 1.0, ""};
   c.polyline(raw.path, rawst);
   c.polyline(plan.path, route);

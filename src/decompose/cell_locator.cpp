@@ -44,11 +44,8 @@ CellLocator::CellLocator(const TrapezoidalDecomposition& d) : d_(&d) {
 }
 
 bool CellLocator::cell_below(std::uint32_t a, std::uint32_t b) const {
-  // Floors of cells crossing one slab do not cross: one exact orientation decides.
-  const Point &La = bounds_[a].floor_l, &Ra = bounds_[a].floor_r, &Lb = bounds_[b].floor_l, &Rb = bounds_[b].floor_r;
-  if (La == Lb) return orientation(La, Ra, Rb) > 0;
-  if (lex_less_xy(Lb, La)) return orientation(Lb, Rb, La) < 0;
-  return orientation(La, Ra, Lb) > 0;
+  // Floors of cells crossing one slab do not cross.
+  return geometry::segment_below(bounds_[a].floor_l, bounds_[a].floor_r, bounds_[b].floor_l, bounds_[b].floor_r);
 }
 
 std::uint32_t CellLocator::copy(std::uint32_t n) {

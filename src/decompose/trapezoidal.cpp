@@ -40,10 +40,7 @@ TrapezoidalDecomposition::TrapezoidalDecomposition(const Environment& env) : env
     bool operator()(std::uint32_t a, std::uint32_t b) const {
       if (a == b) return false;
       const auto& Q = *P;
-      const Point &La = Q[(*lo)[a]], &Ra = Q[(*hi)[a]], &Lb = Q[(*lo)[b]], &Rb = Q[(*hi)[b]];
-      if ((*lo)[a] == (*lo)[b]) return orientation(La, Ra, Rb) > 0;
-      if (lex_less_xy(Lb, La)) return orientation(Lb, Rb, La) < 0;
-      return orientation(La, Ra, Lb) > 0;
+      return geometry::segment_below(Q[(*lo)[a]], Q[(*hi)[a]], Q[(*lo)[b]], Q[(*hi)[b]]);
     }
     bool operator()(std::uint32_t e, Key k) const {  // edge strictly below vertex
       return orientation((*P)[(*lo)[e]], (*P)[(*hi)[e]], (*P)[k.v]) > 0;

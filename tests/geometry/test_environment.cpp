@@ -67,3 +67,16 @@ TEST(Environment, RandomPolygonsAreSimpleUpToTenToTheFive) {
   }
   for (std::size_t h : {1u, 5u, 30u}) EXPECT_NO_THROW(generators::random_environment(2000, h, h));
 }
+
+TEST(Environment, EdgesKeepTheirInputNumbersWhenARingIsReversed) {
+  // Boundary given clockwise and a hole given counter-clockwise: both get reversed.
+  const Ring outer{{0, 0}, {0, 10}, {10, 10}, {10, 0}}, hole{{2, 2}, {4, 2}, {4, 4}, {2, 4}};
+  auto env = Environment::make(outer, {hole});
+  for (std::size_t e = 0; e < env.num_vertices(); ++e) {
+    const Ring& in = env.ring_of(e) == 0 ? outer : hole;
+    const std::size_t k = env.input_edge_index(e);
+    const Point &a = in[k], &b = in[(k + 1) % in.size()];
+    const Point &p = env.vertex(e), &q = env.vertex(env.next(e));
+    EXPECT_TRUE((a == p && b == q) || (a == q && b == p)) << "edge " << e << " reported as input edge " << k;
+  }
+}

@@ -46,6 +46,11 @@ class Environment {
   Ring ring(std::size_t r) const;
   /// Vertex index in the caller's input ring (before orientation was normalised).
   std::size_t input_index(std::size_t v) const { return input_index_[v]; }
+  /// Edge e as the caller wrote it: edge k of its ring runs from input vertex k to k + 1.
+  std::size_t input_edge_index(std::size_t e) const {
+    const std::size_t a = input_index_[e], b = input_index_[next(e)], n = ring_size(ring_of(e));
+    return b == (a + 1) % n ? a : b;  // the ring was reversed when b precedes a
+  }
   /// "boundary" / "obstacles[k]" (as given to make()).
   const std::string& ring_name(std::size_t r) const { return ring_names_[r]; }
 

@@ -45,6 +45,15 @@ inline bool strictly_inside_segment(const Point& a, const Point& b, const Point&
   return orientation(a, b, c) == 0 && CGAL::collinear_are_strictly_ordered_along_line(a, c, b);
 }
 
+/// For two non-crossing segments, each given left end first (lexicographic), whose
+/// x-ranges overlap: is segment a below segment b on a vertical line crossing both?
+/// One exact orientation test: the later-starting segment's left end against the other.
+inline bool segment_below(const Point& La, const Point& Ra, const Point& Lb, const Point& Rb) {
+  if (La == Lb) return orientation(La, Ra, Rb) > 0;
+  if (lex_less_xy(Lb, La)) return orientation(Lb, Rb, La) < 0;
+  return orientation(La, Ra, Lb) > 0;
+}
+
 inline ExactPoint to_exact(const Point& p) { return ExactPoint(p.x(), p.y()); }
 inline Point to_double(const ExactPoint& p) {
   return Point(CGAL::to_double(p.x()), CGAL::to_double(p.y()));

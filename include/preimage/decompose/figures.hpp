@@ -1,0 +1,14 @@
+// SPDX-License-Identifier: Apache-2.0
+// Figures of the decompose module, on the shared SVG canvas.
+#pragma once
+#include <preimage/decompose/planner.hpp>
+#include <preimage/render/svg.hpp>
+
+namespace preimage::decompose {
+
+/// Cells (alternating light fills), vertical extensions (dashed) and, when a planner is
+/// given, the adjacency graph drawn through cell centroids and extension midpoints.
+void draw_decomposition(render::SvgCanvas& canvas, const TrapezoidalDecomposition& d,
+                        const TrapezoidalPlanner* graph = nullptr);
+
+}  // namespace preimage::decompose
