@@ -1,0 +1,157 @@
+// SPDX-License-Identifier: Apache-2.0
+#include <preimage/decompose/boustrophedon.hpp>
+
+#include <preimage/error.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <numeric>
+
+namespace preimage::decompose {
+
+namespace {
+
+struct UnionFind {
+  std::vector<std::uint32_t> p;
+  explicit UnionFind(std::size_t n) : p(n) { std::iota(p.begin(), p.end(), 0u); }
+  std::uint32_t find(std::uint32_t x) {
+    while (p[x] != x) x = p[x] = p[p[x]];
+    return x;
+  }
+  void join(std::uint32_t a, std::uint32_t b) { p[find(a)] = find(b); }
+};
+
+}  // namespace
+
+BoustrophedonDecomposition::BoustrophedonDecomposition(const Environment& env, double angle_deg) : angle_(angle_deg) {
+  // Sweep coordinates: rotate the input by -angle so the sweep runs along +x.
+  const double turns = angle_deg / 90.0;
+  const bool quarter = std::isfinite(turns) && turns == std::round(turns);
+  if (!std::isfinite(angle_deg)) throw InputError("--angle: not a finite number of degrees");
+  int q = quarter ? static_cast<int>(((static_cast<long long>(std::llround(turns)) % 4) + 4) % 4) : 0;
+  if (quarter) {
+    const int c[4] = {1, 0, -1, 0}, s[4] = {0, 1, 0, -1};
+    cos_ = c[q], sin_ = s[q];
+  } else {
+    const double a = angle_deg * std::numbers::pi / 180.0;
+    cos_ = std::cos(a), sin_ = std::sin(a);
+  }
+  auto to_sweep = [&](const Point& p) {  // rotation by -angle (exact for quarter turns)
+    return Point(cos_ * p.x() + sin_ * p.y(), -sin_ * p.x() + cos_ * p.y());
+  };
+  std::vector<geometry::Ring> rings;
+  for (std::size_t r = 0; r < env.num_rings(); ++r) {
+    geometry::Ring ring;
+    for (std::size_t v = env.ring_begin(r); v < env.ring_end(r); ++v) ring.push_back(to_sweep(env.vertex(v)));
+    rings.push_back(std::move(ring));
+  }
+  geometry::Ring outer = std::move(rings[0]);
+  rings.erase(rings.begin());
+  try {
+    rotated_ = std::make_unique<Environment>(Environment::make(std::move(outer), std::move(rings)));
+  } catch (const InputError& e) {
+    throw InputError("sweep angle " + geometry::format_number(angle_deg) +
+                     " degrees: the environment rotated to sweep coordinates is invalid (" + e.what() + ")");
+  }
+  trap_ = std::make_unique<TrapezoidalDecomposition>(*rotated_);
+  const auto& T = trap_->cells();
+  const auto& X = trap_->extensions();
+  const std::uint32_t nt = static_cast<std::uint32_t>(T.size());
+
+  // Per event line: trapezoids closing (left) and opening (right) there, joined by the
+  // extensions on that line. Node ids: 2t = t as a left (closing) cell, 2t+1 = as a right one.
+  UnionFind line(2 * nt);
+  for (const auto& e : X) line.join(2 * e.left_cell, 2 * e.right_cell + 1);
+  struct Component { std::uint32_t left = 0, right = 0; std::uint32_t a_left = UINT32_MAX, a_right = UINT32_MAX; double x = 0; };
+  std::map<std::uint32_t, Component> comp;
+  for (std::uint32_t t = 0; t < nt; ++t) {
+    auto& cl = comp[line.find(2 * t)];  // t closing at its x_right
+    ++cl.left, cl.a_left = t, cl.x = T[t].x_right;
+    auto& cr = comp[line.find(2 * t + 1)];  // t opening at its x_left
+    ++cr.right, cr.a_right = t, cr.x = T[t].x_left;
+  }
+  // Regular components (one in, one out) glue trapezoids into cells.
+  UnionFind cell(nt);
+  for (auto& [root, c] : comp)
+    if (c.left == 1 && c.right == 1) cell.join(c.a_left, c.a_right);
+
+  std::vector<std::uint32_t> cell_id(nt, UINT32_MAX);
+  cell_of_trapezoid_.assign(nt, 0);
+  std::vector<std::uint32_t> by_x(nt);
+  std::iota(by_x.begin(), by_x.end(), 0u);
+  std::sort(by_x.begin(), by_x.end(), [&](auto a, auto b) { return T[a].x_left < T[b].x_left; });
+  for (std::uint32_t t : by_x) {
+    const std::uint32_t r = cell.find(t);
+    if (cell_id[r] == UINT32_MAX) cell_id[r] = static_cast<std::uint32_t>(cells_.size()), cells_.push_back({});
+    cell_of_trapezoid_[t] = cell_id[r];
+    cells_[cell_id[r]].trapezoids.push_back(t);
+  }
+  // Critical slices: every other component, with its extent on the line.
+  std::map<std::uint32_t, std::uint32_t> slice_of_root;
+  for (auto& [root, c] : comp) {
+    if (c.left == 1 && c.right == 1) continue;
+    slice_of_root[root] = static_cast<std::uint32_t>(slices_.size());
+    slices_.push_back({c.x, c.left, c.right, 0, 0});
+  }
+  std::vector<char> seen(slices_.size(), 0);
+  auto widen = [&](std::uint32_t s, const ExactFT& lo, const ExactFT& hi) {
+    if (!seen[s]) slices_[s].y_low = lo, slices_[s].y_high = hi, seen[s] = 1;
+    slices_[s].y_low = CGAL::min(slices_[s].y_low, lo), slices_[s].y_high = CGAL::max(slices_[s].y_high, hi);
+  };
+  for (std::uint32_t t = 0; t < nt; ++t) {
+    // A trapezoid side on a critical slice contributes its extent (floor to ceiling).
+    for (int side = 0; side < 2; ++side) {
+      auto it = slice_of_root.find(line.find(2 * t + static_cast<std::uint32_t>(side)));
+      if (it == slice_of_root.end()) continue;
+      const double x = side == 0 ? T[t].x_right : T[t].x_left;
+      widen(it->second, trap_->edge_y(T[t].floor, x), trap_->edge_y(T[t].ceiling, x));
+      auto& bc = cells_[cell_of_trapezoid_[t]];
+      (side == 0 ? bc.right_slice : bc.left_slice) = it->second;
+    }
+  }
+}
+
+Point BoustrophedonDecomposition::to_input(const Point& p) const {
+  return Point(cos_ * p.x() - sin_ * p.y(), sin_ * p.x() + cos_ * p.y());
+}
+
+std::vector<Point> BoustrophedonDecomposition::polygon(std::size_t c) const {
+  const auto& T = trap_->cells();
+  const auto& ts = cells_[c].trapezoids;
+  std::vector<Point> floor, ceiling;
+  auto y = [&](std::uint32_t e, double x) { return CGAL::to_double(trap_->edge_y(e, x)); };
+  for (auto t : ts) {
+    floor.emplace_back(T[t].x_left, y(T[t].floor, T[t].x_left));
+    ceiling.emplace_back(T[t].x_left, y(T[t].ceiling, T[t].x_left));
+  }
+  floor.emplace_back(T[ts.back()].x_right, y(T[ts.back()].floor, T[ts.back()].x_right));
+  ceiling.emplace_back(T[ts.back()].x_right, y(T[ts.back()].ceiling, T[ts.back()].x_right));
+  std::vector<Point> out;
+  for (auto& p : floor) out.push_back(to_input(p));
+  for (auto it = ceiling.rbegin(); it != ceiling.rend(); ++it) out.push_back(to_input(*it));
+  std::vector<Point> clean;
+  for (auto& p : out)
+    if (clean.empty() || clean.back() != p) clean.push_back(p);
+  if (clean.size() > 1 && clean.front() == clean.back()) clean.pop_back();
+  return clean;
+}
+
+ExactFT BoustrophedonDecomposition::area(std::size_t c) const {
+  ExactFT a = 0;
+  for (auto t : cells_[c].trapezoids) a += trap_->area(t);
+  return a;
+}
+
+std::vector<std::vector<std::uint32_t>> BoustrophedonDecomposition::adjacency() const {
+  std::vector<std::vector<std::uint32_t>> adj(cells_.size());
+  for (const auto& e : trap_->extensions()) {
+    const std::uint32_t a = cell_of_trapezoid_[e.left_cell], b = cell_of_trapezoid_[e.right_cell];
+    if (a == b) continue;
+    if (std::find(adj[a].begin(), adj[a].end(), b) == adj[a].end()) adj[a].push_back(b), adj[b].push_back(a);
+  }
+  return adj;
+}
+
+}  // namespace preimage::decompose
