@@ -2,6 +2,7 @@
 // preimage decompose | plan
 #include "common.hpp"
 
+#include <preimage/decompose/boustrophedon.hpp>
 #include <preimage/decompose/figures.hpp>
 #include <preimage/error.hpp>
 #include <preimage/render/figures.hpp>
@@ -16,15 +17,54 @@ using nlohmann::json;
 
 json point_json(const geometry::ExactPoint& p) { return json::array({CGAL::to_double(p.x()), CGAL::to_double(p.y())}); }
 
-void run_decompose(const std::string& path, const std::string& method, bool as_json, const std::string& svg) {
+void run_boustrophedon(const scene::Scene& s, double angle, bool as_json, const std::string& svg) {
+  const decompose::BoustrophedonDecomposition b(s.require_environment(), angle);
+  const auto adj = b.adjacency();
+  const auto& slices = b.critical_slices();
+  if (!svg.empty()) {
+    render::SvgCanvas c(render::scene_box(s));
+    render::draw_scene(c, s);
+    decompose::draw_boustrophedon(c, b);
+    c.save(svg);
+  }
+  if (as_json) {
+    json cells = json::array(), crit = json::array(), reeb = json::array();
+    for (std::size_t i = 0; i < b.cells().size(); ++i) {
+      json poly = json::array();
+      for (auto& p : b.polygon(i)) poly.push_back({p.x(), p.y()});
+      cells.push_back({{"id", i}, {"polygon", poly}, {"area", CGAL::to_double(b.area(i))}, {"adjacent", adj[i]},
+                       {"trapezoids", b.cells()[i].trapezoids.size()}});
+      reeb.push_back({{"cell", i}, {"from", b.cells()[i].left_slice}, {"to", b.cells()[i].right_slice}});
+    }
+    for (std::size_t k = 0; k < slices.size(); ++k) {
+      const auto& sl = slices[k];
+      const double ylo = CGAL::to_double(sl.y_low), yhi = CGAL::to_double(sl.y_high);
+      const auto a = b.to_input(geometry::Point(sl.x, ylo)), z = b.to_input(geometry::Point(sl.x, yhi));
+      crit.push_back({{"id", k}, {"slice", {{a.x(), a.y()}, {z.x(), z.y()}}}, {"cells_before", sl.cells_left},
+                      {"cells_after", sl.cells_right}});
+    }
+    print_json({{"method", "boustrophedon"}, {"angle", angle}, {"cells", cells}, {"critical_points", crit},
+                {"reeb_graph", {{"nodes", slices.size()}, {"edges", reeb}}}});
+    return;
+  }
+  std::cout << "boustrophedon decomposition at " << geometry::format_number(angle) << " degrees: " << b.cells().size()
+            << " cells (" << b.trapezoids().cells().size() << " trapezoids), " << slices.size()
+            << " critical points; Reeb graph " << slices.size() << " nodes, " << b.cells().size() << " edges; "
+            << "N_cells = N_critical + N_obstacles - 1: " << b.cells().size() << " = " << slices.size() << " + "
+            << s.require_environment().num_holes() << " - 1\n";
+  if (!svg.empty()) std::cout << "wrote " << svg << "\n";
+}
+
+void run_decompose(const std::string& path, const std::string& method, double angle, bool as_json, const std::string& svg) {
   const scene::Scene s = scene::load_scene(path);
+  if (method == "boustrophedon") return run_boustrophedon(s, angle, as_json, svg);
+  if (angle != 0) throw InputError("--angle: the trapezoidal decomposition sweeps along x (use --method boustrophedon)");
   const auto& env = s.require_environment();
-  (void)method;  // only "trapezoidal" passes the option check
   const decompose::TrapezoidalDecomposition d(env);
   const decompose::TrapezoidalPlanner planner(d);
   if (!svg.empty()) {
     render::SvgCanvas c(render::scene_box(s));
-    c.environment(env);
+    render::draw_scene(c, s);
     decompose::draw_decomposition(c, d, &planner);
     c.save(svg);
   }
@@ -94,13 +134,15 @@ void add_decompose_commands(CLI::App& app) {
     auto* cmd = app.add_subcommand("decompose", "Exact cell decomposition of the free space, with its adjacency graph");
     auto path = std::make_shared<std::string>();
     auto method = std::make_shared<std::string>("trapezoidal");
+    auto angle = std::make_shared<double>(0.0);
     auto json_out = std::make_shared<bool>(false);
     auto svg = std::make_shared<std::string>();
     cmd->add_option("scene", *path, "Scene JSON file")->required();
-    cmd->add_option("--method", *method, "Decomposition method")->check(CLI::IsMember({"trapezoidal"}))->capture_default_str();
+    cmd->add_option("--method", *method, "Decomposition method")->check(CLI::IsMember({"trapezoidal", "boustrophedon"}))->capture_default_str();
+    cmd->add_option("--angle", *angle, "Sweep direction in degrees, counter-clockwise from +x (boustrophedon)");
     cmd->add_flag("--json", *json_out, "Machine-readable output on stdout");
     cmd->add_option("--svg", *svg, "Draw cells, extensions and the adjacency graph to this SVG file");
-    cmd->callback([=] { run_decompose(*path, *method, *json_out, *svg); });
+    cmd->callback([=] { run_decompose(*path, *method, *angle, *json_out, *svg); });
   }
   {
     auto* cmd = app.add_subcommand("plan", "Collision-free path through the trapezoidal decomposition");

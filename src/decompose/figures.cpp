@@ -26,4 +26,29 @@ void draw_decomposition(render::SvgCanvas& c, const TrapezoidalDecomposition& d,
   c.legend("adjacency graph (centroids through extension midpoints)", edge);
 }
 
+void draw_boustrophedon(render::SvgCanvas& c, const BoustrophedonDecomposition& b) {
+  static const char* fills[] = {"#e8f0fe", "#fce8e6", "#e6f4ea", "#fef7e0", "#f3e8fd"};
+  std::vector<Point> centres;
+  for (std::size_t i = 0; i < b.cells().size(); ++i) {
+    const auto poly = b.polygon(i);
+    c.polygon(poly, render::Style{fills[i % 5], "#9aa0a6", 0.8, 0.75, ""}, "cell " + std::to_string(i));
+    double sx = 0, sy = 0;
+    for (auto& p : poly) sx += p.x(), sy += p.y();
+    centres.emplace_back(sx / static_cast<double>(poly.size()), sy / static_cast<double>(poly.size()));
+  }
+  const render::Style slice{"none", "#5f6368", 1.4, 1.0, "4 3"}, node{"#202124", "#ffffff", 1.0, 1.0, ""},
+      edge{"none", "#a142f4", 1.4, 0.9, ""};
+  std::vector<Point> nodes;
+  for (const auto& s : b.critical_slices()) {
+    const Point a = b.to_input(Point(s.x, CGAL::to_double(s.y_low))), z = b.to_input(Point(s.x, CGAL::to_double(s.y_high)));
+    if (a != z) c.segment(a, z, slice);
+    nodes.emplace_back((a.x() + z.x()) / 2, (a.y() + z.y()) / 2);
+  }
+  for (std::size_t i = 0; i < b.cells().size(); ++i)
+    c.polyline({nodes[b.cells()[i].left_slice], centres[i], nodes[b.cells()[i].right_slice]}, edge);
+  for (const auto& n : nodes) c.point(n, 3.5, node);
+  c.legend("critical slices", slice);
+  c.legend("Reeb graph: critical points joined through their cells", edge);
+}
+
 }  // namespace preimage::decompose

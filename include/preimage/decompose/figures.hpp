@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Figures of the decompose module, on the shared SVG canvas.
 #pragma once
+#include <preimage/decompose/boustrophedon.hpp>
 #include <preimage/decompose/planner.hpp>
 #include <preimage/render/svg.hpp>
 
@@ -10,5 +11,9 @@ namespace preimage::decompose {
 /// given, the adjacency graph drawn through cell centroids and extension midpoints.
 void draw_decomposition(render::SvgCanvas& canvas, const TrapezoidalDecomposition& d,
                         const TrapezoidalPlanner* graph = nullptr);
+
+/// Boustrophedon cells, critical slices and the Reeb graph (nodes at slice midpoints,
+/// one edge per cell drawn through the cell's centre).
+void draw_boustrophedon(render::SvgCanvas& canvas, const BoustrophedonDecomposition& b);
 
 }  // namespace preimage::decompose
