@@ -38,9 +38,6 @@ BoustrophedonDecomposition::BoustrophedonDecomposition(const Environment& env, d
     const double a = angle_deg * std::numbers::pi / 180.0;
     cos_ = std::cos(a), sin_ = std::sin(a);
   }
-  auto to_sweep = [&](const Point& p) {  // rotation by -angle (exact for quarter turns)
-    return Point(cos_ * p.x() + sin_ * p.y(), -sin_ * p.x() + cos_ * p.y());
-  };
   std::vector<geometry::Ring> rings;
   for (std::size_t r = 0; r < env.num_rings(); ++r) {
     geometry::Ring ring;
@@ -111,6 +108,10 @@ BoustrophedonDecomposition::BoustrophedonDecomposition(const Environment& env, d
       (side == 0 ? bc.right_slice : bc.left_slice) = it->second;
     }
   }
+}
+
+Point BoustrophedonDecomposition::to_sweep(const Point& p) const {  // rotation by -angle
+  return Point(cos_ * p.x() + sin_ * p.y(), -sin_ * p.x() + cos_ * p.y());
 }
 
 Point BoustrophedonDecomposition::to_input(const Point& p) const {

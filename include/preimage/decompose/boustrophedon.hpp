@@ -48,8 +48,9 @@ class BoustrophedonDecomposition {
   std::vector<Point> polygon(std::size_t cell) const;
   /// Exact area in sweep coordinates.
   ExactFT area(std::size_t cell) const;
-  /// Point of sweep coordinates mapped back to input coordinates.
+  /// Point of sweep coordinates mapped back to input coordinates, and the reverse.
   Point to_input(const Point& p) const;
+  Point to_sweep(const Point& p) const;
   /// Adjacent cells (sharing a critical slice with a common extension), per cell.
   std::vector<std::vector<std::uint32_t>> adjacency() const;
 
