@@ -2,6 +2,7 @@
 // CGAL::decompose (the vertical decomposition) on the same environments; and point
 // location throughput of the cell locator.
 #include <preimage/decompose/cell_locator.hpp>
+#include <preimage/decompose/coverage.hpp>
 #include <preimage/geometry/generators.hpp>
 
 #include "ratio_reporter.hpp"
@@ -67,8 +68,44 @@ void point_location(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
 }
 
+// A 10^4-vertex field with 50 holes: boustrophedon decomposition + full coverage path
+// (tool width 2 in a field 200 across), against CGAL's vertical decomposition alone.
+const geometry::Environment& field() {
+  static const geometry::Environment env = geometry::generators::random_environment(10000, 50, 11);
+  return env;
+}
+
+void coverage_preimage(benchmark::State& state) {
+  std::size_t laps = 0;
+  for (auto _ : state) {
+    auto rep = decompose::plan_coverage(field(), {1.0, std::nullopt, 0.0});
+    laps = rep.laps;
+    benchmark::DoNotOptimize(rep);
+  }
+  state.counters["laps"] = static_cast<double>(laps);
+}
+
+void coverage_reference(benchmark::State& state) {
+  using Arr = testing::CgalVisibility::Arrangement;
+  const auto& env = field();
+  std::vector<geometry::ExactKernel::Segment_2> segs;
+  for (std::size_t e = 0; e < env.num_vertices(); ++e) segs.emplace_back(env.exact_vertex(e), env.exact_vertex(env.next(e)));
+  for (auto _ : state) {
+    Arr arr;
+    CGAL::insert_non_intersecting_curves(arr, segs.begin(), segs.end());
+    std::vector<std::pair<Arr::Vertex_const_handle,
+                          std::pair<boost::optional<boost::variant<Arr::Vertex_const_handle, Arr::Halfedge_const_handle, Arr::Face_const_handle>>,
+                                    boost::optional<boost::variant<Arr::Vertex_const_handle, Arr::Halfedge_const_handle, Arr::Face_const_handle>>>>>
+        vd;
+    CGAL::decompose(arr, std::back_inserter(vd));
+    benchmark::DoNotOptimize(vd);
+  }
+}
+
 }  // namespace
 
+BENCHMARK(coverage_preimage)->Name("boustrophedon+coverage/preimage/n:10000")->Unit(benchmark::kMillisecond);
+BENCHMARK(coverage_reference)->Name("boustrophedon+coverage/reference/n:10000")->Unit(benchmark::kMillisecond);
 BENCHMARK(trapezoidal_preimage)->Name("trapezoidal/preimage")->Arg(10000)->Arg(100000)->ArgName("n")->Unit(benchmark::kMillisecond);
 BENCHMARK(trapezoidal_reference)->Name("trapezoidal/reference")->Arg(10000)->Arg(100000)->ArgName("n")->Unit(benchmark::kMillisecond);
 BENCHMARK(point_location)->Name("cell-location")->Arg(100000)->ArgName("n");

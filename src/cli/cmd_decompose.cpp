@@ -2,11 +2,12 @@
 // preimage decompose | plan
 #include "common.hpp"
 
-#include <preimage/decompose/boustrophedon.hpp>
+#include <preimage/decompose/coverage.hpp>
 #include <preimage/decompose/figures.hpp>
 #include <preimage/error.hpp>
 #include <preimage/render/figures.hpp>
 
+#include <cmath>
 #include <iostream>
 
 namespace preimage::cli {
@@ -127,6 +128,53 @@ void run_plan(const std::string& path, const std::string& start_s, const std::st
   if (!svg.empty()) std::cout << "wrote " << svg << "\n";
 }
 
+void run_cover(const std::string& path, double width, const std::string& start_s, const std::string& angle_s,
+               bool as_json, const std::string& svg) {
+  scene::Scene s = scene::load_scene(path);
+  const auto& env = s.require_environment();
+  decompose::CoverageOptions o{width / 2, std::nullopt, std::nullopt};
+  if (!start_s.empty()) s.start = parse_point(start_s, "--start");
+  o.start = s.start;
+  if (angle_s != "auto") {
+    std::size_t used = 0;
+    double a = 0;
+    try {
+      a = std::stod(angle_s, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != angle_s.size() || !std::isfinite(a))
+      throw InputError("--angle: expected degrees or 'auto', got '" + angle_s + "'");
+    o.angle_deg = a;
+  }
+  const auto rep = decompose::plan_coverage(env, o);
+  if (!svg.empty()) {
+    render::SvgCanvas c(render::scene_box(s));
+    render::draw_scene(c, s);
+    const decompose::BoustrophedonDecomposition b(env, rep.angle);
+    decompose::draw_boustrophedon(c, b);
+    render::Style route{"none", "#d93025", 1.2, 0.9, ""};
+    c.polyline(rep.path, route, "coverage path");
+    c.legend("coverage path", route);
+    c.save(svg);
+  }
+  if (as_json) {
+    json pts = json::array();
+    for (auto& p : rep.path) pts.push_back({p.x(), p.y()});
+    print_json({{"width", width}, {"angle", rep.angle}, {"length", rep.length}, {"laps", rep.laps}, {"turns", rep.turns},
+                {"cells", rep.cells}, {"critical_points", rep.critical_points}, {"cell_order", rep.cell_order},
+                {"bound", {{"value", rep.bound}, {"diameter", rep.diameter}, {"perimeter", rep.perimeter},
+                           {"formula", "D^2/(2r) + 4 D (N_cp + N_ob) + 5 P_total - 4 D"}}},
+                {"path", pts}});
+    return;
+  }
+  std::cout << "coverage with width " << geometry::format_number(width) << " at " << geometry::format_number(rep.angle)
+            << " degrees: length " << geometry::format_number(rep.length) << " (bound "
+            << geometry::format_number(rep.bound) << "), " << rep.laps << " laps, " << rep.turns << " turns, "
+            << rep.cells << " cells, " << rep.critical_points << " critical points\n";
+  if (!svg.empty()) std::cout << "wrote " << svg << "\n";
+}
+
 }  // namespace
 
 void add_decompose_commands(CLI::App& app) {
@@ -157,6 +205,22 @@ void add_decompose_commands(CLI::App& app) {
     cmd->add_flag("--json", *json_out, "Machine-readable output on stdout");
     cmd->add_option("--svg", *svg, "Draw the decomposition and the path to this SVG file");
     cmd->callback([=] { run_plan(*path, *start, *goal, *no_shorten, *json_out, *svg); });
+  }
+  {
+    auto* cmd = app.add_subcommand("cover", "Coverage path for a tool of width W on the boustrophedon decomposition");
+    auto path = std::make_shared<std::string>();
+    auto width = std::make_shared<double>(0.0);
+    auto start = std::make_shared<std::string>();
+    auto angle = std::make_shared<std::string>("0");
+    auto json_out = std::make_shared<bool>(false);
+    auto svg = std::make_shared<std::string>();
+    cmd->add_option("scene", *path, "Scene JSON file")->required();
+    cmd->add_option("--width", *width, "Tool width w = 2r (laps are w apart)")->required();
+    cmd->add_option("--start", *start, "Start X,Y (default: the scene's \"start\", else the first cell)");
+    cmd->add_option("--angle", *angle, "Sweep direction in degrees, or 'auto' to pick the shortest path")->capture_default_str();
+    cmd->add_flag("--json", *json_out, "Machine-readable output on stdout");
+    cmd->add_option("--svg", *svg, "Draw cells, Reeb graph and the coverage path to this SVG file");
+    cmd->callback([=] { run_cover(*path, *width, *start, *angle, *json_out, *svg); });
   }
 }
 

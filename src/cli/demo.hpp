@@ -16,5 +16,6 @@ struct DemoContext {
 
 void demo_geometry(DemoContext& ctx);
 void demo_decompose(DemoContext& ctx);
+void demo_coverage(DemoContext& ctx);
 
 }  // namespace preimage::cli
