@@ -133,7 +133,9 @@ struct Builder {
       return;
     }
     if (path.back() == to) return;
-    const Plan p = planner.plan(path.back(), to, true);
+    // Midpoints and centroids are collision-free as they are; shortening would cost O(n)
+    // exact visibility tests per point, on every transit.
+    const Plan p = planner.plan(path.back(), to, false);
     for (std::size_t i = 1; i < p.path.size(); ++i) add(p.path[i]);
   }
 };
