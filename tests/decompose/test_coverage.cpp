@@ -2,11 +2,14 @@
 // the boundary lies within r of the path), exact collision checks, and the 6.2.5 bound.
 #include <gtest/gtest.h>
 #include <preimage/decompose/coverage.hpp>
+#include <preimage/scene/scene.hpp>
 #include <preimage/error.hpp>
 #include <preimage/geometry/generators.hpp>
 #include <preimage/geometry/queries.hpp>
+#include <preimage/scene/import.hpp>
 
 #include <cmath>
+#include <fstream>
 
 using namespace preimage;
 using geometry::Environment;
@@ -80,4 +83,20 @@ TEST(Coverage, RejectsBadInput) {
   // A start point is where the path begins.
   auto rep = decompose::plan_coverage(env, {0.2, Point(1, 1), 0.0});
   EXPECT_EQ(rep.path.front(), Point(1, 1));
+}
+
+TEST(Coverage, RealHouseExpoFloorPlan) {
+  const std::string path = std::string(PREIMAGE_SHARED_DATA) + "/floorplans/house_expo_room_0000.json";
+  if (!std::ifstream(path)) GTEST_SKIP() << "shared data not found beside the checkout: " << path;
+  const auto s = scene::import_houseexpo(scene::read_file(path), path);
+  check(*s.environment, 0.2, 0.0, "house_expo_room_0000", 150);
+  check(*s.environment, 0.2, 90.0, "house_expo_room_0000 at 90", 150);
+}
+
+TEST(Boustrophedon, StackedVerticalVerticesFixture) {
+  const auto s = scene::load_scene(std::string(PREIMAGE_FIXTURES) + "/scenes/stacked_vertical_vertices.json");
+  const auto& env = *s.environment;
+  decompose::BoustrophedonDecomposition b(env);
+  EXPECT_EQ(b.cells().size(), b.critical_slices().size() + env.num_holes() - 1);
+  check(env, 0.15, 0.0, "stacked vertical vertices");
 }
