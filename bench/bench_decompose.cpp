@@ -8,7 +8,6 @@
 #include "ratio_reporter.hpp"
 #include "support/cgal_oracle.hpp"
 
-#include <CGAL/Arr_vertical_decomposition_2.h>
 
 #include <map>
 #include <memory>
@@ -38,17 +37,8 @@ void trapezoidal_preimage(benchmark::State& state) {
 
 void trapezoidal_reference(benchmark::State& state) {
   const auto& env = environment(static_cast<std::size_t>(state.range(0)));
-  using Arr = testing::CgalVisibility::Arrangement;
-  std::vector<geometry::ExactKernel::Segment_2> segs;
-  for (std::size_t e = 0; e < env.num_vertices(); ++e) segs.emplace_back(env.exact_vertex(e), env.exact_vertex(env.next(e)));
   for (auto _ : state) {
-    Arr arr;
-    CGAL::insert_non_intersecting_curves(arr, segs.begin(), segs.end());
-    std::vector<std::pair<Arr::Vertex_const_handle,
-                          std::pair<boost::optional<boost::variant<Arr::Vertex_const_handle, Arr::Halfedge_const_handle, Arr::Face_const_handle>>,
-                                    boost::optional<boost::variant<Arr::Vertex_const_handle, Arr::Halfedge_const_handle, Arr::Face_const_handle>>>>>
-        vd;
-    CGAL::decompose(arr, std::back_inserter(vd));
+    auto vd = testing::vertical_decomposition(testing::make_arrangement(env));
     benchmark::DoNotOptimize(vd);
   }
 }
@@ -86,18 +76,8 @@ void coverage_preimage(benchmark::State& state) {
 }
 
 void coverage_reference(benchmark::State& state) {
-  using Arr = testing::CgalVisibility::Arrangement;
-  const auto& env = field();
-  std::vector<geometry::ExactKernel::Segment_2> segs;
-  for (std::size_t e = 0; e < env.num_vertices(); ++e) segs.emplace_back(env.exact_vertex(e), env.exact_vertex(env.next(e)));
   for (auto _ : state) {
-    Arr arr;
-    CGAL::insert_non_intersecting_curves(arr, segs.begin(), segs.end());
-    std::vector<std::pair<Arr::Vertex_const_handle,
-                          std::pair<boost::optional<boost::variant<Arr::Vertex_const_handle, Arr::Halfedge_const_handle, Arr::Face_const_handle>>,
-                                    boost::optional<boost::variant<Arr::Vertex_const_handle, Arr::Halfedge_const_handle, Arr::Face_const_handle>>>>>
-        vd;
-    CGAL::decompose(arr, std::back_inserter(vd));
+    auto vd = testing::vertical_decomposition(testing::make_arrangement(field()));
     benchmark::DoNotOptimize(vd);
   }
 }

@@ -9,7 +9,6 @@
 
 #include "support/cgal_oracle.hpp"
 
-#include <CGAL/Arr_vertical_decomposition_2.h>
 
 #include <cmath>
 #include <fstream>
@@ -25,15 +24,8 @@ namespace {
 std::size_t cgal_cell_count(const Environment& env) {
   using Arr = preimage::testing::CgalVisibility::Arrangement;
   using EK = geometry::ExactKernel;
-  preimage::testing::CgalVisibility oracle(env);
-  const Arr& arr = oracle.arrangement();
-  using Entry = std::pair<Arr::Vertex_const_handle,
-                          std::pair<boost::optional<boost::variant<Arr::Vertex_const_handle, Arr::Halfedge_const_handle,
-                                                                   Arr::Face_const_handle>>,
-                                    boost::optional<boost::variant<Arr::Vertex_const_handle, Arr::Halfedge_const_handle,
-                                                                   Arr::Face_const_handle>>>>;
-  std::vector<Entry> vd;
-  CGAL::decompose(arr, std::back_inserter(vd));
+  const Arr arr = preimage::testing::make_arrangement(env);
+  const auto vd = preimage::testing::vertical_decomposition(arr);
   Arr cut = arr;
   std::vector<EK::Segment_2> extra;
   for (auto& [v, below_above] : vd) {

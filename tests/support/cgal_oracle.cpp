@@ -4,9 +4,25 @@
 #include <preimage/geometry/generators.hpp>
 #include <preimage/geometry/queries.hpp>
 
+#include <CGAL/Arr_vertical_decomposition_2.h>
+
 #include <cmath>
 
 namespace preimage::testing {
+
+Arrangement make_arrangement(const Environment& env) {
+  std::vector<ExactKernel::Segment_2> segs;
+  for (std::size_t e = 0; e < env.num_vertices(); ++e) segs.emplace_back(env.exact_vertex(e), env.exact_vertex(env.next(e)));
+  Arrangement arr;
+  CGAL::insert_non_intersecting_curves(arr, segs.begin(), segs.end());
+  return arr;
+}
+
+VerticalDecomposition vertical_decomposition(const Arrangement& arr) {
+  VerticalDecomposition vd;
+  CGAL::decompose(arr, std::back_inserter(vd));
+  return vd;
+}
 
 Environment snapped_random_environment(std::size_t n, std::size_t holes, std::uint64_t seed, double scale) {
   for (std::uint64_t s = seed, attempt = 0;; s += 7919, ++attempt) {

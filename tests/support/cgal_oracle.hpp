@@ -19,18 +19,19 @@ using geometry::ExactKernel;
 using geometry::ExactPoint;
 using geometry::Point;
 
+using Arrangement = CGAL::Arrangement_2<CGAL::Arr_segment_traits_2<ExactKernel>>;
+
+/// The environment's edges as a CGAL arrangement (exact constructions), in one sweep.
+Arrangement make_arrangement(const Environment& env);
+
 /// CGAL's Triangular_expansion_visibility_2 on the exact-constructions kernel.
 class CgalVisibility {
  public:
-  using Traits = CGAL::Arr_segment_traits_2<ExactKernel>;
-  using Arrangement = CGAL::Arrangement_2<Traits>;
+  using Arrangement = testing::Arrangement;
   using TEV = CGAL::Triangular_expansion_visibility_2<Arrangement, CGAL::Tag_true>;
 
   explicit CgalVisibility(const Environment& env) : env_(env) {
-    std::vector<ExactKernel::Segment_2> segs;
-    for (std::size_t e = 0; e < env.num_vertices(); ++e)
-      segs.emplace_back(geometry::to_exact(env.vertex(e)), geometry::to_exact(env.vertex(env.next(e))));
-    CGAL::insert_non_intersecting_curves(arr_, segs.begin(), segs.end());
+    arr_.assign(make_arrangement(env));
     locator_ = std::make_unique<CGAL::Arr_naive_point_location<Arrangement>>(arr_);
     tev_ = std::make_unique<TEV>(arr_);
   }
@@ -80,6 +81,14 @@ class CgalVisibility {
   std::unique_ptr<CGAL::Arr_naive_point_location<Arrangement>> locator_;
   std::unique_ptr<TEV> tev_;
 };
+
+/// CGAL::decompose on an arrangement: per vertex, the features right below and above it.
+using VerticalFeature = boost::optional<boost::variant<Arrangement::Vertex_const_handle,
+                                                       Arrangement::Halfedge_const_handle,
+                                                       Arrangement::Face_const_handle>>;
+using VerticalDecomposition =
+    std::vector<std::pair<Arrangement::Vertex_const_handle, std::pair<VerticalFeature, VerticalFeature>>>;
+VerticalDecomposition vertical_decomposition(const Arrangement& arr);
 
 /// A random environment snapped to an integer grid (so exact points on edges are easy
 /// to make), re-validated; retries with the next seed when snapping broke it.
