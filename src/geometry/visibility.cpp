@@ -257,17 +257,16 @@ VisibilityPolygon VisibilityIndex::compute(const Point& q) const {
   }
 
   // Merge consecutive pieces of one edge that continue each other.
-  auto same = [](const Sym& a, const Sym& b) { return a == b; };
   {
     std::vector<Piece> merged;
     for (auto& pc : pieces) {
-      if (!merged.empty() && merged.back().edge == pc.edge && same(merged.back().end, pc.start)) {
+      if (!merged.empty() && merged.back().edge == pc.edge && merged.back().end == pc.start) {
         merged.back().end = pc.end, merged.back().ray_l = pc.ray_l;
       } else {
         merged.push_back(pc);
       }
     }
-    while (merged.size() > 1 && merged.back().edge == merged.front().edge && same(merged.back().end, merged.front().start)) {
+    while (merged.size() > 1 && merged.back().edge == merged.front().edge && merged.back().end == merged.front().start) {
       merged.front().start = merged.back().start, merged.front().ray_r = merged.back().ray_r;
       merged.pop_back();
     }
@@ -296,7 +295,7 @@ VisibilityPolygon VisibilityIndex::compute(const Point& q) const {
     const Piece& pc = pieces[k];
     out.vertices.push_back(starts[k]);
     out.edges.push_back({VisibilityEdge::Kind::Solid, pc.edge, kNone, false});
-    if (same(pc.end, pieces[(k + 1) % m].start)) continue;
+    if (pc.end == pieces[(k + 1) % m].start) continue;
     // A gap along the shared cone ray q -> c between the two hits X (end of this piece)
     // and Y (start of the next).
     out.vertices.push_back(realise(pc.end));
