@@ -42,10 +42,15 @@ TrapezoidalDecomposition::TrapezoidalDecomposition(const Environment& env) : env
       const auto& Q = *P;
       return geometry::segment_below(Q[(*lo)[a]], Q[(*hi)[a]], Q[(*lo)[b]], Q[(*hi)[b]]);
     }
+    // An edge ending or starting at the vertex is level with it. Deciding that by index
+    // matters for speed: the orientation would be exactly zero, which no floating-point
+    // filter can certify, so it would fall back to exact arithmetic every time.
     bool operator()(std::uint32_t e, Key k) const {  // edge strictly below vertex
+      if ((*hi)[e] == k.v || (*lo)[e] == k.v) return false;
       return orientation((*P)[(*lo)[e]], (*P)[(*hi)[e]], (*P)[k.v]) > 0;
     }
     bool operator()(Key k, std::uint32_t e) const {  // vertex strictly below edge
+      if ((*hi)[e] == k.v || (*lo)[e] == k.v) return false;
       return orientation((*P)[(*lo)[e]], (*P)[(*hi)[e]], (*P)[k.v]) < 0;
     }
   };
@@ -71,8 +76,11 @@ TrapezoidalDecomposition::TrapezoidalDecomposition(const Environment& env) : env
 
     auto it_lo = status.lower_bound(Key{vmin});
     auto it_hi = status.upper_bound(Key{vmax});
-    const std::uint32_t B = it_lo == status.begin() ? kNoneId : *std::prev(it_lo);
-    const std::uint32_t T = it_hi == status.end() ? kNoneId : *it_hi;
+    // B and T bound the touched range and survive the update (set iterators are stable).
+    const auto it_B = it_lo == status.begin() ? status.end() : std::prev(it_lo);
+    const auto it_T = it_hi;
+    const std::uint32_t B = it_B == status.end() ? kNoneId : *it_B;
+    const std::uint32_t T = it_T == status.end() ? kNoneId : *it_T;
 
     // Q: [B] + vertices at c merged with the edges crossing x = c strictly + [T].
     Q.clear();
@@ -123,10 +131,10 @@ TrapezoidalDecomposition::TrapezoidalDecomposition(const Environment& env) : env
     for (std::size_t k = g; k < g_end; ++k) {
       const std::uint32_t v = order[k];
       for (std::uint32_t e : {v, static_cast<std::uint32_t>(env.prev(v))})
-        if (lo[e] == v && !vertical(e)) status.insert(e);
+        if (lo[e] == v && !vertical(e)) status.insert(it_T, e);  // new edges lie below T
     }
-    it_lo = B == kNoneId ? status.begin() : std::next(status.find(B));
-    it_hi = T == kNoneId ? status.end() : status.find(T);
+    it_lo = it_B == status.end() ? status.begin() : std::next(it_B);
+    it_hi = it_T;
 
     // Right side: open a cell in every free gap that touches a vertex at c.
     R.clear();
@@ -166,10 +174,15 @@ TrapezoidalDecomposition::TrapezoidalDecomposition(const Environment& env) : env
   for (std::uint32_t e = 0; e < n; ++e)
     if (open_cell[e] != kNoneId) throw std::logic_error("trapezoidal decomposition: cell left open");
 
-  cell_extensions_.assign(cells_.size(), {});
+  // Adjacency as one flat array with offsets per cell.
+  cell_ext_offset_.assign(cells_.size() + 1, 0);
+  for (const auto& x : extensions_) ++cell_ext_offset_[x.left_cell + 1], ++cell_ext_offset_[x.right_cell + 1];
+  std::partial_sum(cell_ext_offset_.begin(), cell_ext_offset_.end(), cell_ext_offset_.begin());
+  cell_ext_.resize(cell_ext_offset_.back());
+  std::vector<std::uint32_t> fill(cell_ext_offset_.begin(), cell_ext_offset_.end() - 1);
   for (std::uint32_t x = 0; x < extensions_.size(); ++x) {
-    cell_extensions_[extensions_[x].left_cell].push_back(x);
-    cell_extensions_[extensions_[x].right_cell].push_back(x);
+    cell_ext_[fill[extensions_[x].left_cell]++] = x;
+    cell_ext_[fill[extensions_[x].right_cell]++] = x;
   }
 }
 

@@ -12,6 +12,7 @@
 #include <preimage/geometry/environment.hpp>
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace preimage::decompose {
@@ -45,7 +46,9 @@ class TrapezoidalDecomposition {
   const std::vector<Trapezoid>& cells() const { return cells_; }
   const std::vector<Extension>& extensions() const { return extensions_; }
   /// Extension ids touching cell c (its adjacency in the graph of cells).
-  const std::vector<std::uint32_t>& extensions_of(std::size_t c) const { return cell_extensions_[c]; }
+  std::span<const std::uint32_t> extensions_of(std::size_t c) const {
+    return {cell_ext_.data() + cell_ext_offset_[c], cell_ext_offset_[c + 1] - cell_ext_offset_[c]};
+  }
 
   /// Exact y of edge e at abscissa x (x within the edge's x-range; e not vertical).
   ExactFT edge_y(std::uint32_t e, double x) const;
@@ -59,7 +62,7 @@ class TrapezoidalDecomposition {
   const Environment* env_;
   std::vector<Trapezoid> cells_;
   std::vector<Extension> extensions_;
-  std::vector<std::vector<std::uint32_t>> cell_extensions_;
+  std::vector<std::uint32_t> cell_ext_offset_, cell_ext_;
 };
 
 }  // namespace preimage::decompose
