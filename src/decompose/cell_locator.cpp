@@ -41,6 +41,17 @@ CellLocator::CellLocator(const TrapezoidalDecomposition& d) : d_(&d) {
     while (li < by_left.size() && cells[by_left[li]].x_left <= xs_[j]) root = insert(root, by_left[li++]);
     roots_.push_back(root);
   }
+  if (xs_.size() >= 2) {
+    const std::size_t nb = xs_.size();
+    bucket_scale_ = static_cast<double>(nb) / (xs_.back() - xs_.front());
+    bucket_.resize(nb + 1);
+    std::size_t j = 0;
+    for (std::size_t b = 0; b <= nb; ++b) {
+      const double left = xs_.front() + static_cast<double>(b) / bucket_scale_;
+      while (j + 1 < xs_.size() && xs_[j + 1] <= left) ++j;
+      bucket_[b] = static_cast<std::uint32_t>(j);
+    }
+  }
 }
 
 bool CellLocator::cell_below(std::uint32_t a, std::uint32_t b) const {
@@ -139,8 +150,13 @@ std::optional<std::uint32_t> CellLocator::search(std::uint32_t n, const Point& q
 
 std::optional<std::uint32_t> CellLocator::locate(const Point& q) const {
   if (xs_.size() < 2 || q.x() < xs_.front() || q.x() > xs_.back()) return std::nullopt;
-  std::size_t j = static_cast<std::size_t>(std::upper_bound(xs_.begin(), xs_.end(), q.x()) - xs_.begin());
-  j = std::min(j == 0 ? 0 : j - 1, roots_.size() - 1);
+  // Slab j: xs_[j] <= q.x < xs_[j + 1]. The bucket gives a start at or before it (the
+  // bucket index is only a hint, computed in double; the scan decides exactly).
+  const double f = (q.x() - xs_.front()) * bucket_scale_;
+  std::size_t j = bucket_[std::min<std::size_t>(bucket_.size() - 1, f > 0 ? static_cast<std::size_t>(f) : 0)];
+  while (j > 0 && xs_[j] > q.x()) --j;
+  while (j + 1 < xs_.size() && xs_[j + 1] <= q.x()) ++j;
+  j = std::min(j, roots_.size() - 1);
   if (auto c = search(roots_[j], q)) return c;
   // On an event line, the closed cell may lie in the slab to the left (e.g. on a wall).
   if (j > 0 && q.x() == xs_[j]) return search(roots_[j - 1], q);

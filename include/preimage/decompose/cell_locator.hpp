@@ -31,6 +31,11 @@ class CellLocator {
   struct Bounds { Point floor_l, floor_r, ceil_l, ceil_r; };
   std::vector<Bounds> bounds_;
   std::vector<double> xs_;             // distinct event abscissae
+  // Uniform buckets over [xs_.front(), xs_.back()]: bucket b holds the index of the last
+  // abscissa at or before its left end, so finding the slab is a short scan, not a
+  // binary search through a large array (which costs a cache miss per step).
+  std::vector<std::uint32_t> bucket_;
+  double bucket_scale_ = 0;
   std::vector<std::uint32_t> roots_;   // treap root per slab (xs_[j], xs_[j+1])
   std::vector<Node> nodes_;
   std::uint64_t rng_ = 0x9E3779B97F4A7C15ull;
