@@ -3,12 +3,15 @@
 
 namespace preimage::decompose {
 
+namespace {
+const char* const kCellFills[] = {"#e8f0fe", "#fce8e6", "#e6f4ea", "#fef7e0", "#f3e8fd"};
+}  // namespace
+
 void draw_decomposition(render::SvgCanvas& c, const TrapezoidalDecomposition& d, const TrapezoidalPlanner* graph) {
-  static const char* fills[] = {"#e8f0fe", "#fce8e6", "#e6f4ea", "#fef7e0", "#f3e8fd"};
   for (std::size_t i = 0; i < d.cells().size(); ++i) {
     std::vector<Point> pts;
     for (auto& p : d.polygon(i)) pts.push_back(geometry::to_double(p));
-    c.polygon(pts, render::Style{fills[i % 5], "#9aa0a6", 0.5, 0.7, ""}, "cell " + std::to_string(i));
+    c.polygon(pts, render::Style{kCellFills[i % 5], "#9aa0a6", 0.5, 0.7, ""}, "cell " + std::to_string(i));
   }
   const render::Style ext{"none", "#5f6368", 1.0, 1.0, "3 3"};
   for (std::size_t x = 0; x < d.extensions().size(); ++x) {
@@ -27,11 +30,10 @@ void draw_decomposition(render::SvgCanvas& c, const TrapezoidalDecomposition& d,
 }
 
 void draw_boustrophedon(render::SvgCanvas& c, const BoustrophedonDecomposition& b) {
-  static const char* fills[] = {"#e8f0fe", "#fce8e6", "#e6f4ea", "#fef7e0", "#f3e8fd"};
   std::vector<Point> centres;
   for (std::size_t i = 0; i < b.cells().size(); ++i) {
     const auto poly = b.polygon(i);
-    c.polygon(poly, render::Style{fills[i % 5], "#9aa0a6", 0.8, 0.75, ""}, "cell " + std::to_string(i));
+    c.polygon(poly, render::Style{kCellFills[i % 5], "#9aa0a6", 0.8, 0.75, ""}, "cell " + std::to_string(i));
     double sx = 0, sy = 0;
     for (auto& p : poly) sx += p.x(), sy += p.y();
     centres.emplace_back(sx / static_cast<double>(poly.size()), sy / static_cast<double>(poly.size()));

@@ -106,11 +106,16 @@ TrapezoidalDecomposition::TrapezoidalDecomposition(const Environment& env) : env
     auto left_rank = [&](std::uint32_t e) { return P[hi[e]].x() == c ? rank_of_vertex[hi[e]] : rank_of_crossing[e]; };
     auto right_rank = [&](std::uint32_t e) { return P[lo[e]].x() == c ? rank_of_vertex[lo[e]] : rank_of_crossing[e]; };
 
+    // The edges on the sweep line from B to T, bottom to top (before or after the update).
+    auto bounded_range = [&](std::vector<std::uint32_t>& out) {
+      out.clear();
+      if (B != kNoneId) out.push_back(B);
+      for (auto it = it_lo; it != it_hi; ++it) out.push_back(*it);
+      if (T != kNoneId) out.push_back(T);
+    };
+
     // Left side: close every free gap that touches a vertex at c.
-    L.clear();
-    if (B != kNoneId) L.push_back(B);
-    for (auto it = it_lo; it != it_hi; ++it) L.push_back(*it);
-    if (T != kNoneId) L.push_back(T);
+    bounded_range(L);
     left_closed.assign(L.size(), kNoneId);
     for (std::size_t i = 0; i + 1 < L.size(); ++i) {
       if (!is_floor(L[i])) continue;
@@ -137,10 +142,7 @@ TrapezoidalDecomposition::TrapezoidalDecomposition(const Environment& env) : env
     it_hi = it_T;
 
     // Right side: open a cell in every free gap that touches a vertex at c.
-    R.clear();
-    if (B != kNoneId) R.push_back(B);
-    for (auto it = it_lo; it != it_hi; ++it) R.push_back(*it);
-    if (T != kNoneId) R.push_back(T);
+    bounded_range(R);
     right_opened.assign(R.size(), kNoneId);
     for (std::size_t i = 0; i + 1 < R.size(); ++i) {
       if (!is_floor(R[i])) continue;
