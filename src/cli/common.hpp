@@ -24,6 +24,7 @@ void print_json(const nlohmann::json& j);
 /// Registration of each command group.
 void add_geometry_commands(CLI::App& app);
 void add_decompose_commands(CLI::App& app);
+void add_beams_commands(CLI::App& app);
 void add_demo_command(CLI::App& app);
 
 }  // namespace preimage::cli

@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   preimage::cli::add_geometry_commands(app);
   preimage::cli::add_decompose_commands(app);
+  preimage::cli::add_beams_commands(app);
   preimage::cli::add_demo_command(app);
   try {
     app.parse(argc, argv);

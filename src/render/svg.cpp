@@ -69,6 +69,18 @@ void SvgCanvas::polygon(const std::vector<Point>& pts, const Style& s, const std
   body_ += "<polygon points=\"" + p + "\"" + style_attr(s) + ">" + (title.empty() ? "" : "<title>" + escape(title) + "</title>") + "</polygon>\n";
 }
 
+void SvgCanvas::rings(const std::vector<std::vector<Point>>& rings, const Style& s, const std::string& title) {
+  std::string d;
+  for (auto& r : rings) {
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      const std::string xy = px(r[i]);
+      d += (i ? "L" : "M") + xy.substr(0, xy.find(',')) + " " + xy.substr(xy.find(',') + 1) + " ";
+    }
+    d += "Z ";
+  }
+  body_ += "<path fill-rule=\"evenodd\" d=\"" + d + "\"" + style_attr(s) + ">" + (title.empty() ? "" : "<title>" + escape(title) + "</title>") + "</path>\n";
+}
+
 void SvgCanvas::polyline(const std::vector<Point>& pts, const Style& s, const std::string& title) {
   std::string p;
   for (auto& q : pts) p += px(q) + " ";

@@ -21,6 +21,15 @@ std::string read_file(const std::string& path) {
   return ss.str();
 }
 
+const char* to_string(Beam::Shape s) {
+  switch (s) {
+    case Beam::Shape::Segment: return "segment";
+    case Beam::Shape::Ray: return "ray";
+    case Beam::Shape::Line: return "line";
+  }
+  return "?";
+}
+
 const geometry::Environment& Scene::require_environment() const {
   if (!environment) throw InputError((source.empty() ? "scene" : source) + ": the scene has no environment");
   return *environment;
@@ -137,13 +146,20 @@ Scene parse_scene(const std::string& text, const std::string& source) {
     if (!B.is_array()) fail("$.beams", "expected an array, got " + type_name(B));
     for (std::size_t i = 0; i < B.size(); ++i) {
       const std::string p = "$.beams[" + std::to_string(i) + "]";
-      allow_keys(B[i], p, {"label", "from", "to", "directed"});
+      allow_keys(B[i], p, {"label", "from", "to", "directed", "shape"});
       for (const char* k : {"label", "from", "to"})
         if (!B[i].contains(k)) fail(p, std::string("missing key \"") + k + "\"");
       Beam b{string_at(B[i]["label"], p + ".label"), point(B[i]["from"], p + ".from"), point(B[i]["to"], p + ".to"), true};
       if (B[i].contains("directed")) {
         if (!B[i]["directed"].is_boolean()) fail(p + ".directed", "expected true or false, got " + type_name(B[i]["directed"]));
         b.directed = B[i]["directed"].get<bool>();
+      }
+      if (B[i].contains("shape")) {
+        const std::string sh = string_at(B[i]["shape"], p + ".shape");
+        if (sh == "segment") b.shape = Beam::Shape::Segment;
+        else if (sh == "ray") b.shape = Beam::Shape::Ray;
+        else if (sh == "line") b.shape = Beam::Shape::Line;
+        else fail(p + ".shape", "expected \"segment\", \"ray\" or \"line\", got \"" + sh + "\"");
       }
       if (b.from == b.to) fail(p, "beam endpoints coincide");
       s.beams.push_back(std::move(b));
@@ -183,8 +199,11 @@ json to_json(const Scene& s) {
   }
   if (!s.beams.empty()) {
     json B = json::array();
-    for (auto& b : s.beams)
-      B.push_back({{"label", b.label}, {"from", point_json(b.from)}, {"to", point_json(b.to)}, {"directed", b.directed}});
+    for (auto& b : s.beams) {
+      json j = {{"label", b.label}, {"from", point_json(b.from)}, {"to", point_json(b.to)}, {"directed", b.directed}};
+      if (b.shape != Beam::Shape::Segment) j["shape"] = to_string(b.shape);
+      B.push_back(std::move(j));
+    }
     doc["beams"] = B;
   }
   return doc;

@@ -26,6 +26,8 @@ class SvgCanvas {
   /// Free space white, obstacles and outside grey, walls dark.
   void environment(const geometry::Environment& env);
   void polygon(const std::vector<Point>& pts, const Style& style, const std::string& title = "");
+  /// Several rings filled together with the even-odd rule (a region with holes).
+  void rings(const std::vector<std::vector<Point>>& rings, const Style& style, const std::string& title = "");
   void polyline(const std::vector<Point>& pts, const Style& style, const std::string& title = "");
   void segment(const Point& a, const Point& b, const Style& style, const std::string& title = "");
   void point(const Point& p, double radius_px, const Style& style, const std::string& title = "");

@@ -21,13 +21,20 @@ struct Landmark {
   Point at;
 };
 
-/// A sensor beam: a segment from `from` to `to` with a label. Beams sharing a label are
-/// indistinguishable; a directed beam reports which way it was crossed.
+/// A sensor beam with a label. Beams sharing a label are indistinguishable; a directed
+/// beam reports which way it was crossed: positive when the body crosses from the right
+/// of from->to to its left (counter-clockwise about `from`), negative (a') otherwise.
+/// Shape: a segment from `from` to `to`; a ray from `from` through `to` (to the first
+/// boundary contact, or unbounded in a scene of point landmarks); or the line through
+/// both points (clipped to the free-space chord containing `from` in a bounded scene).
 struct Beam {
+  enum class Shape { Segment, Ray, Line };
   std::string label;
   Point from, to;
   bool directed = true;
+  Shape shape = Shape::Segment;
 };
+const char* to_string(Beam::Shape s);
 
 struct Scene {
   std::string name;

@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: Apache-2.0
+// The planar subdivision of free space by obstacles and beams (beams paper, 2 and 4.1):
+// vertices (environment vertices, beam endpoints, exact beam crossings), half-edges
+// with faces on their left, regions (the free 2-cells) each with an exact sample
+// point strictly inside, and the directed labelled multigraph G whose edge r1 -> r2
+// carries the observation made when a body crosses from r1 into r2.
+//
+// Built here, with exact predicates on the input coordinates and lazy-exact crossing
+// points; CGAL's Arrangement_2 serves only as a test oracle. A scene without an
+// environment is the unbounded plane with point landmarks: the subdivision is then
+// built inside a box that strictly contains every landmark and beam crossing, which
+// changes no region's combinatorics.
+#pragma once
+#include <preimage/beams/alphabet.hpp>
+#include <preimage/filter/transition_system.hpp>
+#include <preimage/geometry/environment.hpp>
+#include <preimage/scene/scene.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace preimage::beams {
+
+using geometry::ExactPoint;
+inline constexpr std::uint32_t kNone = UINT32_MAX;
+
+/// One validated beam, clipped to a segment from `from` to `to`.
+struct BeamGeometry {
+  std::uint32_t label;
+  bool directed;
+  scene::Beam::Shape shape;
+  ExactPoint from, to;
+  bool unbounded_from = false, unbounded_to = false;  // clipped by the box, not a real end
+};
+
+struct HalfEdge {
+  std::uint32_t origin, target;
+  std::uint32_t next = kNone;  // next half-edge around the face on the left
+  std::uint32_t face = kNone;
+  std::uint32_t beam = kNone;  // kNone: a piece of the boundary
+};
+
+/// A crossing of G: from region `from` into region `to` across beam piece `half_edge`
+/// (a half-edge whose face is `to`), observing `symbol`.
+struct Crossing {
+  std::uint32_t from, to;
+  Symbol symbol;
+  std::uint32_t half_edge;
+};
+
+struct Region {
+  ExactPoint sample;                   // strictly inside
+  std::vector<std::uint32_t> cycles;   // one half-edge per boundary cycle (outer first)
+};
+
+class BeamArrangement {
+ public:
+  /// Validates the scene's beams and builds the subdivision and G. Throws InputError
+  /// naming the beam ("$.beams[3] ('a'): ...") for every violated condition: endpoints
+  /// off the boundary, interior touching an obstacle, through a vertex, a landmark or
+  /// another beam's crossing, overlapping beams, mixed directedness of one label.
+  static BeamArrangement build(const scene::Scene& scene);
+
+  const Alphabet& alphabet() const { return alphabet_; }
+  const std::vector<BeamGeometry>& beams() const { return beams_; }
+  /// The environment the subdivision lives in (the box for a landmark scene).
+  const geometry::Environment& environment() const { return env_; }
+  bool unbounded() const { return unbounded_; }
+  const std::vector<geometry::Point>& landmarks() const { return landmarks_; }
+
+  const std::vector<ExactPoint>& vertices() const { return vertices_; }
+  const std::vector<HalfEdge>& half_edges() const { return half_edges_; }
+  static std::uint32_t twin(std::uint32_t h) { return h ^ 1u; }
+  /// Half-edges of a region (all its boundary cycles).
+  std::span<const std::uint32_t> region_half_edges(std::uint32_t r) const {
+    return {region_he_.data() + region_he_begin_[r], region_he_.data() + region_he_begin_[r + 1]};
+  }
+  /// Region on the left of half-edge h, kNone for obstacle interiors and the outside.
+  std::uint32_t region_of(std::uint32_t h) const { return face_region_[half_edges_[h].face]; }
+
+  std::size_t num_regions() const { return regions_.size(); }
+  const std::vector<Region>& regions() const { return regions_; }
+  std::size_t num_crossings() const { return crossings_; }  // beam-beam crossing points
+
+  /// G as a transition system over regions, and its edges with witnesses (sorted by
+  /// (from, symbol, to); one witness per G edge).
+  const filter::TransitionSystem& graph() const { return graph_; }
+  const std::vector<Crossing>& edges() const { return edges_; }
+  const Crossing* find_edge(std::uint32_t from, Symbol y, std::uint32_t to) const;
+
+  /// Region strictly containing p, or nullopt if p is on a beam, on the boundary or
+  /// outside free space. O(edges).
+  std::optional<std::uint32_t> locate(const ExactPoint& p) const;
+
+ private:
+  Alphabet alphabet_;
+  std::vector<BeamGeometry> beams_;
+  geometry::Environment env_;
+  bool unbounded_ = false;
+  std::vector<geometry::Point> landmarks_;
+  std::vector<ExactPoint> vertices_;
+  std::vector<HalfEdge> half_edges_;
+  std::vector<std::uint32_t> out_begin_, out_;  // CSR: outgoing half-edges CCW from east
+  std::vector<std::uint32_t> face_region_;
+  std::vector<Region> regions_;
+  std::vector<std::uint32_t> region_he_begin_, region_he_;
+  std::size_t crossings_ = 0;
+  filter::TransitionSystem graph_;
+  std::vector<Crossing> edges_;
+
+  friend class ArrangementBuilder;
+};
+
+}  // namespace preimage::beams

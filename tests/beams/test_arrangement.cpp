@@ -1,0 +1,136 @@
+// The beam arrangement against the paper's figures and CGAL's Arrangement_2.
+#include <preimage/beams/arrangement.hpp>
+#include <preimage/beams/examples.hpp>
+#include <preimage/beams/export.hpp>
+#include <preimage/error.hpp>
+
+#include <support/beam_scenes.hpp>
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+using namespace preimage;
+using beams::BeamArrangement;
+using geometry::Point;
+
+namespace {
+
+std::string build_error(const scene::Scene& s) {
+  try {
+    (void)BeamArrangement::build(s);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+void expect_matches_cgal(const BeamArrangement& A, const std::string& what) {
+  const auto o = preimage::testing::cgal_regions(A);
+  EXPECT_EQ(A.num_regions(), o.free_faces) << what;
+  std::set<long> seen;
+  for (std::size_t r = 0; r < o.face_of_sample.size(); ++r) {
+    EXPECT_GE(o.face_of_sample[r], 0) << what << ": sample of region " << r << " is not in a free face";
+    EXPECT_TRUE(seen.insert(o.face_of_sample[r]).second) << what << ": two regions share a CGAL face";
+  }
+}
+
+}  // namespace
+
+TEST(BeamArrangement, PaperFigures) {
+  const auto f1 = BeamArrangement::build(beams::fig1_scene());
+  EXPECT_EQ(f1.num_regions(), 3u);  // Fig. 3(a): three regions
+  EXPECT_EQ(f1.edges().size(), 11u);
+  // f joins an obstacle to the wall inside one region: a self-loop (4.1).
+  const auto f = *f1.alphabet().find("f");
+  EXPECT_NE(f1.find_edge(1, beams::Alphabet::positive(f), 1), nullptr);
+  const auto f3 = BeamArrangement::build(beams::fig3b_scene());
+  EXPECT_EQ(f3.num_regions(), 8u);  // Fig. 3(b): "There are 8 regions"
+  EXPECT_EQ(f3.num_crossings(), 3u);
+  const auto f11 = BeamArrangement::build(beams::fig11_scene());
+  EXPECT_EQ(f11.num_regions(), 3u);
+  for (auto* A : {&f1, &f3, &f11}) expect_matches_cgal(*A, "figure");
+}
+
+TEST(BeamArrangement, ExampleFilesMatchBuiltInScenes) {
+  const std::string dir = std::string(PREIMAGE_EXAMPLES) + "/beams/";
+  const std::pair<const char*, scene::Scene> cases[] = {{"fig01_six_beams.json", beams::fig1_scene()},
+                                                         {"fig03b_crossing.json", beams::fig3b_scene()},
+                                                         {"fig11_ring.json", beams::fig11_scene()}};
+  for (auto& [file, built] : cases) {
+    auto a = scene::to_json(scene::load_scene(dir + file)), b = scene::to_json(built);
+    EXPECT_EQ(a, b) << file;
+  }
+}
+
+TEST(BeamArrangement, DirectedCrossingsFollowTheRightToLeftConvention) {
+  const auto A = BeamArrangement::build(beams::fig3b_scene());
+  // Beam a runs from (0, 1) to (12, 2.5): its left side is above.
+  const auto below = *A.locate(geometry::to_exact(Point(1, 0.5))), above = *A.locate(geometry::to_exact(Point(1, 4)));
+  const auto a = *A.alphabet().find("a");
+  EXPECT_NE(A.find_edge(below, beams::Alphabet::positive(a), above), nullptr);
+  EXPECT_NE(A.find_edge(above, beams::Alphabet::negative(a), below), nullptr);
+  EXPECT_EQ(A.find_edge(below, beams::Alphabet::negative(a), above), nullptr);
+}
+
+TEST(BeamArrangement, RandomScenesMatchCgalArrangement) {
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    const auto s = preimage::testing::random_beam_scene(20 + 5 * seed, seed % 4, 3 + 3 * seed, seed, 0, 0.3);
+    const auto A = BeamArrangement::build(s);
+    expect_matches_cgal(A, "seed " + std::to_string(seed));
+    // Every sample point locates back to its own region.
+    for (std::uint32_t r = 0; r < A.num_regions(); ++r) EXPECT_EQ(A.locate(A.regions()[r].sample), r);
+  }
+}
+
+TEST(BeamArrangement, LandmarkScenesInTheUnboundedPlane) {
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    const auto L = beams::landmark_scene(3 + seed % 4, seed);
+    for (auto model : {beams::LandmarkModel::Crossing, beams::LandmarkModel::North}) {
+      const auto s = beams::with_landmark_beams(L, model, true, true);
+      const auto A = BeamArrangement::build(s);
+      EXPECT_TRUE(A.unbounded());
+      expect_matches_cgal(A, "landmarks seed " + std::to_string(seed));
+      if (model == beams::LandmarkModel::North) EXPECT_EQ(A.num_regions(), 1u);  // rays north never separate the plane
+    }
+  }
+}
+
+TEST(BeamArrangement, InvalidBeamsAreNamed) {
+  auto s = beams::fig1_scene();
+  s.beams[2].from = Point(4, 6);  // inside an obstacle
+  EXPECT_NE(build_error(s).find("$.beams[2] ('c'): from (4, 6) is not on the boundary (it is inside $.environment.obstacles[1])"),
+            std::string::npos)
+      << build_error(s);
+  s = beams::fig1_scene();
+  s.beams.push_back({"g", Point(0, 2), Point(12, 2), true});  // through two obstacles
+  EXPECT_NE(build_error(s).find("$.beams[6] ('g'): the beam touches edge"), std::string::npos) << build_error(s);
+  s = beams::fig1_scene();
+  s.beams.push_back({"a", Point(0, 1), Point(3.5, 1.5 + 0), true});  // directed beam sharing undirected label a
+  EXPECT_NE(build_error(s).find("shared by directed and undirected"), std::string::npos) << build_error(s);
+  s = beams::fig3b_scene();
+  s.beams.push_back({"e", Point(0, 6), Point(12, 6), true});
+  s.beams.push_back({"g", Point(0, 4), Point(4, 8), true});
+  s.beams.push_back({"h", Point(1, 8), Point(5, 0), true});  // three beams through (2, 6)
+  EXPECT_NE(build_error(s).find("at one point (2, 6)"), std::string::npos) << build_error(s);
+  s = beams::fig3b_scene();
+  s.beams.push_back({"e", Point(3, 0), Point(3, 8), true});  // on top of b
+  EXPECT_NE(build_error(s).find("overlaps $.beams[1] ('b')"), std::string::npos) << build_error(s);
+  s = beams::fig1_scene();
+  s.beams.push_back({"g", Point(4.5, 2), Point(8, 2), true});  // ends on beam d? no: d is x = 8, from y 0 to 3.5
+  EXPECT_NE(build_error(s).find("$.beams[6] ('g'): "), std::string::npos) << build_error(s);
+  auto L = beams::landmark_scene(3, 1);
+  L.landmarks.push_back({"4", Point(2 * L.landmarks[1].at.x() - L.landmarks[0].at.x(), 2 * L.landmarks[1].at.y() - L.landmarks[0].at.y())});
+  EXPECT_NE(build_error(beams::with_landmark_beams(L, beams::LandmarkModel::Crossing, true, true)).find("passes through landmark"),
+            std::string::npos);
+}
+
+TEST(BeamArrangement, ExportsJsonAndDot) {
+  const auto A = BeamArrangement::build(beams::fig3b_scene());
+  const auto j = beams::graph_json(A);
+  EXPECT_EQ(j["counts"]["regions"], 8);
+  EXPECT_EQ(j["edges"].size(), A.edges().size());
+  const std::string dot = beams::graph_dot(A);
+  EXPECT_NE(dot.find("r0 -> r1 [label=\"a\"]"), std::string::npos) << dot;
+  EXPECT_NE(beams::arrangement_figure(A).str().find("fill-rule=\"evenodd\""), std::string::npos);
+}
