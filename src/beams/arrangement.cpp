@@ -14,6 +14,7 @@
 #include <preimage/geometry/queries.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <stdexcept>
 #include <tuple>
@@ -392,7 +393,9 @@ void ArrangementBuilder::faces() {
     std::uint32_t vmin = H[h0].origin;
     for (std::uint32_t h = h0; cycle_of_[h] == kNone; h = H[h].next) {
       cycle_of_[h] = c;
-      if (CGAL::compare_xy(V[H[h].origin], V[vmin]) == CGAL::SMALLER) vmin = H[h].origin;
+      // Distinct vertices are distinct points: never compare a lazy point with itself
+      // (an exact tie would force the slow exact evaluation).
+      if (H[h].origin != vmin && CGAL::compare_xy(V[H[h].origin], V[vmin]) == CGAL::SMALLER) vmin = H[h].origin;
     }
     // Outer (a bounded face inside it) iff at every visit of vmin the face's wedge
     // stays in the right half-plane, i.e. does not contain the direction west.
@@ -411,6 +414,8 @@ void ArrangementBuilder::faces() {
   }
   const std::size_t nc = cycle_first.size();
   std::vector<std::uint32_t> face(nc, kNone), parent(nc, kNone);
+  std::vector<CGAL::Bbox_2> box(V.size());
+  for (std::size_t v = 0; v < V.size(); ++v) box[v] = V[v].bbox();
   for (std::uint32_t c = 0; c < nc; ++c)
     if (outer[c]) face[c] = static_cast<std::uint32_t>(face_he_.size()), face_he_.push_back(cycle_first[c]);
   unbounded_face_ = static_cast<std::uint32_t>(face_he_.size());
@@ -421,11 +426,18 @@ void ArrangementBuilder::faces() {
     const ExactPoint& v = V[cycle_min[c]];
     std::uint32_t best_he = kNone;
     std::optional<ExactFT> best_x;
+    double best_lo = -HUGE_VAL;  // lower bound of the best hit so far (interval filter only)
     auto offer = [&](const ExactFT& x, std::uint32_t he) {
-      if (!best_x || x > *best_x) best_x = x, best_he = he;
+      if (!best_x || x > *best_x) best_x = x, best_he = he, best_lo = CGAL::to_interval(x).first;
     };
     auto last_out = [&](std::uint32_t w) { return A.out_[A.out_begin_[w + 1] - 1]; };  // wedge holding east
+    const CGAL::Bbox_2& vb = box[cycle_min[c]];
     for (std::uint32_t h = 0; h < H.size(); h += 2) {
+      // Interval pre-filter: skip edges certainly above, below, right of v, or left of the best hit.
+      const CGAL::Bbox_2 &ba = box[H[h].origin], &bb = box[H[h].target];
+      if ((ba.ymin() > vb.ymax() && bb.ymin() > vb.ymax()) || (ba.ymax() < vb.ymin() && bb.ymax() < vb.ymin()) ||
+          (ba.xmin() > vb.xmax() && bb.xmin() > vb.xmax()) || (ba.xmax() < best_lo && bb.xmax() < best_lo))
+        continue;
       const ExactPoint &a = V[H[h].origin], &b = V[H[h].target];
       if (H[h].origin == cycle_min[c] || H[h].target == cycle_min[c]) continue;
       const bool ay = a.y() == v.y(), by = b.y() == v.y();
@@ -486,10 +498,14 @@ void ArrangementBuilder::regions_and_graph() {
     const ExactPoint &a = V[H[base].origin], &b = V[H[base].target];
     const ExactPoint m = CGAL::midpoint(a, b);
     const bool up = a.x() < b.x();  // face on the left: above a left-to-right edge
+    const CGAL::Bbox_2 mb = m.bbox();
     std::optional<ExactFT> best;
     for (std::uint32_t k = begin[f]; k < begin[f + 1]; ++k) {
       const std::uint32_t h = he[k];
       if (h == base) continue;
+      const CGAL::Bbox_2 bp = V[H[h].origin].bbox(), bq = V[H[h].target].bbox();
+      if ((bp.xmax() < mb.xmin() && bq.xmax() < mb.xmin()) || (bp.xmin() > mb.xmax() && bq.xmin() > mb.xmax())) continue;
+      if (up ? (bp.ymax() < mb.ymin() && bq.ymax() < mb.ymin()) : (bp.ymin() > mb.ymax() && bq.ymin() > mb.ymax())) continue;
       const ExactPoint &p = V[H[h].origin], &q = V[H[h].target];
       const ExactPoint &lo = p.x() < q.x() ? p : q, &hi = p.x() < q.x() ? q : p;
       if (m.x() < lo.x() || m.x() > hi.x()) continue;
@@ -501,9 +517,12 @@ void ArrangementBuilder::regions_and_graph() {
     }
     sample[f] = ExactPoint(m.x(), (m.y() + *best) / 2);
   }
-  // Regions numbered by sample point, left to right (then bottom to top).
-  std::sort(free_faces.begin(), free_faces.end(),
-            [&](auto x, auto y) { return CGAL::compare_xy(sample[x], sample[y]) == CGAL::SMALLER; });
+  // Regions numbered by sample point, left to right (then bottom to top). This order is
+  // only a naming convention, so rounded coordinates (ties by face) decide it: no exact
+  // evaluation is forced when two samples share an abscissa.
+  std::vector<std::pair<double, double>> approx(nf);
+  for (std::uint32_t f : free_faces) approx[f] = {CGAL::to_double(sample[f].x()), CGAL::to_double(sample[f].y())};
+  std::sort(free_faces.begin(), free_faces.end(), [&](auto x, auto y) { return std::tie(approx[x], x) < std::tie(approx[y], y); });
   A.face_region_.assign(nf, kNone);
   A.region_he_begin_.assign(1, 0);
   for (std::uint32_t r = 0; r < free_faces.size(); ++r) {

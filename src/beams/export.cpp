@@ -15,7 +15,6 @@ json pt(const ExactPoint& p) {
   const auto q = to_double(p);
   return json::array({q.x(), q.y()});
 }
-std::string num(double v) { return geometry::format_number(v); }
 }  // namespace
 
 json graph_json(const BeamArrangement& A) {

@@ -53,7 +53,11 @@ Trace trace_path(const BeamArrangement& A, std::span<const ExactPoint> path) {
       if (o1 * o2 > 0) continue;
       const int o3 = orient(a, b, bg.from), o4 = orient(a, b, bg.to);
       if (o3 * o4 > 0) continue;
-      if (o1 == 0 || o2 == 0 || o3 == 0 || o4 == 0) throw InputError(seg + " touches beam " + std::to_string(i) + " without crossing it");
+      if (o1 == 0 || o2 == 0 || o3 == 0 || o4 == 0) {
+        // Collinear with the beam's line yet apart from the beam is fine.
+        if (!CGAL::do_intersect(ab, ESegment(bg.from, bg.to))) continue;
+        throw InputError(seg + " touches beam " + std::to_string(i) + " without crossing it");
+      }
       const EVector d = b - a, e = bg.to - bg.from;
       const ExactFT s = cross(bg.from - a, e) / cross(d, e);
       const ExactPoint X = a + s * d;

@@ -17,5 +17,6 @@ struct DemoContext {
 void demo_geometry(DemoContext& ctx);
 void demo_decompose(DemoContext& ctx);
 void demo_coverage(DemoContext& ctx);
+void demo_beams(DemoContext& ctx);
 
 }  // namespace preimage::cli

@@ -178,3 +178,15 @@ TEST(MultiBody, ParityFilterRejectsAmbiguousLabels) {
   EXPECT_THROW(beams::ParityFilter(A, {0}), InputError);
   EXPECT_THROW(beams::together_filter(A), InputError);
 }
+
+// Regression: the Fig. 1 sample path runs along x = 6, the line of beam f, above f's
+// end; tracing once called that a touch of f. Found by `preimage demo`.
+TEST(Regressions, PathCollinearWithABeamLineButApartIsNotATouch) {
+  const auto A = BeamArrangement::build(scene::load_scene(std::string(PREIMAGE_EXAMPLES) + "/beams/fig01_six_beams.json"));
+  const auto w = A.alphabet().parse_word("cbabdeeefe");
+  const filter::Trellis T(A.graph(), {}, w);
+  const auto path = beams::sample_path(A, T.enumerate(1).front(), w);
+  EXPECT_EQ(beams::trace_path(A, path).word, w);
+  const geometry::ExactPoint apart[] = {geometry::to_exact(geometry::Point(6, 5)), geometry::to_exact(geometry::Point(6, 3))};
+  EXPECT_TRUE(beams::trace_path(A, apart).word.empty());
+}
