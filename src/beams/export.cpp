@@ -99,7 +99,7 @@ render::SvgCanvas arrangement_figure(const BeamArrangement& A, const FigureOptio
   if (any_undir) c.legend("undirected beam", undirected);
   for (const auto& l : A.landmarks()) c.point(l, 4, render::Style{"#222", "none", 0, 1, ""});
   if (o.region_ids)
-    for (std::uint32_t r = 0; r < A.num_regions(); ++r) c.label(to_double(A.regions()[r].sample), "r" + std::to_string(r), 11, "#555");
+    for (std::uint32_t r = 0; r < A.num_regions(); ++r) c.label(to_double(A.regions()[r].sample), std::string("r").append(std::to_string(r)), 11, "#555");
   if (!o.path.empty()) {
     const render::Style ps{"none", "#1a5fb4", 2.0, 0.9, ""};
     c.polyline(o.path, ps);

@@ -34,12 +34,6 @@ std::vector<geometry::Point> to_double(const std::vector<geometry::ExactPoint>& 
   return out;
 }
 
-void write_text(const std::string& path, const std::string& text) {
-  std::ofstream out(path);
-  if (!out) throw InputError(path + ": cannot write file");
-  out << text;
-}
-
 // ---------------------------------------------------------------- graph
 void run_graph(const std::string& file, bool as_json, bool dot, const std::string& svg) {
   const scene::Scene s = scene::load_scene(file);
