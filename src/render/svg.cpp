@@ -74,7 +74,10 @@ void SvgCanvas::rings(const std::vector<std::vector<Point>>& rings, const Style&
   for (auto& r : rings) {
     for (std::size_t i = 0; i < r.size(); ++i) {
       const std::string xy = px(r[i]);
-      d += (i ? "L" : "M") + xy.substr(0, xy.find(',')) + " " + xy.substr(xy.find(',') + 1) + " ";
+      // Appends only: GCC 12 flags "literal" + std::string with a false -Wrestrict at -O3.
+      std::string cmd = xy;
+      cmd[cmd.find(',')] = ' ';
+      d.append(i ? "L" : "M").append(cmd).append(" ");
     }
     d += "Z ";
   }
