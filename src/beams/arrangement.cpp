@@ -177,9 +177,8 @@ void ArrangementBuilder::check_interior(std::size_t i, const End& a, const End& 
     // rest of the beam off the edge's line.
     const bool a_on = o3 == 0 && (a.kind == End::OnEdge ? a.index == e : (a.index == e || a.index == E.next(e)));
     const bool b_on = o4 == 0 && (b.kind == End::OnEdge ? b.index == e : (b.index == e || b.index == E.next(e)));
-    const bool a_here = a.kind != End::AtLandmark && a_on, b_here = b.kind != End::AtLandmark && b_on;
-    if ((a_here && o4 != 0) || (b_here && o3 != 0)) continue;
-    if (o1 == 0 && o2 == 0 && !a_here && !b_here) {
+    if ((a_on && o4 != 0) || (b_on && o3 != 0)) continue;
+    if (o1 == 0 && o2 == 0 && !a_on && !b_on) {
       // Collinear but possibly disjoint.
       auto between = [](const ExactPoint& p, const ExactPoint& q, const ExactPoint& r) {
         return CGAL::collinear_are_ordered_along_line(p, r, q);
@@ -354,10 +353,12 @@ void ArrangementBuilder::build_half_edges() {
   }
   // Beam pieces: the even half-edge runs from -> to.
   for (std::uint32_t i = 0; i < A.beams_.size(); ++i) {
+    A.beam_he_.push_back(static_cast<std::uint32_t>(A.half_edges_.size()));
     std::uint32_t prev = end_vertex_from_[i];
     for (const X& x : along_[i]) add(prev, x.vertex, i), prev = x.vertex;
     add(prev, end_vertex_to_[i], i);
   }
+  A.beam_he_.push_back(static_cast<std::uint32_t>(A.half_edges_.size()));
 }
 
 void ArrangementBuilder::link() {

@@ -63,11 +63,11 @@ Trace trace_path(const BeamArrangement& A, std::span<const ExactPoint> path) {
       const ExactPoint X = a + s * d;
       // The beam piece holding X (its even half-edge runs from -> to, region on the left).
       std::uint32_t piece = kNone;
-      for (std::uint32_t h = 0; h < H.size() && piece == kNone; h += 2)
-        if (H[h].beam == i) {
-          if (X == V[H[h].origin] || X == V[H[h].target]) throw InputError(seg + " passes through a crossing of beams");
-          if (CGAL::collinear_are_strictly_ordered_along_line(V[H[h].origin], X, V[H[h].target])) piece = h;
-        }
+      const auto [first, last] = A.beam_pieces(i);
+      for (std::uint32_t h = first; h < last && piece == kNone; h += 2) {
+        if (X == V[H[h].origin] || X == V[H[h].target]) throw InputError(seg + " passes through a crossing of beams");
+        if (CGAL::collinear_are_strictly_ordered_along_line(V[H[h].origin], X, V[H[h].target])) piece = h;
+      }
       // From the right of from->to (o1 < 0) to the left: positive; entering the even half-edge's face.
       const bool positive = o1 < 0;
       const Symbol y = positive || !bg.directed ? Alphabet::positive(bg.label) : Alphabet::negative(bg.label);

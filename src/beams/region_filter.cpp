@@ -139,7 +139,10 @@ ParityFilter::ParityFilter(const BeamArrangement& A, const std::vector<std::uint
   for (Symbol y = 0; y < seen.size(); ++y) {
     std::set<Pair> moves;
     bool loops = false;
-    for (auto& p : seen[y]) (p.first == p.second ? loops = true : (moves.insert(p), true));
+    for (auto& p : seen[y]) {
+      if (p.first == p.second) loops = true;
+      else moves.insert(p);
+    }
     if (moves.size() > 1 || (moves.size() == 1 && loops))
       throw InputError("the parity filter needs observation " + A.alphabet().format(y) +
                        " to join one pair of regions (it joins " + std::to_string(seen[y].size()) + ")");

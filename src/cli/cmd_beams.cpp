@@ -80,6 +80,26 @@ std::vector<std::uint32_t> parse_ids(const std::string& text) {
   return out;
 }
 
+// Calls `fn` for each observation of --word, or of --stream as it is read. A bad token
+// ends the stream with an error after everything before it was delivered.
+template <class Fn>
+void for_each_observation(const BeamArrangement& A, const FilterArgs& a, Fn fn) {
+  if (!a.word.empty()) {
+    for (auto y : A.alphabet().parse_word(a.word)) fn(y);
+    return;
+  }
+  std::ifstream f;
+  std::istream* in = &std::cin;
+  if (a.stream != "-") {
+    f.open(a.stream);
+    if (!f) throw InputError(a.stream + ": cannot open file");
+    in = &f;
+  }
+  beams::WordReader r(A.alphabet(), *in);
+  beams::Symbol y;
+  while (r.next(y)) fn(y);
+}
+
 void run_bodies(const BeamArrangement& A, const FilterArgs& a, const std::vector<std::uint32_t>& R0,
                 const std::vector<beams::Symbol>& word) {
   std::vector<filter::ProductFilter::Assignment> init;
@@ -88,15 +108,7 @@ void run_bodies(const BeamArrangement& A, const FilterArgs& a, const std::vector
   if (a.together) {
     for (auto r : R0) init.push_back(filter::ProductFilter::Assignment(n, r));
   } else {
-    std::vector<std::uint32_t> idx(n, 0);
-    for (bool more = true; more;) {
-      filter::ProductFilter::Assignment t;
-      for (auto i : idx) t.push_back(R0[i]);
-      init.push_back(t);
-      std::size_t i = 0;
-      while (i < n && ++idx[i] == R0.size()) idx[i++] = 0;
-      more = i < n;
-    }
+    init = filter::ProductFilter::all_assignments(R0, n);
   }
   filter::ProductFilter F(A.graph(), n, a.distinguishable, init);
   std::optional<filter::Dfa> fig11;
@@ -155,19 +167,7 @@ void run_filter(const FilterArgs& a) {
 
   std::vector<beams::Symbol> word;
   if (a.bodies > 1) {
-    if (!a.word.empty()) word = A.alphabet().parse_word(a.word);
-    else {
-      std::ifstream f;
-      std::istream* in = &std::cin;
-      if (a.stream != "-") {
-        f.open(a.stream);
-        if (!f) throw InputError(a.stream + ": cannot open file");
-        in = &f;
-      }
-      beams::WordReader r(A.alphabet(), *in);
-      beams::Symbol y;
-      while (r.next(y)) word.push_back(y);
-    }
+    for_each_observation(A, a, [&](beams::Symbol y) { word.push_back(y); });
     return run_bodies(A, a, R0all, word);
   }
 
@@ -177,29 +177,16 @@ void run_filter(const FilterArgs& a) {
     word.push_back(y);
     if (!bad && !F.step(y)) bad = word.size();
   };
-  if (!a.word.empty()) {
-    for (auto y : A.alphabet().parse_word(a.word)) feed(y);
-  } else {
-    std::ifstream f;
-    std::istream* in = &std::cin;
-    if (a.stream != "-") {
-      f.open(a.stream);
-      if (!f) throw InputError(a.stream + ": cannot open file");
-      in = &f;
+  // Streaming: one line per observation, flushed, so the filter runs on a live feed.
+  const bool live = !a.stream.empty() && !a.as_json;
+  for_each_observation(A, a, [&](beams::Symbol y) {
+    feed(y);
+    if (live) {
+      const auto rs = F.regions();
+      std::cout << word.size() << " " << A.alphabet().format(y) << ": " << rs.size() << " possible: " << region_list(rs)
+                << std::endl;
     }
-    beams::WordReader r(A.alphabet(), *in);
-    beams::Symbol y;
-    // Streaming: one line per observation, flushed, so the filter runs on a live feed.
-    // A bad token ends the stream with an error after everything before it was reported.
-    while (r.next(y)) {
-      feed(y);
-      if (!a.as_json) {
-        const auto rs = F.regions();
-        std::cout << word.size() << " " << A.alphabet().format(y) << ": " << rs.size() << " possible: " << region_list(rs)
-                  << std::endl;
-      }
-    }
-  }
+  });
   const auto R = F.regions();
   json j;
   if (a.as_json) {

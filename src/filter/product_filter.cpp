@@ -11,23 +11,31 @@ ProductFilter::ProductFilter(const TransitionSystem& system, std::size_t bodies,
                              const std::vector<Assignment>& initial)
     : sys_(&system), n_(bodies), distinguishable_(distinguishable) {
   if (bodies == 0) throw std::invalid_argument("ProductFilter: at least one body");
+  std::vector<State> all;
   if (initial.empty()) {
-    // Every assignment: the n-fold product of the state set (mixed-radix counting).
-    const std::size_t m = system.num_states();
-    Assignment a(n_, 0);
-    for (bool more = m > 0; more;) {
-      flat_.insert(flat_.end(), a.begin(), a.end());
-      std::size_t i = 0;
-      while (i < n_ && ++a[i] == m) a[i++] = 0;
-      more = i < n_;
-    }
-  } else {
-    for (const Assignment& a : initial) {
-      if (a.size() != n_) throw std::invalid_argument("ProductFilter: assignment of the wrong size");
-      flat_.insert(flat_.end(), a.begin(), a.end());
-    }
+    all.resize(system.num_states());
+    std::iota(all.begin(), all.end(), State{0});
+  }
+  for (const Assignment& a : initial.empty() ? all_assignments(all, n_) : initial) {
+    if (a.size() != n_) throw std::invalid_argument("ProductFilter: assignment of the wrong size");
+    flat_.insert(flat_.end(), a.begin(), a.end());
   }
   normalise(flat_);
+}
+
+std::vector<ProductFilter::Assignment> ProductFilter::all_assignments(const std::vector<State>& states, std::size_t n) {
+  // Mixed-radix counting over indices into `states`.
+  std::vector<Assignment> out;
+  std::vector<std::size_t> idx(n, 0);
+  for (bool more = !states.empty(); more;) {
+    Assignment t;
+    for (auto i : idx) t.push_back(states[i]);
+    out.push_back(std::move(t));
+    std::size_t i = 0;
+    while (i < n && ++idx[i] == states.size()) idx[i++] = 0;
+    more = i < n;
+  }
+  return out;
 }
 
 void ProductFilter::normalise(std::vector<State>& flat) const {

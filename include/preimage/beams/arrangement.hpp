@@ -72,6 +72,8 @@ class BeamArrangement {
   const std::vector<ExactPoint>& vertices() const { return vertices_; }
   const std::vector<HalfEdge>& half_edges() const { return half_edges_; }
   static std::uint32_t twin(std::uint32_t h) { return h ^ 1u; }
+  /// Half-edges of beam i's pieces, in order from -> to: [first, last), even ids (step 2).
+  std::pair<std::uint32_t, std::uint32_t> beam_pieces(std::uint32_t i) const { return {beam_he_[i], beam_he_[i + 1]}; }
   /// Half-edges of a region (all its boundary cycles).
   std::span<const std::uint32_t> region_half_edges(std::uint32_t r) const {
     return {region_he_.data() + region_he_begin_[r], region_he_.data() + region_he_begin_[r + 1]};
@@ -101,6 +103,7 @@ class BeamArrangement {
   std::vector<geometry::Point> landmarks_;
   std::vector<ExactPoint> vertices_;
   std::vector<HalfEdge> half_edges_;
+  std::vector<std::uint32_t> beam_he_;  // beam i's pieces: half-edges [beam_he_[i], beam_he_[i+1])
   std::vector<std::uint32_t> out_begin_, out_;  // CSR: outgoing half-edges CCW from east
   std::vector<std::uint32_t> face_region_;
   std::vector<Region> regions_;

@@ -22,6 +22,9 @@ class ProductFilter {
   ProductFilter(const TransitionSystem& system, std::size_t bodies, bool distinguishable,
                 const std::vector<Assignment>& initial = {});
 
+  /// Every tuple of `bodies` states drawn from `states` (the n-fold product).
+  static std::vector<Assignment> all_assignments(const std::vector<State>& states, std::size_t bodies);
+
   bool step(Symbol y);
   std::size_t bodies() const { return n_; }
   bool distinguishable() const { return distinguishable_; }

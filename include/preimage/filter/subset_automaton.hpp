@@ -47,9 +47,6 @@ class SubsetAutomaton {
   static constexpr Id kUnknown = UINT32_MAX;
   Id miss(Id id, Symbol y);
   void flush();
-  struct Hash {
-    std::size_t operator()(const std::string& s) const { return std::hash<std::string>()(s); }
-  };
   static std::string key(std::span<const State> s);
 
   const TransitionSystem* sys_;
@@ -58,7 +55,7 @@ class SubsetAutomaton {
   std::vector<Id> table_;           // row per I-state, nsym_ entries
   std::vector<State> pool_;         // I-states' members, concatenated
   std::vector<std::size_t> begin_;  // I-state i = pool_[begin_[i], begin_[i+1])
-  std::unordered_map<std::string, Id, Hash> index_;
+  std::unordered_map<std::string, Id> index_;
   std::size_t misses_ = 0, flushes_ = 0;
 };
 
