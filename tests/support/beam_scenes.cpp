@@ -28,7 +28,8 @@ scene::Scene random_beam_scene(std::size_t n, std::size_t holes, std::size_t nbe
       if (geometry::locate(*sc.environment, p).kind != geometry::Location::Kind::Interior) continue;
       const double a = ang(rng);
       const std::size_t k = sc.beams.size();
-      const std::string label = labels ? "b" + std::to_string(k % labels) : "b" + std::to_string(k);
+      // Appended, not "b" + to_string: GCC 12 flags that with a false -Wrestrict at -O3.
+      const std::string label = std::string("b").append(std::to_string(labels ? k % labels : k));
       const bool directed = labels ? (k % labels) >= undirected_fraction * labels : coin(rng) >= undirected_fraction;
       sc.beams.push_back({label, p, geometry::Point(p.x() + std::cos(a), p.y() + std::sin(a)), directed, scene::Beam::Shape::Line});
     }
