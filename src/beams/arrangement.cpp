@@ -3,19 +3,24 @@
 //   1. each beam resolved to an exact segment with its end attachments (boundary
 //      edge, environment vertex, landmark), validated against the environment;
 //   2. pairwise beam crossings by orientation tests (constructions only for real
-//      crossings), sorted along each beam by their exact parameter;
+//      crossings), sorted along each beam by their exact points;
 //   3. half-edges for boundary pieces and beam pieces, sorted counter-clockwise
 //      around each vertex; next() = the clockwise neighbour of the twin;
 //   4. boundary cycles traced and classified at their lexicographically smallest
 //      vertex; each inner cycle hangs in the face hit by a leftward ray;
 //   5. free faces become regions with a sample point; beam pieces become G's edges.
+// Hot loops use predicates on stored points and build few lazy-exact constructions:
+// every construction is a DAG node kept alive as long as the arrangement.
 #include <preimage/beams/arrangement.hpp>
 #include <preimage/error.hpp>
 #include <preimage/geometry/queries.hpp>
 
+#include <CGAL/Intersections_2/Line_2_Line_2.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <span>
 #include <stdexcept>
 #include <tuple>
 
@@ -31,7 +36,8 @@ int orient(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c) { retu
 
 // Counter-clockwise order of the directions c->a, c->b, starting at east.
 bool ccw_less(const ExactPoint& c, const ExactPoint& a, const ExactPoint& b) {
-  auto half = [&](const ExactPoint& p) { return (p.y() > c.y() || (p.y() == c.y() && p.x() > c.x())) ? 0 : 1; };
+  // Predicates only: p.x(), p.y() of a lazy point would build new DAG nodes.
+  auto half = [&](const ExactPoint& p) { return CGAL::compare_yx(p, c) == CGAL::LARGER ? 0 : 1; };
   const int ha = half(a), hb = half(b);
   if (ha != hb) return ha < hb;
   return orient(c, a, b) > 0;
@@ -69,12 +75,14 @@ class ArrangementBuilder {
   void link();
   void faces();
   void regions_and_graph();
+  std::optional<Point> double_sample(std::span<const std::uint32_t> face, const std::vector<Point>& approx_v) const;
+  bool strictly_inside(std::span<const std::uint32_t> face, const ExactPoint& s) const;
+  ExactPoint exact_sample(std::span<const std::uint32_t> face) const;
 
   BeamArrangement& A;
   const scene::Scene& S;
   std::vector<End> from_, to_;
   struct X {
-    ExactFT t;
     std::uint32_t vertex;
     std::uint32_t other;
   };
@@ -244,7 +252,11 @@ void ArrangementBuilder::find_crossings() {
   const std::size_t m = A.beams_.size();
   along_.assign(m, {});
   std::vector<CGAL::Bbox_2> box(m);
-  for (std::size_t i = 0; i < m; ++i) box[i] = A.beams_[i].from.bbox() + A.beams_[i].to.bbox();
+  std::vector<geometry::ExactKernel::Line_2> carrier;
+  for (std::size_t i = 0; i < m; ++i) {
+    box[i] = A.beams_[i].from.bbox() + A.beams_[i].to.bbox();
+    carrier.emplace_back(geometry::to_exact(S.beams[i].from), geometry::to_exact(S.beams[i].to));
+  }
   // Sort by left end of the box so each beam meets only candidates overlapping in x.
   std::vector<std::uint32_t> order(m);
   std::iota(order.begin(), order.end(), 0u);
@@ -272,14 +284,13 @@ void ArrangementBuilder::find_crossings() {
         continue;
       }
       if (o1 * o2 < 0 && o3 * o4 < 0) {
-        const EVector d = Q - P, e = T - R, w = R - P;
-        const ExactFT den = d.x() * e.y() - d.y() * e.x();
-        const ExactFT t = (w.x() * e.y() - w.y() * e.x()) / den;
-        const ExactFT u = (w.x() * d.y() - w.y() * d.x()) / den;
+        // One lazy node for the line pair and one for the point (the carriers are
+        // leaves built from the input doubles), instead of a DAG per parameter.
+        const auto hit = CGAL::intersection(carrier[i], carrier[j]);
         const std::uint32_t v = static_cast<std::uint32_t>(A.vertices_.size());
-        A.vertices_.push_back(P + t * d);
-        along_[i].push_back({t, v, j});
-        along_[j].push_back({u, v, i});
+        A.vertices_.push_back(*boost::get<ExactPoint>(&*hit));
+        along_[i].push_back({v, j});
+        along_[j].push_back({v, i});
         ++A.crossings_;
         continue;
       }
@@ -289,11 +300,17 @@ void ArrangementBuilder::find_crossings() {
       if ((o3 == 0 && !(P == R || P == T)) || (o4 == 0 && !(Q == R || Q == T))) fail(i, "the beam ends on " + name(j));
     }
   }
+  // Crossings in order along each beam: all lie on its carrier, so the lexicographic
+  // order of the points (reversed when the beam runs right to left) is the order.
   for (std::size_t i = 0; i < m; ++i) {
     auto& xs = along_[i];
-    std::sort(xs.begin(), xs.end(), [](const X& a, const X& b) { return a.t < b.t; });
+    const bool forward = CGAL::compare_xy(A.beams_[i].from, A.beams_[i].to) == CGAL::SMALLER;
+    const auto before = forward ? CGAL::SMALLER : CGAL::LARGER;
+    std::sort(xs.begin(), xs.end(), [&](const X& a, const X& b) {
+      return a.vertex != b.vertex && CGAL::compare_xy(A.vertices_[a.vertex], A.vertices_[b.vertex]) == before;
+    });
     for (std::size_t k = 1; k < xs.size(); ++k)
-      if (xs[k].t == xs[k - 1].t)
+      if (A.vertices_[xs[k].vertex] == A.vertices_[xs[k - 1].vertex])
         fail(i, "the beam meets " + name(xs[k - 1].other) + " and " + name(xs[k].other) + " at one point " +
                     where(A.vertices_[xs[k].vertex]) + " (beams must cross in pairs)");
   }
@@ -468,6 +485,91 @@ void ArrangementBuilder::faces() {
 }
 
 // ---------------------------------------------------------------- 5. regions and G
+// Sample points. The face lies left of each of its half-edges; from the midpoint of its
+// widest (in x) half-edge go up (edge running right) or down (running left) to the
+// nearest other edge of the face over that abscissa, and take the middle.
+std::optional<Point> ArrangementBuilder::double_sample(std::span<const std::uint32_t> face,
+                                                       const std::vector<Point>& approx_v) const {
+  const auto& H = A.half_edges_;
+  std::uint32_t base = kNone;
+  double width = 0;
+  for (std::uint32_t h : face) {
+    const double w = std::abs(approx_v[H[h].target].x() - approx_v[H[h].origin].x());
+    if (w > width) width = w, base = h;
+  }
+  if (base == kNone) return std::nullopt;
+  const Point &a = approx_v[H[base].origin], &b = approx_v[H[base].target];
+  const double mx = (a.x() + b.x()) / 2, my = (a.y() + b.y()) / 2;
+  const bool up = a.x() < b.x();
+  double best = up ? HUGE_VAL : -HUGE_VAL;
+  for (std::uint32_t h : face) {
+    if (h == base) continue;
+    const Point &p = approx_v[H[h].origin], &q = approx_v[H[h].target];
+    const Point &lo = p.x() < q.x() ? p : q, &hi = p.x() < q.x() ? q : p;
+    if (mx < lo.x() || mx > hi.x()) continue;
+    const double y = lo.x() == hi.x() ? (up ? std::min(p.y(), q.y()) : std::max(p.y(), q.y()))
+                                      : lo.y() + (mx - lo.x()) * (hi.y() - lo.y()) / (hi.x() - lo.x());
+    if (up ? (y > my && y < best) : (y < my && y > best)) best = y;
+  }
+  if (!std::isfinite(best)) return std::nullopt;
+  return Point(mx, (my + best) / 2);
+}
+
+// Exactly: s is on no edge of the face, and an upward ray from s crosses the face's
+// boundary an odd number of times (half-open rule in x; an edge with the face on both
+// sides is met twice and cancels).
+bool ArrangementBuilder::strictly_inside(std::span<const std::uint32_t> face, const ExactPoint& s) const {
+  const auto& H = A.half_edges_;
+  const auto& V = A.vertices_;
+  bool inside = false;
+  for (std::uint32_t h : face) {
+    const ExactPoint &p = V[H[h].origin], &q = V[H[h].target];
+    const auto cp = CGAL::compare_x(p, s), cq = CGAL::compare_x(q, s);
+    if (cp == cq && cp != CGAL::EQUAL) continue;  // entirely left or right of s
+    const int o = orient(p, q, s);
+    if (o == 0) {
+      if (CGAL::collinear_are_ordered_along_line(p, s, q)) return false;
+      continue;
+    }
+    if ((cp == CGAL::LARGER) == (cq == CGAL::LARGER)) continue;
+    // One end at or left of s, the other right of it: s is below the edge iff it is
+    // right of the edge directed left to right.
+    if ((cp == CGAL::LARGER ? -o : o) < 0) inside = !inside;
+  }
+  return inside;
+}
+
+ExactPoint ArrangementBuilder::exact_sample(std::span<const std::uint32_t> face) const {
+  const auto& H = A.half_edges_;
+  const auto& V = A.vertices_;
+  std::uint32_t base = kNone;
+  double width = -1;
+  for (std::uint32_t h : face) {
+    const double w = std::abs(CGAL::to_double(V[H[h].target].x()) - CGAL::to_double(V[H[h].origin].x()));
+    if (CGAL::compare_x(V[H[h].target], V[H[h].origin]) != CGAL::EQUAL && w > width) width = w, base = h;
+  }
+  const ExactPoint &a = V[H[base].origin], &b = V[H[base].target];
+  const ExactPoint m = CGAL::midpoint(a, b);
+  const bool up = a.x() < b.x();
+  const CGAL::Bbox_2 mb = m.bbox();
+  std::optional<ExactFT> best;
+  for (std::uint32_t h : face) {
+    if (h == base) continue;
+    const CGAL::Bbox_2 bp = V[H[h].origin].bbox(), bq = V[H[h].target].bbox();
+    if ((bp.xmax() < mb.xmin() && bq.xmax() < mb.xmin()) || (bp.xmin() > mb.xmax() && bq.xmin() > mb.xmax())) continue;
+    if (up ? (bp.ymax() < mb.ymin() && bq.ymax() < mb.ymin()) : (bp.ymin() > mb.ymax() && bq.ymin() > mb.ymax())) continue;
+    const ExactPoint &p = V[H[h].origin], &q = V[H[h].target];
+    const ExactPoint &lo = p.x() < q.x() ? p : q, &hi = p.x() < q.x() ? q : p;
+    if (m.x() < lo.x() || m.x() > hi.x()) continue;
+    ExactFT y;
+    if (lo.x() == hi.x()) y = up ? CGAL::min(p.y(), q.y()) : CGAL::max(p.y(), q.y());
+    else y = lo.y() + (m.x() - lo.x()) * (hi.y() - lo.y()) / (hi.x() - lo.x());
+    if (up ? y > m.y() : y < m.y())
+      if (!best || (up ? y < *best : y > *best)) best = y;
+  }
+  return ExactPoint(m.x(), (m.y() + *best) / 2);
+}
+
 void ArrangementBuilder::regions_and_graph() {
   const auto& H = A.half_edges_;
   const auto& V = A.vertices_;
@@ -487,42 +589,32 @@ void ArrangementBuilder::regions_and_graph() {
     std::vector<std::uint32_t> fill(begin.begin(), begin.end() - 1);
     for (std::uint32_t h = 0; h < H.size(); ++h) he[fill[H[h].face]++] = h;
   }
+  // Vertex coordinates rounded from their intervals (reading x() or y() of a lazy point
+  // would build DAG nodes that live as long as the arrangement).
+  std::vector<Point> approx_v(V.size());
+  for (std::size_t v = 0; v < V.size(); ++v) {
+    const auto& a = V[v].approx();
+    approx_v[v] = Point(CGAL::to_double(a.x()), CGAL::to_double(a.y()));
+  }
   std::vector<ExactPoint> sample(nf);
+  std::vector<Point> sample_approx(nf);
   for (std::uint32_t f : free_faces) {
-    std::uint32_t base = kNone;
-    double width = -1;
-    for (std::uint32_t k = begin[f]; k < begin[f + 1]; ++k) {
-      const std::uint32_t h = he[k];
-      const double w = std::abs(CGAL::to_double(V[H[h].target].x()) - CGAL::to_double(V[H[h].origin].x()));
-      if (V[H[h].target].x() != V[H[h].origin].x() && w > width) width = w, base = h;
+    const auto hs = std::span<const std::uint32_t>(he).subspan(begin[f], begin[f + 1] - begin[f]);
+    // A point computed in doubles is kept when exact predicates confirm it lies strictly
+    // inside the face; the exact construction is the fallback for slivers.
+    if (auto p = double_sample(hs, approx_v); p && strictly_inside(hs, geometry::to_exact(*p))) {
+      sample[f] = geometry::to_exact(*p);
+      sample_approx[f] = *p;
+    } else {
+      sample[f] = exact_sample(hs);
+      sample_approx[f] = geometry::to_double(sample[f]);
     }
-    const ExactPoint &a = V[H[base].origin], &b = V[H[base].target];
-    const ExactPoint m = CGAL::midpoint(a, b);
-    const bool up = a.x() < b.x();  // face on the left: above a left-to-right edge
-    const CGAL::Bbox_2 mb = m.bbox();
-    std::optional<ExactFT> best;
-    for (std::uint32_t k = begin[f]; k < begin[f + 1]; ++k) {
-      const std::uint32_t h = he[k];
-      if (h == base) continue;
-      const CGAL::Bbox_2 bp = V[H[h].origin].bbox(), bq = V[H[h].target].bbox();
-      if ((bp.xmax() < mb.xmin() && bq.xmax() < mb.xmin()) || (bp.xmin() > mb.xmax() && bq.xmin() > mb.xmax())) continue;
-      if (up ? (bp.ymax() < mb.ymin() && bq.ymax() < mb.ymin()) : (bp.ymin() > mb.ymax() && bq.ymin() > mb.ymax())) continue;
-      const ExactPoint &p = V[H[h].origin], &q = V[H[h].target];
-      const ExactPoint &lo = p.x() < q.x() ? p : q, &hi = p.x() < q.x() ? q : p;
-      if (m.x() < lo.x() || m.x() > hi.x()) continue;
-      ExactFT y;
-      if (lo.x() == hi.x()) y = up ? CGAL::min(p.y(), q.y()) : CGAL::max(p.y(), q.y());
-      else y = lo.y() + (m.x() - lo.x()) * (hi.y() - lo.y()) / (hi.x() - lo.x());
-      if (up ? y > m.y() : y < m.y())
-        if (!best || (up ? y < *best : y > *best)) best = y;
-    }
-    sample[f] = ExactPoint(m.x(), (m.y() + *best) / 2);
   }
   // Regions numbered by sample point, left to right (then bottom to top). This order is
   // only a naming convention, so rounded coordinates (ties by face) decide it: no exact
   // evaluation is forced when two samples share an abscissa.
   std::vector<std::pair<double, double>> approx(nf);
-  for (std::uint32_t f : free_faces) approx[f] = {CGAL::to_double(sample[f].x()), CGAL::to_double(sample[f].y())};
+  for (std::uint32_t f : free_faces) approx[f] = {sample_approx[f].x(), sample_approx[f].y()};
   std::sort(free_faces.begin(), free_faces.end(), [&](auto x, auto y) { return std::tie(approx[x], x) < std::tie(approx[y], y); });
   A.face_region_.assign(nf, kNone);
   A.region_he_begin_.assign(1, 0);

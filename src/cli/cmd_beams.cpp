@@ -100,8 +100,7 @@ void for_each_observation(const BeamArrangement& A, const FilterArgs& a, Fn fn) 
   while (r.next(y)) fn(y);
 }
 
-void run_bodies(const BeamArrangement& A, const FilterArgs& a, const std::vector<std::uint32_t>& R0,
-                const std::vector<beams::Symbol>& word) {
+void run_bodies(const BeamArrangement& A, const FilterArgs& a, const std::vector<std::uint32_t>& R0) {
   std::vector<filter::ProductFilter::Assignment> init;
   // Every body in one of R_0 (all of them in the same region with --together).
   const std::size_t n = a.bodies;
@@ -117,12 +116,22 @@ void run_bodies(const BeamArrangement& A, const FilterArgs& a, const std::vector
       fig11 = beams::together_filter(A);
     } catch (const InputError&) {
     }
+  // Observation by observation, as for one body; after an inconsistency the rest of a
+  // valid stream is still read (and counted) but no longer filtered.
+  std::vector<beams::Symbol> word;
   std::size_t k = 0;
-  for (; k < word.size(); ++k) {
-    if (fig11) fig11_state = fig11->step(fig11_state, word[k]);
-    if (!F.step(word[k])) break;
-  }
-  const bool ok = k == word.size();
+  bool ok = true;
+  const bool live = !a.stream.empty() && !a.as_json;
+  for_each_observation(A, a, [&](beams::Symbol y) {
+    word.push_back(y);
+    if (!ok) return;
+    if (fig11) fig11_state = fig11->step(fig11_state, y);
+    if (!F.step(y)) {
+      ok = false;
+      k = word.size() - 1;
+    }
+    if (live) std::cout << word.size() << " " << A.alphabet().format(y) << ": " << F.size() << " possible assignments" << std::endl;
+  });
   const auto as = F.assignments();
   if (a.as_json) {
     json j = {{"bodies", n}, {"distinguishable", a.distinguishable}, {"observations", word.size()}, {"consistent", ok},
@@ -165,11 +174,8 @@ void run_filter(const FilterArgs& a) {
   if (R0all.empty())
     for (std::uint32_t r = 0; r < A.num_regions(); ++r) R0all.push_back(r);
 
+  if (a.bodies > 1) return run_bodies(A, a, R0all);
   std::vector<beams::Symbol> word;
-  if (a.bodies > 1) {
-    for_each_observation(A, a, [&](beams::Symbol y) { word.push_back(y); });
-    return run_bodies(A, a, R0all, word);
-  }
 
   beams::RegionFilter F(A, R0, a.cached ? beams::FilterMode::Cached : beams::FilterMode::Plain, a.cache_mb << 20);
   std::size_t bad = 0;  // 1-based observation that emptied the I-state

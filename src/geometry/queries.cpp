@@ -47,43 +47,50 @@ Location locate(const Environment& env, const Point& q) {
 }
 
 std::optional<RayHit> shoot_ray(const Environment& env, const ExactPoint& o, const ExactKernel::Vector_2& d) {
-  using EK = ExactKernel;
-  std::optional<RayHit> best;
-  ExactFT best_t = 0;
+  // Decisions by orientation predicates on stored points; the hit parameter t is
+  // constructed only for edges met strictly ahead, and the hit point once at the end,
+  // so a query builds few lazy-exact nodes.
+  const ExactPoint q = o + d;
+  const ExactFT dx = d.x(), dy = d.y();
+  std::optional<ExactFT> best_t;
+  std::size_t best_e = 0;
+  std::optional<std::size_t> best_vtx;
+  bool best_along = false;
   auto offer = [&](const ExactFT& t, std::size_t e, std::optional<std::size_t> vtx, bool along) {
-    if (!best || t < best_t) {
-      best_t = t;
-      best = RayHit{o + t * d, e, vtx, along};
-    }
+    if (!best_t || t < *best_t) best_t = t, best_e = e, best_vtx = vtx, best_along = along;
   };
-  const ExactFT dd = d * d;
   for (std::size_t e = 0; e < env.num_vertices(); ++e) {
-    const ExactPoint a = to_exact(env.vertex(e)), b = to_exact(env.vertex(env.next(e)));
-    const auto sa = CGAL::orientation(d, a - o), sb = CGAL::orientation(d, b - o);
-    if (sa == CGAL::COLLINEAR && sb == CGAL::COLLINEAR) {
+    const ExactPoint &a = env.exact_vertex(e), &b = env.exact_vertex(env.next(e));
+    const int sa = CGAL::orientation(o, q, a), sb = CGAL::orientation(o, q, b);
+    if (sa == 0 && sb == 0) {
       // The edge lies on the ray's line: contact at the nearer endpoint ahead of the origin.
+      const ExactFT dd = d * d;
       ExactFT ta = (a - o) * d / dd, tb = (b - o) * d / dd;
-      if (ta > tb) std::swap(ta, tb);
+      const bool swapped = ta > tb;
+      if (swapped) std::swap(ta, tb);
       if (tb <= 0) continue;
       const bool from_origin = ta <= 0;
-      ExactFT t = from_origin ? tb : ta;
-      std::size_t vtx = ((o + t * d) == a) ? e : env.next(e);
-      offer(t, e, vtx, from_origin);
+      const std::size_t vtx = from_origin != swapped ? env.next(e) : e;
+      offer(from_origin ? tb : ta, e, vtx, from_origin);
       continue;
     }
     if (sa == sb) continue;  // both strictly on one side
-    // Line crossing parameter: o + t d on segment ab.
-    const EK::Vector_2 ab = b - a;
-    const ExactFT denom = d.x() * ab.y() - d.y() * ab.x();
-    const EK::Vector_2 ao = a - o;
-    const ExactFT t = (ao.x() * ab.y() - ao.y() * ab.x()) / denom;
-    if (t <= 0) continue;
+    // o + t d meets the line ab at t = cross(a-o, b-a) / cross(d, b-a). The numerator has
+    // the sign of orientation(o, a, b); the denominator cross(d, b-o) - cross(d, a-o) has
+    // the sign of sb - sa because sa != sb. Only t > 0 counts.
+    const int oab = CGAL::orientation(o, a, b);
+    if (oab == 0 || oab * (sb - sa) < 0) continue;
+    const ExactFT abx = b.x() - a.x(), aby = b.y() - a.y();
+    const ExactFT t = ((a.x() - o.x()) * aby - (a.y() - o.y()) * abx) / (dx * aby - dy * abx);
     std::optional<std::size_t> vtx;
-    if (sa == CGAL::COLLINEAR) vtx = e;
-    else if (sb == CGAL::COLLINEAR) vtx = env.next(e);
+    if (sa == 0) vtx = e;
+    else if (sb == 0) vtx = env.next(e);
+    if (vtx && best_vtx == vtx) continue;  // the same vertex from its other edge: an exact tie
     offer(t, vtx ? *vtx : e, vtx, false);
   }
-  return best;
+  if (!best_t) return std::nullopt;
+  const ExactPoint hit = best_vtx ? env.exact_vertex(*best_vtx) : o + *best_t * d;
+  return RayHit{hit, best_e, best_vtx, best_along};
 }
 
 bool in_free_wedge(const Environment& env, std::size_t v, const Point& t) {

@@ -83,6 +83,15 @@ TEST(BeamArrangement, RandomScenesMatchCgalArrangement) {
   }
 }
 
+// Faces thinner than a unit in the last place: the sample point computed in doubles
+// is rejected by the exact inside test and the exact construction takes over.
+TEST(BeamArrangement, SliverFacesGetExactSamplePoints) {
+  const auto A = BeamArrangement::build(scene::load_scene(std::string(PREIMAGE_FIXTURES) + "/scenes/beam_sliver_faces.json"));
+  EXPECT_EQ(A.num_regions(), 5u);
+  expect_matches_cgal(A, "sliver");
+  for (std::uint32_t r = 0; r < A.num_regions(); ++r) EXPECT_EQ(A.locate(A.regions()[r].sample), r);
+}
+
 TEST(BeamArrangement, LandmarkScenesInTheUnboundedPlane) {
   for (std::uint64_t seed = 1; seed <= 6; ++seed) {
     const auto L = beams::landmark_scene(3 + seed % 4, seed);
