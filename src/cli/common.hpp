@@ -25,6 +25,7 @@ void print_json(const nlohmann::json& j);
 void add_geometry_commands(CLI::App& app);
 void add_decompose_commands(CLI::App& app);
 void add_beams_commands(CLI::App& app);
+void add_wallfollow_commands(CLI::App& app);
 void add_demo_command(CLI::App& app);
 
 }  // namespace preimage::cli

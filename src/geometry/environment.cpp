@@ -21,7 +21,8 @@ std::string format_number(double v) {
 
 std::string format_point(double x, double y) {
   char buf[96];
-  std::snprintf(buf, sizeof buf, "(%.12g, %.12g)", x, y);
+  // + 0.0 turns a negative zero (a rounded exact 0) into "0".
+  std::snprintf(buf, sizeof buf, "(%.12g, %.12g)", x + 0.0, y + 0.0);
   return buf;
 }
 

@@ -174,4 +174,23 @@ render::SvgCanvas cut_diagram(const CutOrdering& o, const std::string& title) {
   return c;
 }
 
+render::SvgCanvas cuts_figure(const geometry::Environment& env, const TrueCuts& T) {
+  using geometry::Point;
+  render::SvgCanvas c(env.bbox(), 560);
+  c.environment(env);
+  const render::Style left{"none", "#1a73e8", 1.5, 0.9, "5 3"}, right{"none", "#d93025", 1.5, 0.9, "5 3"};
+  const bool labels = env.num_vertices() <= 60;
+  for (const Cut& k : T.cuts) {
+    const Point a = env.vertex(k.vertex), b = geometry::to_double(k.end);
+    const std::string id = name({k.left ? CutPoint::Kind::Left : CutPoint::Kind::Right, k.vertex});
+    c.segment(a, b, k.left ? left : right, std::string("cut ").append(id));
+    c.point(b, 3, {k.left ? "#1a73e8" : "#d93025", "#222", 1.0, 1.0, ""}, id);
+    if (labels) c.label(b, id, 11, k.left ? "#1a73e8" : "#d93025");
+  }
+  for (std::size_t v = 0; v < env.num_vertices() && labels; ++v) c.label(env.vertex(v), std::string("v").append(std::to_string(v + 1)), 12);
+  c.legend("left cut (after LFOLLOW) to l_i", left);
+  c.legend("right cut (after RFOLLOW) to r_i", right);
+  return c;
+}
+
 }  // namespace preimage::wallfollow

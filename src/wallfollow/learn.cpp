@@ -42,7 +42,7 @@ class Learner {
       y = act(d > 0 ? Action::RFollow : Action::LFollow);
     } while (y.touch == Touch::Edge);
     const std::size_t next = on_edge ? (d > 0 ? mod(static_cast<long>(at) + 1) : at) : mod(static_cast<long>(at) + d);
-    if ((y.touch == Touch::Reflex) != reflex[next]) lost("vertex v" + std::to_string(next + 1) + " reads differently");
+    if ((y.touch == Touch::Reflex) != reflex[next]) lost(std::string("vertex v").append(std::to_string(next + 1)).append(" reads differently"));
     at = next, on_edge = false, arrived = d;
   }
   // To vertex v arriving in direction d (the JUMP from v then gives that cut).

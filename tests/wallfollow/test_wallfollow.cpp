@@ -4,6 +4,7 @@
 #include <preimage/error.hpp>
 #include <preimage/filter/history.hpp>
 #include <preimage/geometry/generators.hpp>
+#include <preimage/geometry/queries.hpp>
 #include <preimage/scene/scene.hpp>
 #include <preimage/wallfollow/cut_ordering.hpp>
 #include <preimage/wallfollow/environment.hpp>
@@ -307,4 +308,24 @@ TEST(CutOrderingStrategy, Fig3LearnedFromTheInteriorIsEquation13) {
   // goes down: the robot's v1 is the paper's v6. Fig. 3 is symmetric under a shift by
   // three vertices, so this is the relabelling (13) of the paper (v3 as v1).
   EXPECT_EQ(L.ordering.str(), "(v1, l3, r6, v2, v3, v4, l6, r3, v5, v6)");
+}
+
+TEST(CutOrderingStrategy, ManySmallPolygonsFromInteriorStarts) {
+  std::mt19937_64 rng(3);
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    const std::size_t n = 5 + seed % 30;
+    const auto env = random_polygon(n, 1000 + seed);
+    // A random interior start and heading: INIT decides where v_1 ends up.
+    std::optional<Point> start;
+    for (int tries = 0; tries < 200 && !start; ++tries) {
+      const Point p(std::uniform_real_distribution<double>(0, 100)(rng), std::uniform_real_distribution<double>(0, 100)(rng));
+      if (geometry::locate(env, p).kind == geometry::Location::Kind::Interior) start = p;
+    }
+    ASSERT_TRUE(start);
+    const double a = std::uniform_real_distribution<double>(0, 2 * M_PI)(rng);
+    Simulator sim(env, *start, geometry::Vector(std::cos(a), std::sin(a)));
+    const auto L = learn_cut_ordering(sim);
+    EXPECT_EQ(L.ordering.canonical(), true_cut_ordering(env).ordering.canonical()) << "seed " << seed;
+    EXPECT_LE(L.actions, L.action_bound);
+  }
 }

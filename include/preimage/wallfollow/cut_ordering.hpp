@@ -80,5 +80,8 @@ std::vector<std::string> reflex_chain_violations(const CutOrdering& o);
 /// Fig. 4(a): the points of M around a circle in cyclic order, each reflex vertex joined
 /// to its two cut endpoints (left cuts blue, right cuts red).
 render::SvgCanvas cut_diagram(const CutOrdering& o, const std::string& title = "");
+/// The environment with its cuts drawn (Fig. 3): vertices numbered v1.., cuts from each
+/// reflex vertex to l_i and r_i.
+render::SvgCanvas cuts_figure(const geometry::Environment& env, const TrueCuts& cuts);
 
 }  // namespace preimage::wallfollow
