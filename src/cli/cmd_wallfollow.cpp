@@ -3,6 +3,7 @@
 #include "common.hpp"
 
 #include <preimage/error.hpp>
+#include <preimage/geometry/queries.hpp>
 #include <preimage/scene/scene.hpp>
 #include <preimage/wallfollow/cut_ordering.hpp>
 #include <preimage/wallfollow/environment.hpp>
@@ -62,11 +63,28 @@ void print_imaps(const CountingIMaps& k) {
 }
 
 // ---------------------------------------------------------------- simulate
-void run_simulate(const std::string& file, const std::string& actions, const std::string& start, double heading, bool as_json) {
+// A lying pebble at a boundary point (vertex or edge) or in the interior.
+Place pebble_place(const geometry::Environment& env, const std::string& text) {
+  const geometry::Point p = parse_point(text, "--pebble");
+  const auto loc = geometry::locate(env, p);
+  Place q;
+  q.point = geometry::to_exact(p);
+  q.index = loc.index;
+  switch (loc.kind) {
+    case geometry::Location::Kind::AtVertex: return Place::vertex(env, loc.index);
+    case geometry::Location::Kind::OnEdge: q.kind = Place::Kind::Edge; return q;
+    case geometry::Location::Kind::Interior: q.kind = Place::Kind::Interior; return q;
+    default: break;
+  }
+  throw InputError(std::string("--pebble: ").append(geometry::format_point(p)).append(" is not in the environment"));
+}
+
+void run_simulate(const std::string& file, const std::string& actions, const std::string& start, double heading,
+                  const std::string& pebble, bool as_json) {
   const Setup S = load(file, start, heading);
   const auto& env = *S.scene.environment;
   const auto us = parse_actions(actions);
-  Simulator sim(env, S.start, S.heading);
+  Simulator sim(env, S.start, S.heading, pebble.empty() ? std::nullopt : std::optional<Place>(pebble_place(env, pebble)));
   CountingIMaps k;
   k.start(sim.sense());
   json stages = json::array();
@@ -163,7 +181,7 @@ void run_cut_ordering(const std::string& file, bool learn, const std::string& so
 void add_wallfollow_commands(CLI::App& app) {
   auto* w = app.add_subcommand("wallfollow", "wall-following robot: simulator, I-maps, cut ordering (wall-following paper)");
   w->require_subcommand(1);
-  static std::string file, start, actions, sort = "quick", svg;
+  static std::string file, start, actions, sort = "quick", svg, pebble;
   static double heading = 0;
   static bool as_json = false, cw = false, learn = false;
   auto common = [&](CLI::App* c) {
@@ -175,7 +193,8 @@ void add_wallfollow_commands(CLI::App& app) {
   auto* s = w->add_subcommand("simulate", "apply actions; print each observation and the I-maps");
   common(s);
   s->add_option("--actions", actions, "e.g. \"INIT,DROP,LFOLLOW,LFOLLOW,JUMP\"")->required();
-  s->callback([] { run_simulate(file, actions, start, heading, as_json); });
+  s->add_option("--pebble", pebble, "the pebble lies at X,Y instead of being held");
+  s->callback([] { run_simulate(file, actions, start, heading, pebble, as_json); });
   auto* c = w->add_subcommand("count", "vertex count and winding number from the I-maps (section IV)");
   common(c);
   c->add_flag("--clockwise", cw, "follow with LFOLLOW (default RFOLLOW)");

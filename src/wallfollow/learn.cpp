@@ -72,7 +72,9 @@ class Learner {
     goto_arriving(vertex_of(c), dir_of(c));
     const Observation y = act(Action::Jump);
     if (y.touch != Touch::Edge) lost("a JUMP did not end inside an edge");
-    on_edge = true, at = edge_of.empty() ? 0 : edge_of[c], arrived = 0, at_cut = static_cast<long>(c);
+    // Inside the endpoint's edge; during phase 2 that edge is what is being measured and
+    // the caller resets the position once the pebble is found.
+    on_edge = true, at = edge_of[c], arrived = 0, at_cut = static_cast<long>(c);
     return y;
   }
 
