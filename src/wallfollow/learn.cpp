@@ -43,7 +43,7 @@ class Learner {
     } while (y.touch == Touch::Edge);
     const std::size_t next = on_edge ? (d > 0 ? mod(static_cast<long>(at) + 1) : at) : mod(static_cast<long>(at) + d);
     if ((y.touch == Touch::Reflex) != reflex[next]) lost(std::string("vertex v").append(std::to_string(next + 1)).append(" reads differently"));
-    at = next, on_edge = false, arrived = d;
+    at = next, on_edge = false, arrived = d, at_cut = -1;
   }
   // To vertex v arriving in direction d (the JUMP from v then gives that cut).
   void goto_arriving(std::size_t v, int d) {
