@@ -218,11 +218,7 @@ void run_filter(const FilterArgs& a) {
       json stages = json::array();
       for (std::size_t i = 0; i <= T.length(); ++i) stages.push_back(T.stage(i));
       j["sequences"]["stages"] = stages;
-      if (!path.empty()) {
-        json p = json::array();
-        for (auto& q : path) p.push_back({q.x(), q.y()});
-        j["sample_path"] = p;
-      }
+      if (!path.empty()) j["sample_path"] = points_json(path);
     } else {
       std::cout << "possible region sequences: " << count << "\n";
       for (auto& sq : seqs) std::cout << "  " << region_list(sq) << "\n";

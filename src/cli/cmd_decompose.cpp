@@ -31,9 +31,7 @@ void run_boustrophedon(const scene::Scene& s, double angle, bool as_json, const 
   if (as_json) {
     json cells = json::array(), crit = json::array(), reeb = json::array();
     for (std::size_t i = 0; i < b.cells().size(); ++i) {
-      json poly = json::array();
-      for (auto& p : b.polygon(i)) poly.push_back({p.x(), p.y()});
-      cells.push_back({{"id", i}, {"polygon", poly}, {"area", CGAL::to_double(b.area(i))}, {"adjacent", adj[i]},
+      cells.push_back({{"id", i}, {"polygon", points_json(b.polygon(i))}, {"area", CGAL::to_double(b.area(i))}, {"adjacent", adj[i]},
                        {"trapezoids", b.cells()[i].trapezoids.size()}});
       reeb.push_back({{"cell", i}, {"from", b.cells()[i].left_slice}, {"to", b.cells()[i].right_slice}});
     }
@@ -113,9 +111,7 @@ void run_plan(const std::string& path, const std::string& start_s, const std::st
     c.save(svg);
   }
   if (as_json) {
-    json pts = json::array();
-    for (auto& p : plan.path) pts.push_back({p.x(), p.y()});
-    print_json({{"found", plan.found}, {"length", plan.length}, {"cells", plan.cells}, {"path", pts}});
+    print_json({{"found", plan.found}, {"length", plan.length}, {"cells", plan.cells}, {"path", points_json(plan.path)}});
     return;
   }
   if (!plan.found) {
@@ -159,13 +155,11 @@ void run_cover(const std::string& path, double width, const std::string& start_s
     c.save(svg);
   }
   if (as_json) {
-    json pts = json::array();
-    for (auto& p : rep.path) pts.push_back({p.x(), p.y()});
     print_json({{"width", width}, {"angle", rep.angle}, {"length", rep.length}, {"laps", rep.laps}, {"turns", rep.turns},
                 {"cells", rep.cells}, {"critical_points", rep.critical_points}, {"cell_order", rep.cell_order},
                 {"bound", {{"value", rep.bound}, {"diameter", rep.diameter}, {"perimeter", rep.perimeter},
                            {"formula", "D^2/(2r) + 4 D (N_cp + N_ob) + 5 P_total - 4 D"}}},
-                {"path", pts}});
+                {"path", points_json(rep.path)}});
     return;
   }
   std::cout << "coverage with width " << geometry::format_number(width) << " at " << geometry::format_number(rep.angle)

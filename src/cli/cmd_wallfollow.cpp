@@ -3,7 +3,6 @@
 #include "common.hpp"
 
 #include <preimage/error.hpp>
-#include <preimage/geometry/queries.hpp>
 #include <preimage/scene/scene.hpp>
 #include <preimage/wallfollow/cut_ordering.hpp>
 #include <preimage/wallfollow/environment.hpp>
@@ -63,28 +62,12 @@ void print_imaps(const CountingIMaps& k) {
 }
 
 // ---------------------------------------------------------------- simulate
-// A lying pebble at a boundary point (vertex or edge) or in the interior.
-Place pebble_place(const geometry::Environment& env, const std::string& text) {
-  const geometry::Point p = parse_point(text, "--pebble");
-  const auto loc = geometry::locate(env, p);
-  Place q;
-  q.point = geometry::to_exact(p);
-  q.index = loc.index;
-  switch (loc.kind) {
-    case geometry::Location::Kind::AtVertex: return Place::vertex(env, loc.index);
-    case geometry::Location::Kind::OnEdge: q.kind = Place::Kind::Edge; return q;
-    case geometry::Location::Kind::Interior: q.kind = Place::Kind::Interior; return q;
-    default: break;
-  }
-  throw InputError(std::string("--pebble: ").append(geometry::format_point(p)).append(" is not in the environment"));
-}
-
 void run_simulate(const std::string& file, const std::string& actions, const std::string& start, double heading,
                   const std::string& pebble, bool as_json) {
   const Setup S = load(file, start, heading);
   const auto& env = *S.scene.environment;
   const auto us = parse_actions(actions);
-  Simulator sim(env, S.start, S.heading, pebble.empty() ? std::nullopt : std::optional<Place>(pebble_place(env, pebble)));
+  Simulator sim(env, S.start, S.heading, pebble.empty() ? std::nullopt : std::optional<Place>(Place::of(env, parse_point(pebble, "--pebble"), "--pebble")));
   CountingIMaps k;
   k.start(sim.sense());
   json stages = json::array();
@@ -116,15 +99,7 @@ void run_simulate(const std::string& file, const std::string& actions, const std
 void run_count(const std::string& file, const std::string& start, double heading, bool cw, bool as_json) {
   const Setup S = load(file, start, heading);
   Simulator sim(S.scene.environment.value(), S.start, S.heading);
-  CountingIMaps k;
-  k.start(sim.sense());
-  auto act = [&](Action u) { k.step(u, sim.apply(u)); };
-  // Section IV with the pebble dropped at the first vertex; follow until Prop. 2 answers.
-  act(Action::Init);
-  act(Action::Drop);
-  const std::size_t limit = 4 * S.scene.environment->num_vertices() + 8;
-  while (k.k8 == 0 && sim.actions() < limit) act(cw ? Action::LFollow : Action::RFollow);
-  if (k.k8 == 0) throw std::logic_error("count: no vertex count after a full lap");
+  const CountingIMaps k = count_by_following(sim, cw, 4 * S.scene.environment->num_vertices() + 8);
   if (as_json) return print_json({{"vertices", k.k8}, {"winding", k.k5}, {"actions", sim.actions()}, {"imaps", imaps_json(k)}});
   std::cout << "vertex count " << k.k8 << " (k8, Prop. 2) after " << sim.actions() << " actions; winding number " << k.k5
             << " about the pebble (k5, Prop. 1; " << (cw ? "clockwise" : "counter-clockwise") << " is "

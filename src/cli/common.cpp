@@ -45,6 +45,12 @@ nlohmann::json edge_json(const geometry::Environment& env, std::size_t e) {
   return {{"ring", env.ring_name(env.ring_of(e))}, {"index", env.input_edge_index(e)}};
 }
 
+nlohmann::json points_json(const std::vector<geometry::Point>& pts) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& p : pts) out.push_back({p.x(), p.y()});
+  return out;
+}
+
 void print_json(const nlohmann::json& j) { std::cout << j.dump(2) << "\n"; }
 
 }  // namespace preimage::cli

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <string>
+#include <vector>
 
 namespace preimage::cli {
 
@@ -18,6 +19,8 @@ std::string exact_string(const geometry::ExactFT& v);
 void make_dirs(const std::string& dir);
 /// {"ring": "<ring name>", "index": k}: environment edge e in the caller's terms.
 nlohmann::json edge_json(const geometry::Environment& env, std::size_t e);
+/// [[x, y], ...]: a polyline or polygon as JSON.
+nlohmann::json points_json(const std::vector<geometry::Point>& pts);
 /// Prints JSON to stdout, pretty.
 void print_json(const nlohmann::json& j);
 

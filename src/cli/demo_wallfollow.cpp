@@ -27,10 +27,7 @@ void demo_wallfollow(DemoContext& ctx) {
   ctx.figure("wallfollow-fig3.svg", cuts_figure(env, T).str(),
              "Fig. 3: two reflex vertices and their four cuts, computed by exact ray shooting");
   Simulator count_sim(env, geometry::Point(3, 2), geometry::Vector(1, 0));
-  CountingIMaps k;
-  k.start(count_sim.sense());
-  for (Action u : {Action::Init, Action::Drop}) k.step(u, count_sim.apply(u));
-  while (k.k8 == 0) k.step(Action::RFollow, count_sim.apply(Action::RFollow));
+  const CountingIMaps k = count_by_following(count_sim, false, 100);
   R.result("Counting with a pebble (IV): INIT, DROP, then RFOLLOW until Prop. 2 answers: " + std::to_string(k.k8) +
            " vertices after " + std::to_string(count_sim.actions()) + " actions, winding number " + std::to_string(k.k5) +
            " about the pebble.");

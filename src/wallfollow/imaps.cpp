@@ -2,6 +2,7 @@
 #include <preimage/wallfollow/imaps.hpp>
 
 #include <cstdlib>
+#include <stdexcept>
 
 namespace preimage::wallfollow {
 
@@ -35,6 +36,18 @@ void CountingIMaps::step(Action u, const Observation& y) {
     if (!k4) k4 = stage, at_lift_ = true, lap_ = 0;
   }
   if (!k7 && k5 * k6 != 0) k7 = stage, k8 = std::labs(k6);  // Prop. 2
+}
+
+CountingIMaps count_by_following(RobotInterface& robot, bool clockwise, std::size_t max_actions) {
+  CountingIMaps k;
+  k.start(robot.sense());
+  for (Action u : {Action::Init, Action::Drop}) k.step(u, robot.apply(u));
+  const Action follow = clockwise ? Action::LFollow : Action::RFollow;
+  while (k.k8 == 0) {
+    if (static_cast<std::size_t>(k.stage - 1) >= max_actions) throw std::logic_error("count: no vertex count within the action limit");
+    k.step(follow, robot.apply(follow));
+  }
+  return k;
 }
 
 }  // namespace preimage::wallfollow

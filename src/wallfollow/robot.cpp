@@ -67,6 +67,21 @@ Place Place::vertex(const geometry::Environment& env, std::size_t v) {
   return p;
 }
 
+Place Place::of(const geometry::Environment& env, const geometry::Point& p, const std::string& what) {
+  const auto loc = geometry::locate(env, p);
+  Place q;
+  q.point = geometry::to_exact(p);
+  q.index = loc.index;
+  switch (loc.kind) {
+    case geometry::Location::Kind::Interior: return q;
+    case geometry::Location::Kind::AtVertex: return vertex(env, loc.index);
+    case geometry::Location::Kind::OnEdge: q.kind = Kind::Edge; return q;
+    default: break;
+  }
+  throw InputError(std::string(what).append(" ").append(geometry::format_point(p)).append(" is not in the environment (it is ")
+                       .append(geometry::to_string(loc.kind)).append(")"));
+}
+
 bool same_place(const Place& a, const Place& b) {
   if (a.kind != b.kind) return false;
   switch (a.kind) {
@@ -81,22 +96,7 @@ Simulator::Simulator(const geometry::Environment& env, const geometry::Point& st
                      std::optional<Place> pebble)
     : env_(&env), heading_(heading.x(), heading.y()), holding_(!pebble), pebble_(std::move(pebble)), cut_cache_(2 * env.num_vertices()) {
   if (heading.x() == 0 && heading.y() == 0) throw InputError("the robot's heading must be a non-zero direction");
-  const auto loc = geometry::locate(env, start);
-  switch (loc.kind) {
-    case geometry::Location::Kind::Interior:
-      robot_.kind = Place::Kind::Interior;
-      robot_.point = geometry::to_exact(start);
-      break;
-    case geometry::Location::Kind::AtVertex: robot_ = Place::vertex(env, loc.index); break;
-    case geometry::Location::Kind::OnEdge:
-      robot_.kind = Place::Kind::Edge;
-      robot_.index = loc.index;
-      robot_.point = geometry::to_exact(start);
-      break;
-    default:
-      throw InputError(std::string("start ").append(geometry::format_point(start)).append(" is not in the environment (it is ")
-                           .append(geometry::to_string(loc.kind)).append(")"));
-  }
+  robot_ = Place::of(env, start, "start");
 }
 
 Observation Simulator::sense() const {

@@ -45,4 +45,9 @@ static_assert(filter::DerivedIMap<CountingIMaps, Action, Observation>);
 /// +1 RFOLLOW, -1 LFOLLOW, 0 otherwise.
 int direction(Action u);
 
+/// Counting vertices with a pebble (IV.B): INIT, DROP, then follow (counter-clockwise,
+/// or clockwise) until Prop. 2 gives k8. Throws std::logic_error if no count comes
+/// within `max_actions`. The robot must hold the pebble.
+CountingIMaps count_by_following(RobotInterface& robot, bool clockwise, std::size_t max_actions);
+
 }  // namespace preimage::wallfollow

@@ -38,6 +38,9 @@ struct Place {
   geometry::ExactPoint point;
   long mark = -1;
   static Place vertex(const geometry::Environment& env, std::size_t v);
+  /// The place of point p (interior, vertex or edge); InputError "<what> (x, y) is not
+  /// in the environment (it is outside)" otherwise.
+  static Place of(const geometry::Environment& env, const geometry::Point& p, const std::string& what);
 };
 bool same_place(const Place& a, const Place& b);
 
