@@ -65,6 +65,11 @@ class ArrangementBuilder {
   }
   [[noreturn]] void fail(std::size_t i, const std::string& what) const { throw InputError(name(i) + ": " + what); }
   void make_box();
+  std::uint32_t obstacle_of(const End& e) const {
+    if (e.kind == End::AtLandmark) return e.index;
+    const std::size_t ring = A.env_.ring_of(e.index);  // edge e starts at vertex e
+    return ring == 0 ? kOuter : static_cast<std::uint32_t>(ring - 1);
+  }
   End boundary_end(std::size_t i, const Point& p, const char* which);
   End shot_end(std::size_t i, const ExactPoint& origin, const EVector& dir);
   void check_leaves(std::size_t i, const End& e, const ExactPoint& toward);
@@ -235,6 +240,8 @@ void ArrangementBuilder::resolve_beams() {
     BeamGeometry g{0, b.directed, b.shape, from_[i].p, to_[i].p};
     g.unbounded_from = A.unbounded_ && b.shape == Shape::Line;
     g.unbounded_to = A.unbounded_ && b.shape != Shape::Segment;
+    g.from_obstacle = obstacle_of(from_[i]);
+    g.to_obstacle = obstacle_of(to_[i]);
     if (!A.alphabet_.add(b.label, b.directed, &g.label))
       fail(i, "label '" + b.label + "' is shared by directed and undirected beams");
     // A beam must not pass through a landmark other than its own ends.
@@ -667,7 +674,7 @@ void ArrangementBuilder::regions_and_graph() {
 void ArrangementBuilder::run() {
   A.unbounded_ = !S.environment;
   if (A.unbounded_) {
-    for (auto& l : S.landmarks) A.landmarks_.push_back(l.at);
+    for (auto& l : S.landmarks) A.landmarks_.push_back(l.at), A.landmark_labels_.push_back(l.label);
     make_box();
   } else {
     A.env_ = *S.environment;
@@ -677,6 +684,15 @@ void ArrangementBuilder::run() {
   resolve_beams();
   find_crossings();
   build_half_edges();
+  A.vertex_obstacle_.assign(A.vertices_.size(), kNone);  // crossings stay kNone
+  for (std::size_t v = 0; v < A.env_.num_vertices(); ++v) {
+    const std::size_t ring = A.env_.ring_of(v);
+    A.vertex_obstacle_[v] = ring == 0 ? kOuter : static_cast<std::uint32_t>(ring - 1);
+  }
+  for (std::size_t i = 0; i < A.beams_.size(); ++i) {
+    A.vertex_obstacle_[end_vertex_from_[i]] = A.beams_[i].from_obstacle;
+    A.vertex_obstacle_[end_vertex_to_[i]] = A.beams_[i].to_obstacle;
+  }
   link();
   faces();
   regions_and_graph();
@@ -686,6 +702,17 @@ BeamArrangement BeamArrangement::build(const scene::Scene& scene) {
   BeamArrangement A;
   ArrangementBuilder(A, scene).run();
   return A;
+}
+
+std::string BeamArrangement::obstacle_name(std::uint32_t o) const {
+  std::string s = "o" + std::to_string(o + 1) + " (";
+  if (unbounded_) return s.append("landmark '").append(landmark_labels_[o]).append("')");
+  return s.append(env_.ring_name(o + 1)).append(")");
+}
+
+ExactPoint BeamArrangement::obstacle_point(std::uint32_t o) const {
+  if (unbounded_) return geometry::to_exact(landmarks_[o]);
+  return env_.exact_vertex(env_.ring_begin(o + 1));
 }
 
 const Crossing* BeamArrangement::find_edge(std::uint32_t from, Symbol y, std::uint32_t to) const {

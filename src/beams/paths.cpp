@@ -261,23 +261,74 @@ ExactPoint portal(const BeamArrangement& A, std::uint32_t h, const ExactPoint& m
 
 }  // namespace
 
+namespace {
+
+// Appends a crossing of half-edge h's piece, from path.back() (strictly inside the
+// region behind h) to a point strictly inside h's face.
+void append_crossing(const BeamArrangement& A, std::uint32_t h, std::vector<ExactPoint>& path) {
+  const auto& H = A.half_edges();
+  const auto& V = A.vertices();
+  const ExactPoint m = CGAL::midpoint(V[H[h].origin], V[H[h].target]);
+  const ExactPoint out = portal(A, BeamArrangement::twin(h), m), in = portal(A, h, m);
+  const auto part = route_in_region(A, A.region_of(BeamArrangement::twin(h)), path.back(), out);
+  path.insert(path.end(), part.begin() + 1, part.end());
+  // out, m and in lie on the normal through m: one segment crossing the beam at m.
+  path.push_back(in);
+}
+
+void append_route(const BeamArrangement& A, std::uint32_t r, const ExactPoint& to, std::vector<ExactPoint>& path) {
+  const auto part = route_in_region(A, r, path.back(), to);
+  path.insert(path.end(), part.begin() + 1, part.end());
+}
+
+}  // namespace
+
+std::vector<ExactPoint> crossing_path(const BeamArrangement& A, std::uint32_t h) {
+  std::vector<ExactPoint> path{A.regions()[A.region_of(BeamArrangement::twin(h))].sample};
+  append_crossing(A, h, path);
+  append_route(A, A.region_of(h), A.regions()[A.region_of(h)].sample, path);
+  return path;
+}
+
+std::vector<ExactPoint> free_path(const BeamArrangement& A, const ExactPoint& p, const ExactPoint& q) {
+  auto where = [&](const ExactPoint& x, const char* what) {
+    auto r = A.locate(x);
+    if (!r) throw InputError(std::string(what) + " " + geometry::format_point(geometry::to_double(x)) + " is not strictly inside a region");
+    return *r;
+  };
+  const std::uint32_t rp = where(p, "path end"), rq = where(q, "path end");
+  // Breadth-first over G's crossings (any label): fewest beam crossings.
+  std::vector<std::uint32_t> via(A.num_regions(), kNone);
+  std::vector<char> seen(A.num_regions(), 0);
+  std::deque<std::uint32_t> queue{rp};
+  seen[rp] = 1;
+  const auto& E = A.edges();
+  while (!queue.empty() && !seen[rq]) {
+    const std::uint32_t r = queue.front();
+    queue.pop_front();
+    auto it = std::lower_bound(E.begin(), E.end(), r, [](const Crossing& c, std::uint32_t v) { return c.from < v; });
+    for (; it != E.end() && it->from == r; ++it)
+      if (!seen[it->to]) seen[it->to] = 1, via[it->to] = it->half_edge, queue.push_back(it->to);
+  }
+  if (!seen[rq]) throw std::logic_error("free_path: free space is not connected through G");
+  std::vector<std::uint32_t> steps;
+  for (std::uint32_t r = rq; r != rp; r = A.region_of(BeamArrangement::twin(via[r]))) steps.push_back(via[r]);
+  std::reverse(steps.begin(), steps.end());
+  std::vector<ExactPoint> path{p};
+  for (std::uint32_t h : steps) append_crossing(A, h, path);
+  append_route(A, rq, q, path);
+  return path;
+}
+
 std::vector<ExactPoint> sample_path(const BeamArrangement& A, std::span<const std::uint32_t> regions,
                                     std::span<const Symbol> word) {
   if (regions.size() != word.size() + 1) throw std::invalid_argument("sample_path: need one more region than observations");
-  const auto& H = A.half_edges();
-  const auto& V = A.vertices();
   std::vector<ExactPoint> path{A.regions()[regions[0]].sample};
-  auto append = [&](const std::vector<ExactPoint>& part) { path.insert(path.end(), part.begin() + 1, part.end()); };
   for (std::size_t i = 0; i < word.size(); ++i) {
     const Crossing* c = A.find_edge(regions[i], word[i], regions[i + 1]);
     if (!c) throw std::invalid_argument("sample_path: step " + std::to_string(i + 1) + " is not an edge of G");
-    const std::uint32_t h = c->half_edge;  // its face is the region entered
-    const ExactPoint m = CGAL::midpoint(V[H[h].origin], V[H[h].target]);
-    const ExactPoint out = portal(A, BeamArrangement::twin(h), m), in = portal(A, h, m);
-    append(route_in_region(A, regions[i], path.back(), out));
-    // out, m and in lie on the normal through m: one segment crossing the beam at m.
-    path.push_back(in);
-    append(route_in_region(A, regions[i + 1], in, A.regions()[regions[i + 1]].sample));
+    append_crossing(A, c->half_edge, path);  // c's half-edge has the region entered as its face
+    append_route(A, regions[i + 1], A.regions()[regions[i + 1]].sample, path);
   }
   return path;
 }

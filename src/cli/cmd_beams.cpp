@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// preimage beams graph | filter | simulate | landmarks
+// preimage beams graph | filter | simulate | landmarks (homotopy and winding: cmd_beams_homotopy.cpp)
 #include "common.hpp"
 
 #include <preimage/beams/examples.hpp>
@@ -337,6 +337,8 @@ void add_beams_commands(CLI::App& app) {
     scene::save_scene(s, l_out);
     std::cout << "wrote " << l_out << ": " << s.beams.size() << " beams, " << A.num_regions() << " regions\n";
   });
+
+  add_beams_homotopy_commands(beams_cmd);
 }
 
 }  // namespace preimage::cli

@@ -28,6 +28,7 @@ void print_json(const nlohmann::json& j);
 void add_geometry_commands(CLI::App& app);
 void add_decompose_commands(CLI::App& app);
 void add_beams_commands(CLI::App& app);
+void add_beams_homotopy_commands(CLI::App* beams_cmd);  // homotopy, winding
 void add_wallfollow_commands(CLI::App& app);
 void add_demo_command(CLI::App& app);
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <preimage/geometry/queries.hpp>
 
+#include <stdexcept>
+
 namespace preimage::geometry {
 
 const char* to_string(Location::Kind k) {
@@ -138,6 +140,65 @@ bool visible(const Environment& env, const Point& p, const Point& q) {
     if (o4 == 0 && strictly_inside_segment(a, b, q) && o3 < 0) return false;
   }
   return true;
+}
+
+long winding_number(std::span<const ExactPoint> loop, const ExactPoint& c) {
+  // Signed crossings of the ray from c towards +x (half-open in y, so a vertex at c's
+  // height is counted once): upward with c on the left +1, downward with c on the right -1.
+  long w = 0;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const ExactPoint &p = loop[i], &q = loop[(i + 1) % loop.size()];
+    const bool p_up = CGAL::compare_y(p, c) == CGAL::LARGER, q_up = CGAL::compare_y(q, c) == CGAL::LARGER;
+    if (!p_up && q_up && CGAL::orientation(p, q, c) == CGAL::LEFT_TURN) ++w;
+    if (p_up && !q_up && CGAL::orientation(p, q, c) == CGAL::RIGHT_TURN) --w;
+  }
+  return w;
+}
+
+std::vector<PolylineCrossing> polyline_crossings(std::span<const ExactPoint> path, const ExactPoint& a,
+                                                 const ExactPoint& b, bool ray) {
+  std::vector<PolylineCrossing> out;
+  auto through_end = [&]() { throw std::invalid_argument("polyline_crossings: the polyline passes through an end of the segment"); };
+  // Side of ab's line, with points on the line counted as left (perturbed leftwards).
+  auto side = [&](const ExactPoint& x) {
+    const auto o = CGAL::orientation(a, b, x);
+    if (o == CGAL::COLLINEAR && (x == a || (!ray && x == b))) through_end();
+    return o == CGAL::RIGHT_TURN ? -1 : +1;
+  };
+  // x on ab's line, not at a: is it on the open segment (ray)?
+  auto within = [&](const ExactPoint& x) {
+    return ray ? CGAL::angle(b, a, x) == CGAL::ACUTE : CGAL::collinear_are_strictly_ordered_along_line(a, x, b);
+  };
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    const ExactPoint &p = path[i], &q = path[i + 1];
+    const int sp = side(p), sq = side(q);
+    if (sp == sq) continue;
+    // The segment meets ab's line once; a perturbed on-line vertex meets it at itself.
+    auto meet = [&]() -> std::optional<ExactPoint> {
+      for (const ExactPoint* x : {&p, &q})
+        if (CGAL::orientation(a, b, *x) == CGAL::COLLINEAR) {
+          if (within(*x)) return *x;
+          return std::nullopt;
+        }
+      // p and q strictly on opposite sides: the segment meets the line at one point.
+      const auto o3 = CGAL::orientation(p, q, a), o4 = CGAL::orientation(p, q, b);
+      if (o3 == CGAL::COLLINEAR || (!ray && o4 == CGAL::COLLINEAR)) through_end();
+      if (!ray && o3 == o4) return std::nullopt;
+      const auto hit = CGAL::intersection(ExactKernel::Line_2(p, q), ExactKernel::Line_2(a, b));
+      const ExactPoint X = *boost::get<ExactPoint>(&*hit);
+      if (ray && !within(X)) return std::nullopt;
+      return X;
+    };
+    const auto at = meet();
+    if (!at) continue;
+    out.push_back({i, *at, sp < 0 ? +1 : -1});
+  }
+  // Several crossings on one polyline segment: in order from its start.
+  std::stable_sort(out.begin(), out.end(), [&](const PolylineCrossing& u, const PolylineCrossing& v) {
+    if (u.segment != v.segment) return u.segment < v.segment;
+    return CGAL::compare_distance_to_point(path[u.segment], u.at, v.at) == CGAL::SMALLER;
+  });
+  return out;
 }
 
 }  // namespace preimage::geometry

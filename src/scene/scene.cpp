@@ -102,7 +102,7 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   }
   Scene s;
   s.source = source;
-  allow_keys(doc, "$", {"name", "description", "environment", "start", "goal", "robot", "landmarks", "beams"});
+  allow_keys(doc, "$", {"name", "description", "environment", "start", "goal", "robot", "landmarks", "beams", "imaginary_beams"});
   if (doc.contains("name")) s.name = string_at(doc["name"], "$.name");
   if (doc.contains("description")) s.description = string_at(doc["description"], "$.description");
   if (doc.contains("environment")) {
@@ -141,11 +141,15 @@ Scene parse_scene(const std::string& text, const std::string& source) {
       s.landmarks.push_back(std::move(lm));
     }
   }
-  if (doc.contains("beams")) {
-    const json& B = doc["beams"];
-    if (!B.is_array()) fail("$.beams", "expected an array, got " + type_name(B));
+  // "beams" and "imaginary_beams" share one format.
+  for (const char* key : {"beams", "imaginary_beams"}) {
+    if (!doc.contains(key)) continue;
+    const json& B = doc[key];
+    const std::string root = std::string("$.") + key;
+    if (!B.is_array()) fail(root, "expected an array, got " + type_name(B));
+    auto& out = std::string(key) == "beams" ? s.beams : s.imaginary_beams;
     for (std::size_t i = 0; i < B.size(); ++i) {
-      const std::string p = "$.beams[" + std::to_string(i) + "]";
+      const std::string p = root + "[" + std::to_string(i) + "]";
       allow_keys(B[i], p, {"label", "from", "to", "directed", "shape"});
       for (const char* k : {"label", "from", "to"})
         if (!B[i].contains(k)) fail(p, std::string("missing key \"") + k + "\"");
@@ -162,7 +166,7 @@ Scene parse_scene(const std::string& text, const std::string& source) {
         else fail(p + ".shape", "expected \"segment\", \"ray\" or \"line\", got \"" + sh + "\"");
       }
       if (b.from == b.to) fail(p, "beam endpoints coincide");
-      s.beams.push_back(std::move(b));
+      out.push_back(std::move(b));
     }
   }
   return s;
@@ -197,14 +201,15 @@ json to_json(const Scene& s) {
     for (auto& l : s.landmarks) L.push_back({{"label", l.label}, {"at", point_json(l.at)}});
     doc["landmarks"] = L;
   }
-  if (!s.beams.empty()) {
+  for (const auto* list : {&s.beams, &s.imaginary_beams}) {
+    if (list->empty()) continue;
     json B = json::array();
-    for (auto& b : s.beams) {
+    for (auto& b : *list) {
       json j = {{"label", b.label}, {"from", point_json(b.from)}, {"to", point_json(b.to)}, {"directed", b.directed}};
       if (b.shape != Beam::Shape::Segment) j["shape"] = to_string(b.shape);
       B.push_back(std::move(j));
     }
-    doc["beams"] = B;
+    doc[list == &s.beams ? "beams" : "imaginary_beams"] = B;
   }
   return doc;
 }

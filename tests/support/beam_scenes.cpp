@@ -1,5 +1,6 @@
 #include "beam_scenes.hpp"
 
+#include <preimage/beams/homotopy.hpp>
 #include <preimage/error.hpp>
 #include <preimage/geometry/generators.hpp>
 #include <preimage/geometry/queries.hpp>
@@ -38,6 +39,51 @@ scene::Scene random_beam_scene(std::size_t n, std::size_t holes, std::size_t nbe
       return sc;
     } catch (const InputError&) {
       // A degenerate draw (three beams through a point, a beam through a vertex): redraw.
+    }
+  }
+}
+
+scene::Scene random_sufficient_scene(std::size_t n, std::size_t holes, std::size_t lines, std::uint64_t seed, bool ddd,
+                                     std::size_t labels, double undirected_fraction) {
+  for (std::uint64_t s = seed;; s += 7919) {
+    scene::Scene sc;
+    sc.environment = geometry::generators::random_environment(n, holes, s);
+    const auto& env = *sc.environment;
+    const auto box = env.bbox();
+    std::mt19937_64 rng(s);
+    std::uniform_real_distribution<double> ux(box.xmin(), box.xmax()), uy(box.ymin(), box.ymax()), ang(0, 6.283185307179586),
+        coin(0, 1);
+    auto label = [&](std::size_t k) {
+      return std::string("b").append(std::to_string(ddd ? k : std::size_t(coin(rng) * double(labels))));
+    };
+    for (std::size_t h = 1; h < env.num_rings(); ++h) {
+      // A ray from a random vertex into the free wedge there.
+      const std::size_t v = env.ring_begin(h) + std::size_t(coin(rng) * double(env.ring_size(h))) % env.ring_size(h);
+      const geometry::Point p = env.vertex(v);
+      for (int tries = 0; tries < 100; ++tries) {
+        const double a = ang(rng);
+        const geometry::Point q(p.x() + std::cos(a), p.y() + std::sin(a));
+        if (!geometry::in_free_wedge(env, v, q)) continue;
+        const std::string l = label(sc.beams.size());
+        sc.beams.push_back({l, p, q, ddd || coin(rng) >= undirected_fraction, scene::Beam::Shape::Ray});
+        break;
+      }
+    }
+    while (!ddd && sc.beams.size() < holes + lines) {
+      const geometry::Point p(ux(rng), uy(rng));
+      if (geometry::locate(env, p).kind != geometry::Location::Kind::Interior) continue;
+      const double a = ang(rng);
+      const std::string l = label(sc.beams.size());
+      sc.beams.push_back({l, p, geometry::Point(p.x() + std::cos(a), p.y() + std::sin(a)), coin(rng) >= undirected_fraction,
+                          scene::Beam::Shape::Line});
+    }
+    try {
+      const auto A = beams::BeamArrangement::build(sc);
+      if (ddd && A.num_crossings() > 0) continue;
+      beams::require_sufficient(A);
+      return sc;
+    } catch (const InputError&) {
+      // Degenerate, or a ring of obstacles not joined to the boundary: redraw.
     }
   }
 }

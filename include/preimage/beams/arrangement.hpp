@@ -24,6 +24,8 @@ namespace preimage::beams {
 
 using geometry::ExactPoint;
 inline constexpr std::uint32_t kNone = UINT32_MAX;
+/// The outer boundary (or, for a landmark scene, infinity) where an obstacle index goes.
+inline constexpr std::uint32_t kOuter = UINT32_MAX - 1;
 
 /// One validated beam, clipped to a segment from `from` to `to`.
 struct BeamGeometry {
@@ -32,6 +34,9 @@ struct BeamGeometry {
   scene::Beam::Shape shape;
   ExactPoint from, to;
   bool unbounded_from = false, unbounded_to = false;  // clipped by the box, not a real end
+  // What each end is attached to: an obstacle index, or kOuter (the outer boundary,
+  // or infinity for an unbounded end).
+  std::uint32_t from_obstacle = kOuter, to_obstacle = kOuter;
 };
 
 struct HalfEdge {
@@ -69,6 +74,16 @@ class BeamArrangement {
   bool unbounded() const { return unbounded_; }
   const std::vector<geometry::Point>& landmarks() const { return landmarks_; }
 
+  /// The obstacles o_1..o_n of the paper (section 2): the environment's holes, or the
+  /// point landmarks of a scene without an environment. Indices are 0-based.
+  std::size_t num_obstacles() const { return unbounded_ ? landmarks_.size() : env_.num_holes(); }
+  /// "o2 ($.environment.obstacles[1])" or "o2 (landmark 'b')".
+  std::string obstacle_name(std::uint32_t obstacle) const;
+  /// A point of obstacle i's boundary (a landmark itself): what winding numbers wind around.
+  ExactPoint obstacle_point(std::uint32_t obstacle) const;
+  /// The obstacle a vertex lies on, kOuter for the outer boundary, kNone for a crossing of beams.
+  std::uint32_t vertex_obstacle(std::uint32_t vertex) const { return vertex_obstacle_[vertex]; }
+
   const std::vector<ExactPoint>& vertices() const { return vertices_; }
   const std::vector<HalfEdge>& half_edges() const { return half_edges_; }
   static std::uint32_t twin(std::uint32_t h) { return h ^ 1u; }
@@ -103,6 +118,8 @@ class BeamArrangement {
   std::vector<geometry::Point> landmarks_;
   std::vector<ExactPoint> vertices_;
   std::vector<HalfEdge> half_edges_;
+  std::vector<std::uint32_t> vertex_obstacle_;
+  std::vector<std::string> landmark_labels_;
   std::vector<std::uint32_t> beam_he_;  // beam i's pieces: half-edges [beam_he_[i], beam_he_[i+1])
   std::vector<std::uint32_t> out_begin_, out_;  // CSR: outgoing half-edges CCW from east
   std::vector<std::uint32_t> face_region_;

@@ -37,6 +37,16 @@ Simulation simulate(const BeamArrangement& arrangement, std::uint64_t seed, std:
 std::vector<ExactPoint> route_in_region(const BeamArrangement& arrangement, std::uint32_t region, const ExactPoint& from,
                                         const ExactPoint& to);
 
+/// The sample path of one crossing of G (paper 5.3, phase 1, step 3): from the sample
+/// point of the region behind beam piece `half_edge` to the sample point of its face,
+/// crossing that piece once at its midpoint and no other beam.
+std::vector<ExactPoint> crossing_path(const BeamArrangement& arrangement, std::uint32_t half_edge);
+
+/// A path in free space from p to q (both strictly inside regions), through sample
+/// points and fewest beam crossings: the fixed return path that closes an open path
+/// (paper, end of 5.3). Throws InputError if p or q is not strictly inside a region.
+std::vector<ExactPoint> free_path(const BeamArrangement& arrangement, const ExactPoint& p, const ExactPoint& q);
+
 /// A sample path for region sequence `regions` (k+1 regions) explaining `word` (k
 /// observations). Throws std::invalid_argument if some step is not an edge of G.
 std::vector<ExactPoint> sample_path(const BeamArrangement& arrangement, std::span<const std::uint32_t> regions,

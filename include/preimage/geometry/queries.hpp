@@ -6,6 +6,8 @@
 #include <preimage/geometry/environment.hpp>
 
 #include <optional>
+#include <span>
+#include <vector>
 
 namespace preimage::geometry {
 
@@ -42,5 +44,24 @@ bool visible(const Environment& env, const Point& p, const Point& q);
 
 /// Is direction towards t, from boundary vertex v, inside the closed free-space wedge at v?
 bool in_free_wedge(const Environment& env, std::size_t v, const Point& t);
+
+/// Winding number of the closed polyline `loop` (last point joined to the first) about
+/// c, counter-clockwise positive. Exact (crossings of the ray from c to +x, decided by
+/// orientation predicates); c must not lie on the polyline.
+long winding_number(std::span<const ExactPoint> loop, const ExactPoint& c);
+
+/// A crossing of a polyline with a segment ab.
+struct PolylineCrossing {
+  std::size_t segment;  // polyline segment path[segment] -> path[segment + 1]
+  ExactPoint at;
+  int sign;             // +1: from the right of a->b to its left; -1: the other way
+};
+/// Where the polyline crosses the open segment ab (or, if `ray`, the open ray from a
+/// through b), in order along the polyline. A polyline vertex on ab's line counts as
+/// lying just left of it (a symbolic perturbation), so touching ab or running along it
+/// is not a crossing and every crossing is counted consistently. Throws
+/// std::invalid_argument if the polyline passes through a (or b, for a segment).
+std::vector<PolylineCrossing> polyline_crossings(std::span<const ExactPoint> path, const ExactPoint& a,
+                                                 const ExactPoint& b, bool ray = false);
 
 }  // namespace preimage::geometry

@@ -44,6 +44,9 @@ struct Scene {
   std::optional<double> robot_radius;
   std::vector<Landmark> landmarks;
   std::vector<Beam> beams;
+  /// A user-chosen basis for homotopy classes (beams paper 5.3, step 4): disjoint
+  /// directed beams with a spanning tree joining every obstacle to the outer boundary.
+  std::vector<Beam> imaginary_beams;
 
   /// The environment, or InputError("<source>: the scene has no environment").
   const geometry::Environment& require_environment() const;
