@@ -705,7 +705,7 @@ BeamArrangement BeamArrangement::build(const scene::Scene& scene) {
 }
 
 std::string BeamArrangement::obstacle_name(std::uint32_t o) const {
-  std::string s = "o" + std::to_string(o + 1) + " (";
+  std::string s = std::string("o").append(std::to_string(o + 1)).append(" (");
   if (unbounded_) return s.append("landmark '").append(landmark_labels_[o]).append("')");
   return s.append(env_.ring_name(o + 1)).append(")");
 }

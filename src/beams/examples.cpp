@@ -76,6 +76,25 @@ scene::Scene fig11_scene() {
   return s;
 }
 
+scene::Scene fig13_scene() {
+  scene::Scene s = box_scene("Fig. 13-14: a perfect collection of beams",
+                             "Beams paper 5.1 and 6.1: two obstacles, one directed outer beam each, pointing away from its "
+                             "obstacle so that the positive crossing is counter-clockwise about it. The word (5) gives "
+                             "winding vector (2, -3).",
+                             rect(0, 0, 12, 8), {rect(2, 3, 4, 5), rect(8, 3, 10, 5)});
+  s.beams = {{"b1", Point(3, 5), Point(3, 8), true}, {"b2", Point(9, 5), Point(9, 8), true}};
+  return s;
+}
+
+scene::Scene fig18_scene() {
+  scene::Scene s = box_scene("Fig. 18: the commutator path",
+                             "Beams paper 6.1, Fig. 18: two obstacles with perfect beams a and b. The word a b a' b' is the "
+                             "commutator, a non-trivial homotopy class whose winding numbers are (0, 0).",
+                             rect(0, 0, 12, 8), {rect(2, 3, 4, 5), rect(8, 3, 10, 5)});
+  s.beams = {{"a", Point(3, 3), Point(3, 0), true}, {"b", Point(9, 3), Point(9, 0), true}};
+  return s;
+}
+
 scene::Scene landmark_scene(std::size_t n, std::uint64_t seed) {
   // Integer coordinates on a grid, redrawn until no three are collinear and no two
   // share an abscissa (so rays due north meet no other landmark).

@@ -109,4 +109,36 @@ render::SvgCanvas arrangement_figure(const BeamArrangement& A, const FigureOptio
   return c;
 }
 
+render::SvgCanvas basis_figure(const BeamArrangement& A, const LoopBasis& L, const FigureOptions& o, bool loops) {
+  render::SvgCanvas c = arrangement_figure(A, o);
+  const CGAL::Bbox_2 box = A.environment().bbox();
+  const render::Style beam{"none", "#2e7d32", 2.0, 0.9, "4 3"}, loop{"none", "#2e7d32", 1.2, 0.6, ""};
+  if (loops && L.kind() != LoopBasis::Kind::Tree)
+    for (auto& l : L.loops()) {
+      std::vector<geometry::Point> pts;
+      for (auto& p : l) pts.push_back(to_double(p));
+      c.polyline(pts, loop);
+    }
+  for (std::uint32_t g = 0; g < L.rank(); ++g) {
+    const geometry::Point p = to_double(L.from(g));
+    geometry::Point q = to_double(L.to(g));
+    if (L.ray(g)) {
+      // An unbounded ray: to the edge of the drawing.
+      const double dx = q.x() - p.x(), dy = q.y() - p.y();
+      double t = 1e300;
+      if (dx > 0) t = std::min(t, (box.xmax() - p.x()) / dx);
+      if (dx < 0) t = std::min(t, (box.xmin() - p.x()) / dx);
+      if (dy > 0) t = std::min(t, (box.ymax() - p.y()) / dy);
+      if (dy < 0) t = std::min(t, (box.ymin() - p.y()) / dy);
+      q = geometry::Point(p.x() + t * dx, p.y() + t * dy);
+    }
+    c.segment(p, q, beam, "basis beam " + L.names()[g]);
+    const double px = 10 / c.scale();
+    c.label(geometry::Point((p.x() + q.x()) / 2 + px, (p.y() + q.y()) / 2), L.names()[g], 12, "#2e7d32");
+  }
+  c.legend(L.kind() == LoopBasis::Kind::Tree ? "basis: tree beams" : "basis: imaginary beams", beam);
+  if (loops && L.kind() != LoopBasis::Kind::Tree) c.legend("basis loops (Fig. 16)", loop);
+  return c;
+}
+
 }  // namespace preimage::beams

@@ -200,7 +200,7 @@ LoopBasis LoopBasis::imaginary(const BeamArrangement& A, const scene::Scene& sce
   const std::size_t n = A.num_obstacles();
   for (std::uint32_t o = 0; o < n; ++o) {
     scene::Beam b;
-    b.label = "o" + std::to_string(o + 1);
+    b.label = std::string("o").append(std::to_string(o + 1));
     b.directed = true;
     if (A.unbounded()) {
       // North to the nearest landmark straight above, or to infinity.

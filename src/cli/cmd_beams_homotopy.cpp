@@ -25,12 +25,6 @@ struct ClassArgs {
 
 json pt(const geometry::ExactPoint& p) { return points_json({geometry::to_double(p)})[0]; }
 
-std::string vector_string(std::span<const std::int64_t> v) {
-  std::string s = "(";
-  for (std::size_t i = 0; i < v.size(); ++i) s.append(i ? ", " : "").append(std::to_string(v[i]));
-  return s + ")";
-}
-
 json basis_json(const BeamArrangement& A, const LoopBasis& L) {
   json gens = json::array();
   auto side = [&](std::uint32_t o) { return o == beams::kOuter ? json("outer") : json(o + 1); };
@@ -103,7 +97,7 @@ const char* ends_name(const beams::PathEnds& e) {
 
 std::string where_text(std::uint32_t s, std::uint32_t r) {
   std::string t;
-  if (s != beams::kNone) t += "r" + std::to_string(s);
+  if (s != beams::kNone) t.append("r").append(std::to_string(s));
   if (r != beams::kNone) t += " -> r" + std::to_string(r);
   return t.empty() ? t : t + ": ";
 }
@@ -130,12 +124,17 @@ void run_tree(const BeamArrangement& A, const LoopBasis& L, const ClassArgs& a, 
     json j = {{"basis", basis_json(A, L)}, {"ends", ends_name(ends)}, {"consistent", T.consistent()}, {"count", 1},
               {"winding", v}};
     if (!winding_only) j["word"] = w.format(L.names());
+    if (!a.svg.empty()) beams::basis_figure(A, L).save(a.svg);
     return print_json(j);
   }
   print_basis(A, L);
+  if (!a.svg.empty()) {
+    beams::basis_figure(A, L).save(a.svg);
+    std::cout << "wrote " << a.svg << "\n";
+  }
   if (!T.consistent()) std::cout << "note: no path explains the word (inconsistent at observation " << T.inconsistent_at() << ")\n";
   if (!winding_only) std::cout << "homotopy class: " << w.format(L.names()) << "\n";
-  std::cout << "winding numbers: " << vector_string(v) << "\n";
+  std::cout << "winding numbers: " << tuple_string(v) << "\n";
 }
 
 void run_classes(const ClassArgs& a, bool winding_only) {
@@ -176,7 +175,7 @@ void run_classes(const ClassArgs& a, bool winding_only) {
       if (c.start_region != beams::kNone) e["start_region"] = c.start_region;
       if (c.end_region != beams::kNone) e["end_region"] = c.end_region;
       classes.push_back(e);
-      lines.push_back(where_text(c.start_region, c.end_region) + vector_string(v));
+      lines.push_back(where_text(c.start_region, c.end_region) + tuple_string(v));
     }
   } else {
     const beams::HomotopySet H(G, ends, word, a.max_states);
@@ -190,7 +189,7 @@ void run_classes(const ClassArgs& a, bool winding_only) {
       if (c.start_region != beams::kNone) e["start_region"] = c.start_region;
       if (c.end_region != beams::kNone) e["end_region"] = c.end_region;
       classes.push_back(e);
-      lines.push_back(where_text(c.start_region, c.end_region) + w.format(L.names()) + "   winding " + vector_string(v));
+      lines.push_back(where_text(c.start_region, c.end_region) + w.format(L.names()) + "   winding " + tuple_string(v));
     }
   }
   const bool truncated = count > a.limit;
@@ -199,17 +198,25 @@ void run_classes(const ClassArgs& a, bool winding_only) {
               {"count", count}, {"listed", classes.size()}, {"truncated", truncated}, {"peak_states", peak},
               {winding_only ? "windings" : "classes", classes}};
     if (!consistent) j["inconsistent_at"] = inconsistent_at;
+    if (!a.svg.empty()) beams::basis_figure(A, L).save(a.svg);
     return print_json(j);
   }
   print_basis(A, L);
   std::cout << "paths: " << ends_text(ends) << "\n";
   if (!consistent) {
     std::cout << "no path explains the word: inconsistent at observation " << inconsistent_at << "\n";
-    return;
+  } else {
+    std::cout << "region sequences: " << sequences << "; " << (winding_only ? "winding vectors: " : "homotopy classes: ") << count
+              << "\n";
+    for (auto& l : lines) std::cout << "  " << l << "\n";
+    if (truncated) std::cout << "(listed " << a.limit << " of " << count << "; raise --limit)\n";
+    if (count == 0 && ends.mode == beams::PathEnds::Mode::Closed)
+      std::cout << "no region sequence returns to its start region: not a loop (try --open, or --start and --end)\n";
   }
-  std::cout << "region sequences: " << sequences << "; " << (winding_only ? "winding vectors: " : "homotopy classes: ") << count << "\n";
-  for (auto& l : lines) std::cout << "  " << l << "\n";
-  if (truncated) std::cout << "(listed " << a.limit << " of " << count << "; raise --limit)\n";
+  if (!a.svg.empty()) {
+    beams::basis_figure(A, L).save(a.svg);
+    std::cout << "wrote " << a.svg << "\n";
+  }
 }
 
 void add_class_options(CLI::App* c, ClassArgs& a) {
@@ -221,6 +228,7 @@ void add_class_options(CLI::App* c, ClassArgs& a) {
   c->add_option("--limit", a.limit, "list at most this many (default 20)");
   c->add_option("--max-states", a.max_states, "give up beyond this many (start, region, class) states (default 4194304)");
   c->add_flag("--json", a.as_json, "JSON output");
+  c->add_option("--svg", a.svg, "draw the regions, the basis beams and their loops (Fig. 16)");
 }
 
 }  // namespace

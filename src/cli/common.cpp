@@ -53,4 +53,10 @@ nlohmann::json points_json(const std::vector<geometry::Point>& pts) {
 
 void print_json(const nlohmann::json& j) { std::cout << j.dump(2) << "\n"; }
 
+std::string tuple_string(std::span<const std::int64_t> v) {
+  std::string s = "(";
+  for (std::size_t i = 0; i < v.size(); ++i) s.append(i ? ", " : "").append(std::to_string(v[i]));
+  return s + ")";
+}
+
 }  // namespace preimage::cli

@@ -6,6 +6,8 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -21,6 +23,8 @@ void make_dirs(const std::string& dir);
 nlohmann::json edge_json(const geometry::Environment& env, std::size_t e);
 /// [[x, y], ...]: a polyline or polygon as JSON.
 nlohmann::json points_json(const std::vector<geometry::Point>& pts);
+/// "(2, -3)": a winding vector or any integer tuple.
+std::string tuple_string(std::span<const std::int64_t> v);
 /// Prints JSON to stdout, pretty.
 void print_json(const nlohmann::json& j);
 

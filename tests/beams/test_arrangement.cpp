@@ -56,7 +56,9 @@ TEST(BeamArrangement, ExampleFilesMatchBuiltInScenes) {
   const std::string dir = std::string(PREIMAGE_EXAMPLES) + "/beams/";
   const std::pair<const char*, scene::Scene> cases[] = {{"fig01_six_beams.json", beams::fig1_scene()},
                                                          {"fig03b_crossing.json", beams::fig3b_scene()},
-                                                         {"fig11_ring.json", beams::fig11_scene()}};
+                                                         {"fig11_ring.json", beams::fig11_scene()},
+                                                         {"fig13_perfect.json", beams::fig13_scene()},
+                                                         {"fig18_commutator.json", beams::fig18_scene()}};
   for (auto& [file, built] : cases) {
     auto a = scene::to_json(scene::load_scene(dir + file)), b = scene::to_json(built);
     EXPECT_EQ(a, b) << file;

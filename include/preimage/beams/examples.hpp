@@ -23,6 +23,8 @@ scene::Scene with_landmark_beams(scene::Scene landmarks, LandmarkModel model, bo
 scene::Scene fig1_scene();    // six beams, four obstacles, three regions; word cbabdeeefe
 scene::Scene fig3b_scene();   // crossing, directed and indistinguishable beams, 8 regions
 scene::Scene fig11_scene();   // ring of three regions for two bodies
+scene::Scene fig13_scene();   // perfect beams b1, b2 about two obstacles (5.1, 6.1)
+scene::Scene fig18_scene();   // perfect beams a, b: the commutator a b a' b' (Fig. 18)
 /// n landmarks in general position (no three collinear, distinct abscissae).
 scene::Scene landmark_scene(std::size_t n, std::uint64_t seed);
 

@@ -3,6 +3,7 @@
 // into one arrow with a list of labels, as in the paper's Fig. 7(b)), and SVG.
 #pragma once
 #include <preimage/beams/arrangement.hpp>
+#include <preimage/beams/homotopy.hpp>
 #include <preimage/render/svg.hpp>
 
 #include <nlohmann/json.hpp>
@@ -27,5 +28,10 @@ struct FigureOptions {
 /// Regions (pale fills), highlighted regions, beams with labels and direction ticks,
 /// landmarks, and an optional path.
 render::SvgCanvas arrangement_figure(const BeamArrangement& arrangement, const FigureOptions& options = {});
+
+/// The arrangement with a loop basis drawn over it: basis beams dashed in green with
+/// their generator names, and (if `loops`) the basis loop of each generator (Fig. 16).
+render::SvgCanvas basis_figure(const BeamArrangement& arrangement, const LoopBasis& basis, const FigureOptions& options = {},
+                               bool loops = true);
 
 }  // namespace preimage::beams
