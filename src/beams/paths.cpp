@@ -259,10 +259,6 @@ ExactPoint portal(const BeamArrangement& A, std::uint32_t h, const ExactPoint& m
   return m + (*best / 2) * n;
 }
 
-}  // namespace
-
-namespace {
-
 // Appends a crossing of half-edge h's piece, from path.back() (strictly inside the
 // region behind h) to a point strictly inside h's face.
 void append_crossing(const BeamArrangement& A, std::uint32_t h, std::vector<ExactPoint>& path) {

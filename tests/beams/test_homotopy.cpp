@@ -10,6 +10,7 @@
 #include <preimage/geometry/queries.hpp>
 
 #include <support/beam_scenes.hpp>
+#include <support/cgal_oracle.hpp>
 
 #include <gtest/gtest.h>
 
@@ -188,6 +189,32 @@ TEST(LoopBasis, ImaginaryLoopsWindAroundTheirSubtreesOnRandomScenes) {
       std::vector<std::int64_t> e(L.rank(), 0);
       e[g] = 1;
       EXPECT_EQ(v, L.winding(e)) << "seed " << seed << " generator " << g;
+    }
+  }
+}
+
+TEST(LoopBasis, VerticalImaginaryBeamsOnDegenerateEnvironments) {
+  // Equal abscissae, vertical edges, vertices stacked on one vertical line: rays that end
+  // at another obstacle's vertex or run up to a vertex of a vertical edge.
+  std::vector<std::pair<std::string, geometry::Environment>> envs;
+  for (const char* f : {"stacked_vertical_vertices.json", "office_walls.json"})
+    envs.push_back({f, scene::load_scene(fixture(f)).require_environment()});
+  for (std::uint64_t seed = 1; seed <= 8; ++seed)
+    envs.push_back({"snapped seed " + std::to_string(seed), preimage::testing::snapped_random_environment(24 + 2 * seed, 2 + seed % 3, seed, 30.0)});
+  envs.push_back({"stacked on x = 2", geometry::Environment::make({{0, 0}, {6, 0}, {6, 6}, {0, 6}},
+                                                                  {{{1, 1}, {2, 1}, {2, 2}}, {{2, 3}, {3, 3.5}, {2, 4}}, {{1.5, 5}, {2, 4.5}, {2.5, 5}}})});
+  for (auto& [name, env] : envs) {
+    scene::Scene s;
+    s.environment = env;
+    const auto A = BeamArrangement::build(s);
+    const auto L = LoopBasis::imaginary(A, s);
+    ASSERT_EQ(L.rank(), env.num_holes()) << name;
+    const auto loops = L.loops();
+    for (std::uint32_t g = 0; g < L.rank(); ++g) {
+      EXPECT_EQ(L.crossing_word(loops[g]), FreeWord::reduce(std::vector<Letter>{beams::generator(g)})) << name;
+      std::vector<std::int64_t> e(L.rank(), 0);
+      e[g] = 1;
+      EXPECT_EQ(geometric_winding(A, loops[g]), L.winding(e)) << name << ", generator " << g;
     }
   }
 }
