@@ -121,9 +121,11 @@ void run_tree(const BeamArrangement& A, const LoopBasis& L, const ClassArgs& a, 
   const filter::Trellis T(A.graph(), R0, word);
   const auto v = L.winding(w);
   if (a.as_json) {
+    // The schema of the general case, with its one class.
+    json c = {{"winding", v}};
+    if (!winding_only) c["word"] = w.format(L.names()), c["length"] = w.length();
     json j = {{"basis", basis_json(A, L)}, {"ends", ends_name(ends)}, {"consistent", T.consistent()}, {"count", 1},
-              {"winding", v}};
-    if (!winding_only) j["word"] = w.format(L.names());
+              {"listed", 1}, {"truncated", false}, {winding_only ? "windings" : "classes", json::array({c})}};
     if (!a.svg.empty()) beams::basis_figure(A, L).save(a.svg);
     return print_json(j);
   }
