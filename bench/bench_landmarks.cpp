@@ -18,19 +18,7 @@ using geometry::Point;
 
 namespace {
 
-std::vector<Point> points(std::size_t n, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_int_distribution<int> u(0, 1 << 24);
-  for (;;) {
-    std::vector<Point> P(n);
-    for (auto& p : P) p = Point(u(rng), u(rng));
-    try {
-      landmarks::require_general_position(P);
-      return P;
-    } catch (const std::exception&) {
-    }
-  }
-}
+std::vector<Point> points(std::size_t n, std::uint64_t seed) { return landmarks::random_landmarks(n, seed, 1 << 24); }
 
 void order_type(benchmark::State& state) {
   const auto P = points(static_cast<std::size_t>(state.range(0)), 1);

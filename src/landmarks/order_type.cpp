@@ -290,24 +290,28 @@ CanonicalForm canonical_form(const OrderType& T, bool mirror) {
   return best;
 }
 
-OrderTypeCount count_order_types(std::size_t n, std::size_t samples, std::uint64_t seed, bool mirror) {
-  if (n < 3) throw InputError("count-order-types: need N >= 3");
+std::vector<Point> random_landmarks(std::size_t n, std::uint64_t seed, int range, std::size_t* redrawn) {
   std::mt19937_64 rng(seed);
-  // A grid large enough that random sets are rarely degenerate, small enough to be exact.
-  std::uniform_int_distribution<int> u(0, 1 << 20);
-  std::set<std::vector<std::uint16_t>> seen;
-  OrderTypeCount c;
+  std::uniform_int_distribution<int> u(-range, range);
   std::vector<Point> P(n);
-  while (c.samples < samples) {
+  for (;;) {
     for (auto& p : P) p = Point(u(rng), u(rng));
     try {
-      const OrderType T = OrderType::of(P);
-      seen.insert(canonical_form(T, mirror).lambda);
-      ++c.samples;
+      require_general_position(P);
+      return P;
     } catch (const InputError&) {
-      ++c.redrawn;  // collinear or coincident draw
+      if (redrawn) ++*redrawn;  // collinear or coincident draw
     }
   }
+}
+
+OrderTypeCount count_order_types(std::size_t n, std::size_t samples, std::uint64_t seed, bool mirror) {
+  if (n < 3) throw InputError("count-order-types: need N >= 3");
+  std::set<std::vector<std::uint16_t>> seen;
+  OrderTypeCount c;
+  std::mt19937_64 seeds(seed);
+  for (; c.samples < samples; ++c.samples)
+    seen.insert(canonical_form(OrderType::of(random_landmarks(n, seeds(), 1 << 20, &c.redrawn)), mirror).lambda);
   c.distinct = seen.size();
   return c;
 }

@@ -17,17 +17,7 @@ using landmarks::OrderType;
 namespace {
 
 std::vector<Point> random_points(std::size_t n, std::uint64_t seed, int range = 1000) {
-  std::mt19937_64 rng(seed);
-  std::uniform_int_distribution<int> u(-range, range);
-  for (;;) {
-    std::vector<Point> P(n);
-    for (auto& p : P) p = Point(u(rng), u(rng));
-    try {
-      landmarks::require_general_position(P);
-      return P;
-    } catch (const InputError&) {
-    }
-  }
+  return landmarks::random_landmarks(n, seed, range);
 }
 
 landmarks::Chirotope chi_of(const OrderType& T) {

@@ -88,6 +88,10 @@ struct CanonicalForm {
 };
 CanonicalForm canonical_form(const OrderType& order_type, bool mirror = false);
 
+/// n random landmarks with integer coordinates in [-range, range], redrawn until in
+/// general position (seeded, reproducible); `redrawn` counts the degenerate draws.
+std::vector<geometry::Point> random_landmarks(std::size_t n, std::uint64_t seed, int range = 1 << 20, std::size_t* redrawn = nullptr);
+
 /// Distinct order types among `samples` random sets of n landmarks in general position
 /// (integer coordinates, seeded); the tool for checking canonical forms.
 struct OrderTypeCount {
