@@ -54,8 +54,7 @@ void require_sufficient(const BeamArrangement& A) {
         // Not a vertex, so locate() finds the region around it.
         const auto r = A.locate(A.obstacle_point(o));
         if (!r) throw std::logic_error("require_sufficient: a free landmark outside every region");
-        const std::uint32_t reg = *r;
-        fail(reg, o);
+        fail(*r, o);
       }
   }
 }
