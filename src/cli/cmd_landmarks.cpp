@@ -4,7 +4,9 @@
 
 #include <preimage/error.hpp>
 #include <preimage/landmarks/order_type.hpp>
+#include <preimage/landmarks/robot.hpp>
 
+#include <algorithm>
 #include <iostream>
 
 namespace preimage::cli {
@@ -12,10 +14,49 @@ namespace {
 
 using nlohmann::json;
 
-void run_order_type(const std::string& file, bool as_json) {
-  const landmarks::LandmarkSet L = landmarks::landmark_set(scene::load_scene(file));
+// The robot starts at --start, else at the scene's start, else at the first landmark.
+landmarks::Simulator make_robot(const scene::Scene& s, const landmarks::LandmarkSet& L, const std::string& start) {
+  if (!start.empty()) return landmarks::Simulator(L.points, parse_point(start, "--start"));
+  if (s.start) return landmarks::Simulator(L.points, *s.start);
+  return landmarks::Simulator(L.points, std::uint32_t{0});
+}
+
+void run_hull(const std::string& file, bool learn, const std::string& start) {
+  const scene::Scene s = scene::load_scene(file);
+  const landmarks::LandmarkSet L = landmarks::landmark_set(s);
+  const auto truth = landmarks::OrderType::of(L.points).hull();
+  std::vector<std::uint32_t> hull = truth;
+  std::size_t primitives = 0;
+  if (learn) {
+    landmarks::Simulator robot = make_robot(s, L, start);
+    hull = landmarks::learn_hull(robot);  // Strategies 4 and 5: readings and track only
+    primitives = robot.primitives();
+  }
+  std::cout << "convex hull, counter-clockwise:";
+  for (auto v : hull) std::cout << " " << L.labels[v];
+  std::cout << "\n";
+  if (learn) {
+    auto t = truth;
+    std::rotate(t.begin(), std::find(t.begin(), t.end(), hull.front()), t.end());
+    std::cout << "learned by the robot with " << primitives << " track primitives (Strategies 4-5, n = " << L.size()
+              << "); agrees with the coordinates: " << (t == hull ? "yes" : "NO") << "\n";
+  }
+}
+
+void run_order_type(const std::string& file, bool as_json, bool learn, const std::string& start) {
+  const scene::Scene sc = scene::load_scene(file);
+  const landmarks::LandmarkSet L = landmarks::landmark_set(sc);
   const landmarks::OrderType T = landmarks::OrderType::of(L.points);
   const std::size_t n = L.size();
+  if (learn) {
+    landmarks::Simulator robot = make_robot(sc, L, start);
+    const auto lambda = landmarks::learn_order_type(robot);  // Strategy 1 for every pair
+    bool agree = true;
+    for (std::uint32_t i = 0; i < n; ++i)
+      for (std::uint32_t j = 0; j < n; ++j) agree = agree && (i == j || lambda[i * n + j] == T.lambda(i, j));
+    std::cout << "order type learned by the robot with " << robot.primitives() << " track primitives (Strategy 1 for all "
+              << n * (n - 1) / 2 << " pairs); agrees with the coordinates: " << (agree ? "yes" : "NO") << "\n";
+  }
   const auto hull = T.hull();
   const auto C = landmarks::canonical_form(T);
   if (as_json) {
@@ -56,11 +97,21 @@ void add_landmarks_commands(CLI::App& app) {
   cmd->require_subcommand(1);
 
   auto* o = cmd->add_subcommand("order-type", "the order type of the scene's landmarks: lambda, Lambda, hull, canonical labelling");
-  static std::string o_file;
-  static bool o_json = false;
+  static std::string o_file, o_start;
+  static bool o_json = false, o_learn = false;
   o->add_option("scene", o_file, "scene with landmarks (JSON)")->required();
   o->add_flag("--json", o_json, "JSON output (with every Lambda(i, j))");
-  o->callback([] { run_order_type(o_file, o_json); });
+  o->add_flag("--learn", o_learn, "also learn it with the simulated robot (Strategy 1) and print the primitive count");
+  o->add_option("--start", o_start, "the robot's start X,Y (default: the scene's start, else the first landmark)");
+  o->callback([] { run_order_type(o_file, o_json, o_learn, o_start); });
+
+  auto* h = cmd->add_subcommand("hull", "the convex hull boundary of the landmarks, counter-clockwise");
+  static std::string h_file, h_start;
+  static bool h_learn = false;
+  h->add_option("scene", h_file, "scene with landmarks (JSON)")->required();
+  h->add_flag("--learn", h_learn, "learn it with the simulated robot (Strategies 4-5) and print the primitive count");
+  h->add_option("--start", h_start, "the robot's start X,Y (default: the scene's start, else the first landmark)");
+  h->callback([] { run_hull(h_file, h_learn, h_start); });
 
   auto* c = cmd->add_subcommand("count-order-types", "distinct order types among random sets of N landmarks");
   static std::size_t c_n = 0, c_samples = 1000;
