@@ -148,11 +148,14 @@ void run_classes(const ClassArgs& a, bool winding_only) {
   if (basis.empty()) {
     // Winding numbers need only directed, distinguishable beams reaching every obstacle (6.3).
     basis = "imaginary";
-    if (winding_only && s.imaginary_beams.empty()) try {
-        LoopBasis::tree(A, s, true);
+    if (winding_only && s.imaginary_beams.empty()) {
+      try {
+        (void)LoopBasis::tree(A, s, true);
         basis = "tree";
       } catch (const InputError&) {
+        // Some obstacle is not reached by such beams: the general method.
       }
+    }
   }
   if (basis == "tree") return run_tree(A, make_basis(A, s, basis, winding_only), a, ends, word, winding_only);
 
