@@ -34,15 +34,6 @@ using EVector = geometry::ExactKernel::Vector_2;
 
 int orient(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c) { return geometry::orientation(a, b, c); }
 
-// Counter-clockwise order of the directions c->a, c->b, starting at east.
-bool ccw_less(const ExactPoint& c, const ExactPoint& a, const ExactPoint& b) {
-  // Predicates only: p.x(), p.y() of a lazy point would build new DAG nodes.
-  auto half = [&](const ExactPoint& p) { return CGAL::compare_yx(p, c) == CGAL::LARGER ? 0 : 1; };
-  const int ha = half(a), hb = half(b);
-  if (ha != hb) return ha < hb;
-  return orient(c, a, b) > 0;
-}
-
 std::string where(const ExactPoint& p) { return geometry::format_point(geometry::to_double(p)); }
 
 // Where a beam end is attached.
@@ -397,7 +388,7 @@ void ArrangementBuilder::link() {
   for (std::size_t v = 0; v < nv; ++v) {
     auto b = A.out_.begin() + A.out_begin_[v], e = A.out_.begin() + A.out_begin_[v + 1];
     const ExactPoint& c = A.vertices_[v];
-    std::sort(b, e, [&](std::uint32_t x, std::uint32_t y) { return ccw_less(c, A.vertices_[H[x].target], A.vertices_[H[y].target]); });
+    std::sort(b, e, [&](std::uint32_t x, std::uint32_t y) { return geometry::ccw_less(c, A.vertices_[H[x].target], A.vertices_[H[y].target]); });
     const std::size_t d = e - b;
     // Face on the left: arriving along twin(h_i), leave along the clockwise neighbour h_{i-1}.
     for (std::size_t i = 0; i < d; ++i) H[BeamArrangement::twin(b[i])].next = b[(i + d - 1) % d];
@@ -734,7 +725,7 @@ std::optional<std::uint32_t> BeamArrangement::locate(const ExactPoint& p) const 
     const std::uint32_t b = out_begin_[w], e = out_begin_[w + 1];
     std::uint32_t pick = out_[e - 1];
     for (std::uint32_t k = b; k < e; ++k)
-      if (ccw_less(V[w], V[H[out_[k]].target], south)) pick = out_[k];
+      if (geometry::ccw_less(V[w], V[H[out_[k]].target], south)) pick = out_[k];
     return pick;
   };
   auto offer = [&](const ExactFT& y, std::uint32_t he) {

@@ -20,8 +20,6 @@ namespace {
 using nlohmann::json;
 using beams::BeamArrangement;
 
-json pt(const geometry::ExactPoint& p) { return json::array({CGAL::to_double(p.x()), CGAL::to_double(p.y())}); }
-
 std::string region_list(const std::vector<std::uint32_t>& rs) {
   std::string s;
   for (auto r : rs) s += (s.empty() ? "r" : " r") + std::to_string(r);
@@ -260,7 +258,7 @@ void run_simulate(const std::string& file, std::uint64_t seed, std::size_t steps
   }
   if (as_json) {
     json p = json::array();
-    for (auto& q : sim.path) p.push_back(pt(q));
+    for (auto& q : sim.path) p.push_back(point_json(q));
     return print_json({{"seed", seed}, {"path", p}, {"word", A.alphabet().format(w)}, {"regions", sim.trace.regions},
                        {"filter", {{"regions", R}, {"contains_true_region", in}, {"sequences", T.count().str()},
                                    {"contains_true_sequence", seq_in}}}});

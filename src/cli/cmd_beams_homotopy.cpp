@@ -23,15 +23,13 @@ struct ClassArgs {
   bool open = false, as_json = false;
 };
 
-json pt(const geometry::ExactPoint& p) { return points_json({geometry::to_double(p)})[0]; }
-
 json basis_json(const BeamArrangement& A, const LoopBasis& L) {
   json gens = json::array();
   auto side = [&](std::uint32_t o) { return o == beams::kOuter ? json("outer") : json(o + 1); };
   for (std::uint32_t g = 0; g < L.rank(); ++g) {
     json e = json::array();
     for (auto o : L.encloses(g)) e.push_back(o + 1);
-    gens.push_back({{"name", L.names()[g]}, {"from", pt(L.from(g))}, {"to", pt(L.to(g))}, {"ray", L.ray(g)},
+    gens.push_back({{"name", L.names()[g]}, {"from", point_json(L.from(g))}, {"to", point_json(L.to(g))}, {"ray", L.ray(g)},
                     {"child", side(L.child(g))}, {"parent", side(L.parent(g))}, {"sign", L.sign(g)}, {"encloses", e}});
   }
   json obstacles = json::array();

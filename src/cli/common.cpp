@@ -59,4 +59,9 @@ std::string tuple_string(std::span<const std::int64_t> v) {
   return s + ")";
 }
 
+nlohmann::json point_json(const geometry::ExactPoint& p) {
+  const geometry::Point q = geometry::to_double(p);
+  return nlohmann::json::array({q.x(), q.y()});
+}
+
 }  // namespace preimage::cli

@@ -21,6 +21,8 @@ std::string exact_string(const geometry::ExactFT& v);
 void make_dirs(const std::string& dir);
 /// {"ring": "<ring name>", "index": k}: environment edge e in the caller's terms.
 nlohmann::json edge_json(const geometry::Environment& env, std::size_t e);
+/// [x, y] of an exact point, rounded to doubles.
+nlohmann::json point_json(const geometry::ExactPoint& p);
 /// [[x, y], ...]: a polyline or polygon as JSON.
 nlohmann::json points_json(const std::vector<geometry::Point>& pts);
 /// "(2, -3)": a winding vector or any integer tuple.

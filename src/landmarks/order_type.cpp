@@ -37,7 +37,7 @@ void require_general_position(std::span<const Point> P, const std::vector<std::s
     // Fold each direction p_i -> p_k onto the half-turn [0, pi) (negate it if it points
     // below); the folded order is exact: orient(folded a, folded b) is
     // orient(p_i, p_a, p_b) times the two fold signs.
-    auto fold = [&](std::uint32_t k) { return CGAL::compare_yx(P[k], P[i]) == CGAL::LARGER ? 1 : -1; };
+    auto fold = [&](std::uint32_t k) { return geometry::half_turn(P[i], P[k]) == 0 ? 1 : -1; };
     std::sort(others.begin(), others.end(), [&](std::uint32_t a, std::uint32_t b) {
       return fold(a) * fold(b) * geometry::orientation(P[i], P[a], P[b]) > 0;
     });
@@ -90,7 +90,7 @@ OrderType OrderType::of(std::span<const Point> P) {
           error = "landmarks " + std::to_string(std::min<std::size_t>(i, k)) + " and " + std::to_string(std::max<std::size_t>(i, k)) + " coincide";
           return;
         }
-        half[k] = CGAL::compare_yx(P[k], P[i]) == CGAL::LARGER ? 0 : 1;
+        half[k] = static_cast<char>(geometry::half_turn(P[i], P[k]));
         o[w++] = k;
       }
       std::sort(o, o + m, [&](std::uint32_t a, std::uint32_t b) {

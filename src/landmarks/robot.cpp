@@ -59,13 +59,7 @@ Reading Simulator::reading(const ExactPoint& c, std::optional<std::uint32_t> at,
   Reading r;
   for (std::uint32_t k = 0; k < n; ++k)
     if (!(at && k == *at) || special) r.push_back(k);
-  auto half = [&](const ExactPoint& q) { return CGAL::compare_yx(q, c) == CGAL::LARGER ? 0 : 1; };
-  std::sort(r.begin(), r.end(), [&](std::uint32_t a, std::uint32_t b) {
-    const ExactPoint &pa = dir(a), &pb = dir(b);
-    const int ha = half(pa), hb = half(pb);
-    if (ha != hb) return ha < hb;
-    return geometry::orientation(c, pa, pb) > 0;
-  });
+  std::sort(r.begin(), r.end(), [&](std::uint32_t a, std::uint32_t b) { return geometry::ccw_less(c, dir(a), dir(b)); });
   return r;
 }
 

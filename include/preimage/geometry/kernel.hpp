@@ -31,6 +31,20 @@ inline int orientation(const ExactPoint& a, const ExactPoint& b, const ExactPoin
   return static_cast<int>(CGAL::orientation(a, b, c));
 }
 
+/// Which half-turn around c the direction c -> q lies in: 0 for angles [0, pi) from
+/// east, 1 for [pi, 2 pi). Predicates only (p.x() of a lazy point builds a DAG node).
+template <class P>
+int half_turn(const P& c, const P& q) {
+  return CGAL::compare_yx(q, c) == CGAL::LARGER ? 0 : 1;
+}
+/// Counter-clockwise order of the directions c -> a, c -> b, starting at east (exact).
+template <class P>
+bool ccw_less(const P& c, const P& a, const P& b) {
+  const int ha = half_turn(c, a), hb = half_turn(c, b);
+  if (ha != hb) return ha < hb;
+  return CGAL::orientation(c, a, b) == CGAL::LEFT_TURN;
+}
+
 /// Lexicographic order (x, then y): the sweep order used by segment sweeps.
 inline bool lex_less_xy(const Point& a, const Point& b) {
   return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
