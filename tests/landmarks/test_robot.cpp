@@ -2,8 +2,10 @@
 // only RobotInterface (readings and track), the checks read the OrderType.
 #include <preimage/error.hpp>
 #include <preimage/landmarks/robot.hpp>
+#include <preimage/scene/scene.hpp>
 
 #include <gtest/gtest.h>
+#include <support/landmark_robot.hpp>
 
 #include <algorithm>
 #include <random>
@@ -12,22 +14,7 @@ using namespace preimage;
 using geometry::Point;
 using landmarks::OrderType;
 
-namespace {
-
-// A start point on no line through two landmarks.
-Point generic_start(const std::vector<Point>& P, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(-1500, 1500);
-  for (;;) {
-    const Point s(u(rng), u(rng));
-    bool ok = true;
-    for (std::size_t i = 0; i < P.size() && ok; ++i)
-      for (std::size_t j = i + 1; j < P.size() && ok; ++j) ok = geometry::orientation(P[i], P[j], s) != 0;
-    if (ok) return s;
-  }
-}
-
-}  // namespace
+using preimage::testing::generic_start;
 
 TEST(LandmarkRobot, Strategy1LearnsTheWholeOrderType) {
   for (std::uint64_t seed = 1; seed <= 8; ++seed) {
@@ -73,4 +60,14 @@ TEST(LandmarkRobot, StartOnALineThroughTwoLandmarksIsRejected) {
   EXPECT_THROW(landmarks::Simulator(P, Point(5, 0)), InputError);
   EXPECT_THROW(landmarks::Simulator(P, Point(20, 0)), InputError);
   EXPECT_NO_THROW(landmarks::Simulator(P, Point(4, 2)));
+}
+
+TEST(LandmarkRobot, StartAtALaterLandmarkIsAccepted) {
+  const auto s = scene::load_scene(std::string(PREIMAGE_FIXTURES) + "/scenes/landmarks_start_at_third.json");
+  const auto L = landmarks::landmark_set(s);
+  ASSERT_TRUE(s.start.has_value());
+  landmarks::Simulator robot(L.points, *s.start);
+  EXPECT_EQ(robot.at(), std::optional<std::uint32_t>(2));
+  EXPECT_EQ(robot.lcd().size(), 3u);  // at a landmark: the other three
+  for (std::uint32_t k = 0; k < 4; ++k) EXPECT_NO_THROW(landmarks::Simulator(L.points, k));
 }

@@ -82,4 +82,23 @@ std::vector<Query> random_queries(const Environment& env, std::size_t interior, 
   return out;
 }
 
+std::size_t cgal_swap_cell_count(const std::vector<Point>& landmarks, double box) {
+  std::vector<ExactKernel::Segment_2> segs;
+  for (const auto& a : landmarks)
+    for (const auto& b : landmarks) {
+      if (a == b) continue;
+      const ExactPoint pa = geometry::to_exact(a), pb = geometry::to_exact(b);
+      const auto d = pa - pb;
+      const double len = std::sqrt(CGAL::to_double(d.squared_length()));
+      segs.emplace_back(pa, pa + d * (4 * box / len));
+    }
+  const ExactPoint c[4] = {ExactPoint(-box, -box), ExactPoint(box, -box), ExactPoint(box, box), ExactPoint(-box, box)};
+  for (int s = 0; s < 4; ++s) segs.emplace_back(c[s], c[(s + 1) % 4]);
+  Arrangement arr;
+  CGAL::insert(arr, segs.begin(), segs.end());
+  std::size_t bounded = 0;
+  for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) bounded += !f->is_unbounded();
+  return bounded;
+}
+
 }  // namespace preimage::testing

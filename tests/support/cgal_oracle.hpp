@@ -21,6 +21,11 @@ using geometry::Point;
 
 using Arrangement = CGAL::Arrangement_2<CGAL::Arr_segment_traits_2<ExactKernel>>;
 
+/// Swap cells of landmarks by CGAL's Arrangement_2 (an independent oracle): the n(n-1)
+/// swap rays as segments reaching past a square box of half-width `box`, which must
+/// contain every crossing, plus the box; the count of bounded faces.
+std::size_t cgal_swap_cell_count(const std::vector<Point>& landmarks, double box);
+
 /// The environment's edges as a CGAL arrangement (exact constructions), in one sweep.
 Arrangement make_arrangement(const Environment& env);
 

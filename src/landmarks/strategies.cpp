@@ -1,0 +1,401 @@
+// SPDX-License-Identifier: Apache-2.0
+#include <preimage/error.hpp>
+#include <preimage/landmarks/strategies.hpp>
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+#include <set>
+#include <tuple>
+#include <stdexcept>
+
+namespace preimage::landmarks {
+namespace {
+
+std::size_t index_of(const Reading& r, std::uint32_t x) {
+  const auto it = std::find(r.begin(), r.end(), x);
+  if (it == r.end()) throw std::logic_error("landmark strategy: label missing from a reading");
+  return static_cast<std::size_t>(it - r.begin());
+}
+
+Reading rotated_to(Reading r, std::uint32_t first) {
+  std::rotate(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(index_of(r, first)), r.end());
+  return r;
+}
+
+std::string name(std::uint32_t k, const std::vector<std::string>& labels) {
+  return k < labels.size() ? labels[k] : std::to_string(k);
+}
+
+std::vector<bool> hull_flags(std::size_t n, std::span<const std::uint32_t> hull) {
+  std::vector<bool> on(n, false);
+  for (auto h : hull) on[h] = true;
+  return on;
+}
+
+// The hull edge (a, b) through which the swap line starting at interior p_i and pointing
+// away from p_j leaves the hull: a and b on either side of line ij (Lemma 11), and the
+// crossing beyond p_i, i.e. p_i inside triangle a b j.
+std::pair<std::uint32_t, std::uint32_t> exit_edge(const Chirotope& chi, std::span<const std::uint32_t> hull, std::uint32_t i,
+                                                  std::uint32_t j) {
+  const std::size_t m = hull.size();
+  for (std::size_t q = 0; q < m; ++q) {
+    const std::uint32_t a = hull[q], b = hull[(q + 1) % m];
+    if (a == j || b == j) continue;
+    if (chi(i, j, a) != chi(i, j, b) && chi(b, j, i) > 0 && chi(j, a, i) > 0) return {a, b};
+  }
+  throw std::logic_error("landmark strategy: a swap line of an interior landmark leaves the hull nowhere");
+}
+
+// From anywhere inside the hull (or at a landmark): onto the swap line starting at
+// interior p_i away from p_j, where it crosses the hull boundary. Two tracks.
+void enter_swap_line(RobotInterface& robot, const Chirotope& chi, std::span<const std::uint32_t> hull, std::uint32_t i,
+                     std::uint32_t j) {
+  const auto [a, b] = exit_edge(chi, hull, i, j);
+  robot.track(a);
+  if (!robot.track(b, StopRule::aligned(i, j)).halted) throw std::logic_error("landmark strategy: missed a swap line on the hull");
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> LearnedOrderType::Lambda(std::uint32_t i, std::uint32_t j) const {
+  std::vector<std::uint32_t> out;
+  for (std::uint32_t k = 0; k < n_; ++k)
+    if (chi(i, j, k) > 0) out.push_back(k);
+  return out;
+}
+
+void LearnedOrderType::set(std::uint32_t i, std::uint32_t j, std::span<const std::uint32_t> left) {
+  for (std::uint32_t k = 0; k < n_; ++k) {
+    if (k == i || k == j) continue;
+    const bool l = std::find(left.begin(), left.end(), k) != left.end();
+    left_[(std::size_t(i) * n_ + j) * n_ + k] = l;
+    left_[(std::size_t(j) * n_ + i) * n_ + k] = !l;
+  }
+  known_[std::size_t(i) * n_ + j] = known_[std::size_t(j) * n_ + i] = 1;
+}
+
+bool LearnedOrderType::complete() const {
+  for (std::size_t i = 0; i < n_; ++i)
+    for (std::size_t j = 0; j < n_; ++j)
+      if (i != j && !known_[i * n_ + j]) return false;
+  return true;
+}
+
+HullTour learn_by_hull_tour(RobotInterface& robot) {
+  const std::size_t n = robot.num_landmarks();
+  HullTour tour{learn_hull(robot), LearnedOrderType(n), {}};
+  const auto& hull = tour.hull;
+  // learn_hull ends at hull.back(): each track below runs along one hull edge.
+  for (const std::uint32_t target : hull) {
+    const MotionTrace tr = robot.track(target, StopRule::arrive());
+    std::vector<Reading> linear;
+    for (const auto& r : tr.readings) {
+      linear.push_back(rotated_to(r, target));  // the tracked landmark first, the one left last
+      tour.permutations.push_back(linear.back());
+    }
+    for (std::size_t t = 0; t < tr.events.size(); ++t)
+      for (auto [a, b] : tr.events[t].swaps) {
+        // Before the swap a comes right before b: the robot is left of p_a -> p_b, on the
+        // side of the landmark it left, i.e. of the landmarks after the pair.
+        const Reading& r = linear[t];
+        if (!follows(r, a, b)) std::swap(a, b);
+        const std::size_t p = index_of(r, a);
+        tour.order_type.set(a, b, std::span<const std::uint32_t>(r).subspan(p + 2));
+      }
+    // Arriving at a hull landmark: the rest lie counter-clockwise from the direction of
+    // travel within a half-turn, so Lambda(target, x) is what follows x.
+    const Reading& last = linear.back();
+    for (std::size_t q = 1; q < last.size(); ++q) tour.order_type.set(target, last[q], std::span<const std::uint32_t>(last).subspan(q + 1));
+  }
+  if (!tour.order_type.complete()) throw std::logic_error("hull tour: some pair of landmarks was never seen to swap");
+  return tour;
+}
+
+PatrolPlan patrol_route(std::size_t n, const Chirotope& chi, std::span<const std::uint32_t> hull,
+                        std::span<const std::uint32_t> W, const std::vector<std::string>& labels) {
+  if (W.empty()) throw InputError("patrol: no landmark to watch");
+  std::vector<bool> in_w(n, false);
+  const auto on_hull = hull_flags(n, hull);
+  for (auto w : W) {
+    if (w >= n) throw InputError("patrol: no landmark " + std::to_string(w));
+    if (in_w[w]) throw InputError("patrol: landmark '" + name(w, labels) + "' is listed twice");
+    if (on_hull[w])
+      throw InputError("patrol: landmark '" + name(w, labels) +
+                       "' is on the convex hull of all landmarks, so no route of landmarks can keep it inside");
+    in_w[w] = true;
+  }
+  // Edges a -> b with every watched landmark strictly left; a shortest cycle (BFS from
+  // every start) is a smallest route. Such a cycle turns by a positive angle at every
+  // edge as seen from each w, so it winds around W at least once.
+  std::vector<std::vector<std::uint32_t>> next(n);
+  for (std::uint32_t a = 0; a < n; ++a)
+    for (std::uint32_t b = 0; b < n; ++b) {
+      if (a == b || in_w[a] || in_w[b]) continue;
+      if (std::all_of(W.begin(), W.end(), [&](std::uint32_t w) { return chi(a, b, w) > 0; })) next[a].push_back(b);
+    }
+  std::vector<std::uint32_t> best;
+  std::vector<std::uint32_t> dist(n), parent(n);
+  for (std::uint32_t s = 0; s < n; ++s) {
+    if (in_w[s]) continue;
+    std::fill(dist.begin(), dist.end(), UINT32_MAX);
+    dist[s] = 0;
+    std::vector<std::uint32_t> queue{s};
+    for (std::size_t q = 0; q < queue.size(); ++q) {
+      const std::uint32_t a = queue[q];
+      if (!best.empty() && dist[a] + 1 >= best.size()) break;
+      for (auto b : next[a]) {
+        if (b == s) {  // closes a cycle of dist[a] + 1 edges
+          std::vector<std::uint32_t> cycle;
+          for (std::uint32_t x = a; x != s; x = parent[x]) cycle.push_back(x);
+          cycle.push_back(s);
+          std::reverse(cycle.begin(), cycle.end());
+          if (best.empty() || cycle.size() < best.size()) best = cycle;
+          break;
+        }
+        if (dist[b] == UINT32_MAX) dist[b] = dist[a] + 1, parent[b] = a, queue.push_back(b);
+      }
+    }
+  }
+  if (best.empty()) throw std::logic_error("patrol: the hull itself should enclose the watched landmarks");
+  std::rotate(best.begin(), std::min_element(best.begin(), best.end()), best.end());
+  PatrolPlan plan{best, best};
+  plan.M.insert(plan.M.end(), W.begin(), W.end());
+  std::sort(plan.M.begin(), plan.M.end());
+  return plan;
+}
+
+std::vector<std::pair<std::uint32_t, std::uint32_t>> polar_pairs(std::size_t n, const Chirotope& chi, const Reading& g) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> out;
+  for (std::size_t q = 0; q < g.size(); ++q) {
+    const std::uint32_t a = g[q], b = g[(q + 1) % n];
+    std::size_t lam = 0;
+    for (std::uint32_t k = 0; k < n; ++k) lam += chi(a, b, k) > 0;
+    // g = [a, b, X, Y] with X = Lambda(a, b) or X = Lambda(b, a) (as sets).
+    auto prefix_left_of = [&](std::uint32_t x, std::uint32_t y, std::size_t size) {
+      for (std::size_t s = 0; s < size; ++s)
+        if (chi(x, y, g[(q + 2 + s) % n]) <= 0) return false;
+      return true;
+    };
+    if (prefix_left_of(a, b, lam) || prefix_left_of(b, a, n - 2 - lam)) out.emplace_back(a, b);
+  }
+  return out;
+}
+
+std::optional<std::string> unrealizable_reason(std::size_t n, const Chirotope& chi, std::span<const std::uint32_t> hull,
+                                               const Reading& g) {
+  // Lemma 3: inside the hull its landmarks keep their counter-clockwise order.
+  Reading sub;
+  const auto on_hull = hull_flags(n, hull);
+  for (auto k : g)
+    if (on_hull[k]) sub.push_back(k);
+  if (normalized(sub) != normalized(Reading(hull.begin(), hull.end())))
+    return std::string("the hull landmarks are out of their counter-clockwise order (Lemma 3)");
+  if (n <= 3) return std::nullopt;
+  const auto polar = polar_pairs(n, chi, g);
+  if (polar.size() < 2) return "it has " + std::to_string(polar.size()) + " polar pair(s); a realizable one has two or more (Lemma 10)";
+  // Lemma 10: each polar line meets another on swap-line sections of both: they share a
+  // landmark (both swap lines start there), or by Lemmas 11-12 (lines not parallel,
+  // section 8.1) each pair of landmarks lies on one side of the other's line.
+  for (auto [i, j] : polar) {
+    const bool met = std::any_of(polar.begin(), polar.end(), [&](const auto& o) {
+      const auto [k, l] = o;
+      if (std::minmax(i, j) == std::minmax(k, l)) return false;
+      if (k == i || k == j || l == i || l == j) return true;
+      return chi(i, j, k) == chi(i, j, l) && chi(k, l, i) == chi(k, l, j);
+    });
+    if (!met)
+      return "its polar line through " + std::to_string(i) + " and " + std::to_string(j) +
+             " meets no other polar line on their swap lines (Lemma 10, by Lemmas 11-12)";
+  }
+  return std::nullopt;
+}
+
+NavigationResult navigate(RobotInterface& robot, const Chirotope& chi, std::span<const std::uint32_t> hull, const Reading& goal) {
+  const std::size_t n = robot.num_landmarks();
+  const Reading g = normalized(goal);
+  NavigationResult res;
+  res.polar = polar_pairs(n, chi, g);
+  if (auto why = unrealizable_reason(n, chi, hull, g)) {
+    res.reason = *why;
+    return res;
+  }
+  auto reading_g = [&] { return robot.lcd().size() == n && normalized(robot.lcd()) == g; };
+  if (reading_g()) return res.reached = true, res;
+  // Cells touching the hull boundary: one tour of its edges.
+  robot.track(hull.back());
+  for (auto h : hull)
+    if (robot.track(h, StopRule::reads({g})).halted) return res.reached = true, res;
+  // Cells inside: along the swap lines of the polar pairs that enter the hull.
+  const auto on_hull = hull_flags(n, hull);
+  for (auto [p, q] : res.polar)
+    for (auto [i, j] : {std::pair{p, q}, std::pair{q, p}}) {
+      if (on_hull[i]) continue;
+      ++res.swap_lines_searched;
+      enter_swap_line(robot, chi, hull, i, j);
+      if (!robot.track(i, StopRule::reads({g, transposed(g, i, j)})).halted) continue;
+      // On the line, one side reads g: step off to it. With i right before j in g the
+      // robot must be left of p_i -> p_j (swap the pair for the other side).
+      const bool left = follows(g, i, j);
+      std::uint32_t m = 0;
+      while (m == i || m == j || chi(left ? i : j, left ? j : i, m) <= 0) ++m;
+      robot.track(m, StopRule::reads({g}));
+      if (!reading_g()) throw std::logic_error("navigate: stepped off a swap line into the wrong cell");
+      return res.reached = true, res;
+    }
+  res.reason = "no cell meeting the hull reads it (searched the hull boundary and " + std::to_string(res.swap_lines_searched) +
+               " swap lines of its polar pairs)";
+  return res;
+}
+
+namespace {
+
+struct GraphBuilder {
+  std::map<Reading, std::uint32_t> id;
+  LearnedSwapGraph g;
+  std::set<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t>> edges;
+  std::uint32_t cell(const Reading& r) {
+    const Reading p = normalized(r);
+    auto [it, fresh] = id.emplace(p, static_cast<std::uint32_t>(g.cells.size()));
+    if (fresh) g.cells.push_back({p, {}});
+    return it->second;
+  }
+  void edge(std::uint32_t a, std::uint32_t b, std::uint32_t i, std::uint32_t j) {
+    if (a == b) return;
+    if (a > b) std::swap(a, b);
+    edges.emplace(a, b, std::min(i, j), std::max(i, j));
+  }
+  LearnedSwapGraph finish() {
+    for (auto [a, b, i, j] : edges) g.edges.push_back({a, b, i, j});
+    return std::move(g);
+  }
+};
+
+}  // namespace
+
+LearnedSwapGraph learn_inside_swap_graph(RobotInterface& robot, const Chirotope& chi, std::span<const std::uint32_t> hull) {
+  const std::size_t n = robot.num_landmarks();
+  const auto on_hull = hull_flags(n, hull);
+  GraphBuilder B;
+  if (hull.size() == n) {  // no swap line enters the hull: its interior is one cell
+    robot.track(hull[0]);
+    B.cell(robot.track(hull[1], StopRule::arrive()).readings.front());
+    return B.finish();
+  }
+  for (std::uint32_t i = 0; i < n; ++i) {
+    if (on_hull[i]) continue;
+    for (std::uint32_t j = 0; j < n; ++j) {
+      if (j == i) continue;
+      enter_swap_line(robot, chi, hull, i, j);
+      const MotionTrace tr = robot.track(i, StopRule::arrive());
+      // Along the line the reading shows the cell on one side; the other side has i and
+      // j transposed (Lemma 6). A swap of k and l on the way is a crossing with line kl.
+      std::vector<std::uint32_t> side, other;
+      for (std::size_t t = 0; t < tr.readings.size(); ++t) {
+        side.push_back(B.cell(tr.readings[t]));
+        other.push_back(B.cell(transposed(tr.readings[t], i, j)));
+        B.edge(side[t], other[t], i, j);
+      }
+      for (std::size_t t = 0; t < tr.events.size(); ++t)
+        if (tr.events[t].swaps.size() == 1) {
+          const auto [k, l] = tr.events[t].swaps[0];
+          B.edge(side[t], side[t + 1], k, l);
+          B.edge(other[t], other[t + 1], k, l);
+        }
+    }
+  }
+  return B.finish();
+}
+
+LearnedSwapGraph learn_swap_graph(RobotInterface& robot, const LearnedSwapGraph& inside) {
+  const std::uint32_t n = static_cast<std::uint32_t>(robot.num_landmarks());
+  struct Record {
+    Reading p;
+    std::vector<std::vector<std::uint32_t>> keys;
+  };
+  std::vector<Record> rec;
+  std::vector<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t>> raw_edges;
+  auto line = [n](std::uint32_t a, std::uint32_t b) { return std::min(a, b) * n + std::max(a, b); };
+  for (std::uint32_t i = 0; i < n; ++i)
+    for (std::uint32_t j = 0; j < n; ++j) {
+      if (i == j) continue;
+      robot.track(i);
+      const MotionTrace tr = robot.repel(i, j, StopRule::arrive());
+      // Arrangement vertices the robot passes: p_i, then one per sensor event, named by
+      // the lines through it (its own and those of the pairs that swap there).
+      std::vector<std::vector<std::uint32_t>> vertex{{n * n + i}};
+      for (const auto& e : tr.events) {
+        if (e.passed) throw std::logic_error("repel passed over a landmark");
+        std::vector<std::uint32_t> key{line(i, j)};
+        for (auto [k, l] : e.swaps) key.push_back(line(k, l));
+        std::sort(key.begin(), key.end());
+        vertex.push_back(std::move(key));
+      }
+      std::vector<std::uint32_t> side, other;
+      for (std::size_t t = 0; t < tr.readings.size(); ++t) {
+        std::vector<std::vector<std::uint32_t>> keys{vertex[t]};
+        if (t + 1 < vertex.size()) keys.push_back(vertex[t + 1]);
+        side.push_back(static_cast<std::uint32_t>(rec.size()));
+        rec.push_back({normalized(tr.readings[t]), keys});
+        other.push_back(static_cast<std::uint32_t>(rec.size()));
+        rec.push_back({normalized(transposed(tr.readings[t], i, j)), keys});
+        raw_edges.emplace_back(side[t], other[t], i, j);
+      }
+      for (std::size_t t = 0; t < tr.events.size(); ++t)
+        if (tr.events[t].swaps.size() == 1) {
+          const auto [k, l] = tr.events[t].swaps[0];
+          raw_edges.emplace_back(side[t], side[t + 1], k, l);
+          raw_edges.emplace_back(other[t], other[t + 1], k, l);
+        }
+    }
+  // Merge: same reading and a shared vertex (Lemma 6: distinct cells on one swap line,
+  // or around one vertex, read differently), or a reading of a cell meeting the hull
+  // (Theorem 14: that reading names one cell of the whole plane).
+  std::vector<std::uint32_t> up(rec.size());
+  std::iota(up.begin(), up.end(), 0U);
+  auto find = [&](std::uint32_t x) {
+    while (up[x] != x) x = up[x] = up[up[x]];
+    return x;
+  };
+  std::map<std::pair<Reading, std::vector<std::uint32_t>>, std::uint32_t> by_vertex;
+  std::map<Reading, std::uint32_t> by_inside;
+  std::set<Reading> inside_cells;
+  for (const auto& c : inside.cells) inside_cells.insert(c.permutation);
+  for (std::uint32_t r = 0; r < rec.size(); ++r) {
+    for (const auto& k : rec[r].keys) {
+      auto [it, fresh] = by_vertex.emplace(std::pair{rec[r].p, k}, r);
+      if (!fresh) up[find(r)] = find(it->second);
+    }
+    if (inside_cells.count(rec[r].p)) {
+      auto [it, fresh] = by_inside.emplace(rec[r].p, r);
+      if (!fresh) up[find(r)] = find(it->second);
+    }
+  }
+  LearnedSwapGraph g;
+  std::vector<std::uint32_t> cell_of(rec.size(), UINT32_MAX), root_cell(rec.size(), UINT32_MAX);
+  for (std::uint32_t r = 0; r < rec.size(); ++r) {
+    const std::uint32_t root = find(r);
+    if (root_cell[root] == UINT32_MAX) {
+      root_cell[root] = static_cast<std::uint32_t>(g.cells.size());
+      g.cells.push_back({rec[r].p, {}});
+    }
+    cell_of[r] = root_cell[root];
+    auto& keys = g.cells[cell_of[r]].vertex_keys;
+    keys.insert(keys.end(), rec[r].keys.begin(), rec[r].keys.end());
+  }
+  for (auto& c : g.cells) {
+    std::sort(c.vertex_keys.begin(), c.vertex_keys.end());
+    c.vertex_keys.erase(std::unique(c.vertex_keys.begin(), c.vertex_keys.end()), c.vertex_keys.end());
+  }
+  std::set<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t>> edges;
+  for (auto [a, b, i, j] : raw_edges) {
+    std::uint32_t x = cell_of[a], y = cell_of[b];
+    if (x == y) continue;
+    if (x > y) std::swap(x, y);
+    edges.emplace(x, y, std::min(i, j), std::max(i, j));
+  }
+  for (auto [a, b, i, j] : edges) g.edges.push_back({a, b, i, j});
+  return g;
+}
+
+}  // namespace preimage::landmarks
