@@ -5,8 +5,13 @@
 // predicate per triple, O(n^3)) at n = 200; at n = 2,000 (target: under 1 s) alone.
 // canonical-form: canonical forms of random 10-landmark order types (target: 10^4/s),
 // with and without reflection identified (no reference: the target is absolute).
+// swap-graph: the swap cell decomposition and swap graph of n = 30 landmarks (870 swap
+// rays; target: under 1 s) against CGAL's Arrangement_2 of the same rays as segments
+// (the oracle of the tests) in the same run; both count the same cells.
 #include <preimage/geometry/kernel.hpp>
 #include <preimage/landmarks/order_type.hpp>
+#include <preimage/landmarks/swap_cells.hpp>
+#include <support/cgal_oracle.hpp>
 
 #include "ratio_reporter.hpp"
 
@@ -68,9 +73,29 @@ void canonical(benchmark::State& state) {
 
 }  // namespace
 
+void swap_graph(benchmark::State& state) {
+  const auto P = landmarks::random_landmarks(static_cast<std::size_t>(state.range(0)), 3, 1000);
+  std::size_t cells = 0;
+  for (auto _ : state) {
+    const auto D = landmarks::SwapCellDecomposition::of(P);
+    cells = D.cells().size();
+    benchmark::DoNotOptimize(D.swap_graph().size());
+  }
+  state.counters["cells"] = static_cast<double>(cells);
+}
+
+void swap_graph_cgal(benchmark::State& state) {
+  const auto P = landmarks::random_landmarks(static_cast<std::size_t>(state.range(0)), 3, 1000);
+  std::size_t cells = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(cells = preimage::testing::cgal_swap_cell_count(P, 1e12));
+  state.counters["cells"] = static_cast<double>(cells);
+}
+
 BENCHMARK(order_type)->Name("order-type/preimage")->ArgName("n")->Arg(200)->Unit(benchmark::kMillisecond);
 BENCHMARK(order_type_brute)->Name("order-type/reference")->ArgName("n")->Arg(200)->Unit(benchmark::kMillisecond);
 BENCHMARK(order_type)->Name("order-type-large/preimage")->ArgName("n")->Arg(2000)->Unit(benchmark::kMillisecond);
 BENCHMARK(canonical)->Name("canonical-form/n:10")->Unit(benchmark::kMicrosecond);
+BENCHMARK(swap_graph)->Name("swap-graph/preimage")->ArgName("n")->Arg(30)->Unit(benchmark::kMillisecond);
+BENCHMARK(swap_graph_cgal)->Name("swap-graph/reference")->ArgName("n")->Arg(30)->Unit(benchmark::kMillisecond);
 
 int main(int argc, char** argv) { return preimage::bench::run_with_ratios(argc, argv); }

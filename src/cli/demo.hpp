@@ -20,5 +20,6 @@ void demo_coverage(DemoContext& ctx);
 void demo_beams(DemoContext& ctx);
 void demo_beams_homotopy(DemoContext& ctx);
 void demo_wallfollow(DemoContext& ctx);
+void demo_landmarks(DemoContext& ctx);
 
 }  // namespace preimage::cli

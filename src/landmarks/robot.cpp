@@ -74,6 +74,7 @@ Simulator::Simulator(std::vector<geometry::Point> landmarks, const geometry::Poi
         throw InputError("robot start " + geometry::format_point(start) + " lies on the line through landmarks " +
                          std::to_string(i) + " and " + std::to_string(j));
   cur_ = sorted_reading(pos_, at_, nullptr, {});
+  waypoints_.push_back(pos_);
 }
 
 Simulator::Simulator(std::vector<geometry::Point> landmarks, std::uint32_t at_landmark)
@@ -131,6 +132,7 @@ TrackReadings Simulator::track(std::uint32_t i) {
   pos_ = P_[i];
   at_ = i;
   cur_ = sorted_reading(P_[i], i, nullptr, t.before_arrival);
+  waypoints_.push_back(pos_);
   ++primitives_;
   return t;
 }
@@ -274,6 +276,7 @@ MotionTrace Simulator::move(const ExactPoint& T, std::optional<std::uint32_t> ta
       cur_ = tr.readings.back();
     }
   }
+  waypoints_.push_back(pos_);
   return tr;
 }
 

@@ -106,6 +106,8 @@ class Simulator : public RobotInterface {
 
   std::optional<std::uint32_t> at() const { return at_; }
   const geometry::ExactPoint& position() const { return pos_; }
+  /// Where the robot has been: the start, then the end of every primitive (for figures).
+  const std::vector<geometry::ExactPoint>& waypoints() const { return waypoints_; }
   /// Strategy 2's control error: each track(i) that leaves a landmark sets off in a
   /// direction rotated by `error()` radians; the tracking feedback still brings the robot
   /// to p_i, so only the reading just after setting off is affected.
@@ -124,6 +126,7 @@ class Simulator : public RobotInterface {
   geometry::ExactPoint pos_;
   std::optional<std::uint32_t> at_;
   Reading cur_;
+  std::vector<geometry::ExactPoint> waypoints_;
   std::size_t primitives_ = 0;
   std::function<double()> heading_error_;
   bool self_check_ = false;
