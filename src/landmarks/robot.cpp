@@ -80,15 +80,15 @@ Simulator::Simulator(std::vector<geometry::Point> landmarks, const geometry::Poi
 Simulator::Simulator(std::vector<geometry::Point> landmarks, std::uint32_t at_landmark)
     : Simulator(landmarks, landmarks.at(at_landmark)) {}
 
-Reading angular_reading(std::span<const ExactPoint> P_, const ExactPoint& c, std::optional<std::uint32_t> at,
+Reading angular_reading(std::span<const ExactPoint> P, const ExactPoint& c, std::optional<std::uint32_t> at,
                         const ExactPoint* toward, const Reading& before) {
   // Around c, counter-clockwise from east: every landmark by its own direction, except
   // the one at c: left out, or (a vanishing step towards `toward`) seen straight behind.
-  const std::uint32_t n = static_cast<std::uint32_t>(P_.size());
+  const std::uint32_t n = static_cast<std::uint32_t>(P.size());
   std::optional<ExactPoint> behind;
   if (at && toward) behind = CGAL::ORIGIN + ((c - CGAL::ORIGIN) * 2 - (*toward - CGAL::ORIGIN));
-  auto dir = [&](std::uint32_t k) -> const ExactPoint& { return at && k == *at ? *behind : P_[k]; };
-  auto pos = [&](std::uint32_t k) -> const ExactPoint& { return at && k == *at ? c : P_[k]; };
+  auto dir = [&](std::uint32_t k) -> const ExactPoint& { return at && k == *at ? *behind : P[k]; };
+  auto pos = [&](std::uint32_t k) -> const ExactPoint& { return at && k == *at ? c : P[k]; };
   // Two aligned landmarks (c on their swap line): the robot stepping to the left of
   // p_a -> p_b sees a right before b; along the line the order from before persists.
   auto tie_first = [&](std::uint32_t a, std::uint32_t b) {
