@@ -2,6 +2,7 @@
 #include <preimage/decompose/boustrophedon.hpp>
 
 #include <preimage/error.hpp>
+#include <preimage/union_find.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -10,20 +11,6 @@
 #include <numeric>
 
 namespace preimage::decompose {
-
-namespace {
-
-struct UnionFind {
-  std::vector<std::uint32_t> p;
-  explicit UnionFind(std::size_t n) : p(n) { std::iota(p.begin(), p.end(), 0u); }
-  std::uint32_t find(std::uint32_t x) {
-    while (p[x] != x) x = p[x] = p[p[x]];
-    return x;
-  }
-  void join(std::uint32_t a, std::uint32_t b) { p[find(a)] = find(b); }
-};
-
-}  // namespace
 
 BoustrophedonDecomposition::BoustrophedonDecomposition(const Environment& env, double angle_deg) : angle_(angle_deg) {
   // Sweep coordinates: rotate the input by -angle so the sweep runs along +x.

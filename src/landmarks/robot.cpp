@@ -37,6 +37,11 @@ Reading normalized(Reading r) {
   return r;
 }
 
+Reading rotated_to(Reading r, std::uint32_t first) {
+  std::rotate(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(position(r, first)), r.end());
+  return r;
+}
+
 Reading transposed(Reading r, std::uint32_t a, std::uint32_t b) {
   std::swap(r[position(r, a)], r[position(r, b)]);
   return r;

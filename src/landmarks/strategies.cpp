@@ -1,27 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <preimage/error.hpp>
 #include <preimage/landmarks/strategies.hpp>
+#include <preimage/union_find.hpp>
 
 #include <algorithm>
 #include <map>
-#include <numeric>
 #include <set>
 #include <tuple>
 #include <stdexcept>
 
 namespace preimage::landmarks {
 namespace {
-
-std::size_t index_of(const Reading& r, std::uint32_t x) {
-  const auto it = std::find(r.begin(), r.end(), x);
-  if (it == r.end()) throw std::logic_error("landmark strategy: label missing from a reading");
-  return static_cast<std::size_t>(it - r.begin());
-}
-
-Reading rotated_to(Reading r, std::uint32_t first) {
-  std::rotate(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(index_of(r, first)), r.end());
-  return r;
-}
 
 std::string name(std::uint32_t k, const std::vector<std::string>& labels) {
   return k < labels.size() ? labels[k] : std::to_string(k);
@@ -89,18 +78,17 @@ HullTour learn_by_hull_tour(RobotInterface& robot) {
   // learn_hull ends at hull.back(): each track below runs along one hull edge.
   for (const std::uint32_t target : hull) {
     const MotionTrace tr = robot.track(target, StopRule::arrive());
-    std::vector<Reading> linear;
-    for (const auto& r : tr.readings) {
-      linear.push_back(rotated_to(r, target));  // the tracked landmark first, the one left last
-      tour.permutations.push_back(linear.back());
-    }
+    // Each reading as a linear order: the tracked landmark first, the one left last.
+    const std::size_t first = tour.permutations.size();
+    for (const auto& r : tr.readings) tour.permutations.push_back(rotated_to(r, target));
+    const std::span<const Reading> linear(tour.permutations.data() + first, tr.readings.size());
     for (std::size_t t = 0; t < tr.events.size(); ++t)
       for (auto [a, b] : tr.events[t].swaps) {
         // Before the swap a comes right before b: the robot is left of p_a -> p_b, on the
         // side of the landmark it left, i.e. of the landmarks after the pair.
         const Reading& r = linear[t];
         if (!follows(r, a, b)) std::swap(a, b);
-        const std::size_t p = index_of(r, a);
+        const auto p = static_cast<std::size_t>(std::find(r.begin(), r.end(), a) - r.begin());
         tour.order_type.set(a, b, std::span<const std::uint32_t>(r).subspan(p + 2));
       }
     // Arriving at a hull landmark: the rest lie counter-clockwise from the direction of
@@ -250,61 +238,75 @@ NavigationResult navigate(RobotInterface& robot, const Chirotope& chi, std::span
 
 namespace {
 
-struct GraphBuilder {
-  std::map<Reading, std::uint32_t> id;
-  LearnedSwapGraph g;
-  std::set<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t>> edges;
-  std::uint32_t cell(const Reading& r) {
-    const Reading p = normalized(r);
-    auto [it, fresh] = id.emplace(p, static_cast<std::uint32_t>(g.cells.size()));
-    if (fresh) g.cells.push_back({p, {}});
-    return it->second;
-  }
-  void edge(std::uint32_t a, std::uint32_t b, std::uint32_t i, std::uint32_t j) {
+using EdgeKey = std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t>;
+
+// The edges of a learned swap graph: one per pair of distinct cells, labelled by the pair
+// of landmarks whose swap line separates them.
+struct EdgeSet {
+  std::set<EdgeKey> edges;
+  void add(std::uint32_t a, std::uint32_t b, std::uint32_t i, std::uint32_t j) {
     if (a == b) return;
     if (a > b) std::swap(a, b);
     edges.emplace(a, b, std::min(i, j), std::max(i, j));
   }
-  LearnedSwapGraph finish() {
-    for (auto [a, b, i, j] : edges) g.edges.push_back({a, b, i, j});
-    return std::move(g);
+  std::vector<LearnedSwapGraph::Edge> list() const {
+    std::vector<LearnedSwapGraph::Edge> out;
+    for (auto [a, b, i, j] : edges) out.push_back({a, b, i, j});
+    return out;
   }
 };
+
+// Along a traced swap line of (i, j) each reading shows the cell on one side, and its
+// transposition of i and j the cell on the other (Lemma 6): the line separates them. A
+// single swap of k and l on the way is a crossing with line kl, which separates
+// consecutive cells on either side. cell(reading, piece) names a cell; edge(a, b, k, l)
+// records one.
+template <class CellOf, class EdgeOf>
+void walk_swap_line(const MotionTrace& tr, std::uint32_t i, std::uint32_t j, CellOf&& cell, EdgeOf&& edge) {
+  std::vector<std::uint32_t> side, other;
+  for (std::size_t t = 0; t < tr.readings.size(); ++t) {
+    side.push_back(cell(tr.readings[t], t));
+    other.push_back(cell(transposed(tr.readings[t], i, j), t));
+    edge(side[t], other[t], i, j);
+  }
+  for (std::size_t t = 0; t < tr.events.size(); ++t)
+    if (tr.events[t].swaps.size() == 1) {
+      const auto [k, l] = tr.events[t].swaps[0];
+      edge(side[t], side[t + 1], k, l);
+      edge(other[t], other[t + 1], k, l);
+    }
+}
 
 }  // namespace
 
 LearnedSwapGraph learn_inside_swap_graph(RobotInterface& robot, const Chirotope& chi, std::span<const std::uint32_t> hull) {
   const std::size_t n = robot.num_landmarks();
   const auto on_hull = hull_flags(n, hull);
-  GraphBuilder B;
+  LearnedSwapGraph g;
+  std::map<Reading, std::uint32_t> id;  // Theorem 7: inside the hull a reading names its cell
+  auto cell = [&](const Reading& r, std::size_t) {
+    const Reading p = normalized(r);
+    auto [it, fresh] = id.emplace(p, static_cast<std::uint32_t>(g.cells.size()));
+    if (fresh) g.cells.push_back({p, {}});
+    return it->second;
+  };
+  EdgeSet E;
   if (hull.size() == n) {  // no swap line enters the hull: its interior is one cell
     robot.track(hull[0]);
-    B.cell(robot.track(hull[1], StopRule::arrive()).readings.front());
-    return B.finish();
+    cell(robot.track(hull[1], StopRule::arrive()).readings.front(), 0);
+    return g;
   }
   for (std::uint32_t i = 0; i < n; ++i) {
     if (on_hull[i]) continue;
     for (std::uint32_t j = 0; j < n; ++j) {
       if (j == i) continue;
       enter_swap_line(robot, chi, hull, i, j);
-      const MotionTrace tr = robot.track(i, StopRule::arrive());
-      // Along the line the reading shows the cell on one side; the other side has i and
-      // j transposed (Lemma 6). A swap of k and l on the way is a crossing with line kl.
-      std::vector<std::uint32_t> side, other;
-      for (std::size_t t = 0; t < tr.readings.size(); ++t) {
-        side.push_back(B.cell(tr.readings[t]));
-        other.push_back(B.cell(transposed(tr.readings[t], i, j)));
-        B.edge(side[t], other[t], i, j);
-      }
-      for (std::size_t t = 0; t < tr.events.size(); ++t)
-        if (tr.events[t].swaps.size() == 1) {
-          const auto [k, l] = tr.events[t].swaps[0];
-          B.edge(side[t], side[t + 1], k, l);
-          B.edge(other[t], other[t + 1], k, l);
-        }
+      walk_swap_line(robot.track(i, StopRule::arrive()), i, j, cell,
+                     [&](std::uint32_t a, std::uint32_t b, std::uint32_t k, std::uint32_t l) { E.add(a, b, k, l); });
     }
   }
-  return B.finish();
+  g.edges = E.list();
+  return g;
 }
 
 LearnedSwapGraph learn_swap_graph(RobotInterface& robot, const LearnedSwapGraph& inside) {
@@ -314,7 +316,7 @@ LearnedSwapGraph learn_swap_graph(RobotInterface& robot, const LearnedSwapGraph&
     std::vector<std::vector<std::uint32_t>> keys;
   };
   std::vector<Record> rec;
-  std::vector<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t>> raw_edges;
+  std::vector<EdgeKey> raw_edges;  // between records
   auto line = [n](std::uint32_t a, std::uint32_t b) { return std::min(a, b) * n + std::max(a, b); };
   for (std::uint32_t i = 0; i < n; ++i)
     for (std::uint32_t j = 0; j < n; ++j) {
@@ -331,32 +333,20 @@ LearnedSwapGraph learn_swap_graph(RobotInterface& robot, const LearnedSwapGraph&
         std::sort(key.begin(), key.end());
         vertex.push_back(std::move(key));
       }
-      std::vector<std::uint32_t> side, other;
-      for (std::size_t t = 0; t < tr.readings.size(); ++t) {
+      // One record per side of each piece, with the vertices at the piece's ends.
+      auto record = [&](const Reading& r, std::size_t t) {
         std::vector<std::vector<std::uint32_t>> keys{vertex[t]};
         if (t + 1 < vertex.size()) keys.push_back(vertex[t + 1]);
-        side.push_back(static_cast<std::uint32_t>(rec.size()));
-        rec.push_back({normalized(tr.readings[t]), keys});
-        other.push_back(static_cast<std::uint32_t>(rec.size()));
-        rec.push_back({normalized(transposed(tr.readings[t], i, j)), keys});
-        raw_edges.emplace_back(side[t], other[t], i, j);
-      }
-      for (std::size_t t = 0; t < tr.events.size(); ++t)
-        if (tr.events[t].swaps.size() == 1) {
-          const auto [k, l] = tr.events[t].swaps[0];
-          raw_edges.emplace_back(side[t], side[t + 1], k, l);
-          raw_edges.emplace_back(other[t], other[t + 1], k, l);
-        }
+        rec.push_back({normalized(r), std::move(keys)});
+        return static_cast<std::uint32_t>(rec.size() - 1);
+      };
+      walk_swap_line(tr, i, j, record,
+                     [&](std::uint32_t a, std::uint32_t b, std::uint32_t k, std::uint32_t l) { raw_edges.emplace_back(a, b, k, l); });
     }
   // Merge: same reading and a shared vertex (Lemma 6: distinct cells on one swap line,
   // or around one vertex, read differently), or a reading of a cell meeting the hull
   // (Theorem 14: that reading names one cell of the whole plane).
-  std::vector<std::uint32_t> up(rec.size());
-  std::iota(up.begin(), up.end(), 0U);
-  auto find = [&](std::uint32_t x) {
-    while (up[x] != x) x = up[x] = up[up[x]];
-    return x;
-  };
+  UnionFind same(rec.size());
   std::map<std::pair<Reading, std::vector<std::uint32_t>>, std::uint32_t> by_vertex;
   std::map<Reading, std::uint32_t> by_inside;
   std::set<Reading> inside_cells;
@@ -364,17 +354,17 @@ LearnedSwapGraph learn_swap_graph(RobotInterface& robot, const LearnedSwapGraph&
   for (std::uint32_t r = 0; r < rec.size(); ++r) {
     for (const auto& k : rec[r].keys) {
       auto [it, fresh] = by_vertex.emplace(std::pair{rec[r].p, k}, r);
-      if (!fresh) up[find(r)] = find(it->second);
+      if (!fresh) same.join(r, it->second);
     }
     if (inside_cells.count(rec[r].p)) {
       auto [it, fresh] = by_inside.emplace(rec[r].p, r);
-      if (!fresh) up[find(r)] = find(it->second);
+      if (!fresh) same.join(r, it->second);
     }
   }
   LearnedSwapGraph g;
-  std::vector<std::uint32_t> cell_of(rec.size(), UINT32_MAX), root_cell(rec.size(), UINT32_MAX);
+  std::vector<std::uint32_t> cell_of(rec.size()), root_cell(rec.size(), UINT32_MAX);
   for (std::uint32_t r = 0; r < rec.size(); ++r) {
-    const std::uint32_t root = find(r);
+    const std::uint32_t root = same.find(r);
     if (root_cell[root] == UINT32_MAX) {
       root_cell[root] = static_cast<std::uint32_t>(g.cells.size());
       g.cells.push_back({rec[r].p, {}});
@@ -387,14 +377,9 @@ LearnedSwapGraph learn_swap_graph(RobotInterface& robot, const LearnedSwapGraph&
     std::sort(c.vertex_keys.begin(), c.vertex_keys.end());
     c.vertex_keys.erase(std::unique(c.vertex_keys.begin(), c.vertex_keys.end()), c.vertex_keys.end());
   }
-  std::set<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t>> edges;
-  for (auto [a, b, i, j] : raw_edges) {
-    std::uint32_t x = cell_of[a], y = cell_of[b];
-    if (x == y) continue;
-    if (x > y) std::swap(x, y);
-    edges.emplace(x, y, std::min(i, j), std::max(i, j));
-  }
-  for (auto [a, b, i, j] : edges) g.edges.push_back({a, b, i, j});
+  EdgeSet E;
+  for (auto [a, b, i, j] : raw_edges) E.add(cell_of[a], cell_of[b], i, j);
+  g.edges = E.list();
   return g;
 }
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <preimage/landmarks/swap_cells.hpp>
+#include <preimage/union_find.hpp>
 
 #include <algorithm>
-#include <numeric>
 #include <optional>
 #include <stdexcept>
 #include <unordered_map>
@@ -78,16 +78,11 @@ SwapCellDecomposition SwapCellDecomposition::of(std::span<const geometry::Point>
 
   // 2. Concurrent crossings (three or more rays through one point) are one vertex: equal
   //    parameters on a ray are equal points; union them.
-  std::vector<std::uint32_t> rep(D.vertices_.size());
-  std::iota(rep.begin(), rep.end(), 0U);
-  auto find = [&](std::uint32_t x) {
-    while (rep[x] != x) x = rep[x] = rep[rep[x]];
-    return x;
-  };
+  UnionFind same(D.vertices_.size());
   for (auto& stops : on_ray) {
     std::sort(stops.begin(), stops.end(), [](const Stop& a, const Stop& b) { return a.t < b.t; });
     for (std::size_t q = 1; q < stops.size(); ++q)
-      if (stops[q].t == stops[q - 1].t) rep[find(stops[q].vertex)] = find(stops[q - 1].vertex);
+      if (stops[q].t == stops[q - 1].t) same.join(stops[q].vertex, stops[q - 1].vertex);
   }
 
   // 3. A box strictly containing every vertex (interval bounding boxes are enclosures).
@@ -121,34 +116,34 @@ SwapCellDecomposition SwapCellDecomposition::of(std::span<const geometry::Point>
     exit_vertex[r] = static_cast<std::uint32_t>(D.vertices_.size());
     exits.push_back({side, along, exit_vertex[r]});
     D.vertices_.push_back({X, Vertex::Kind::Box, kNone});
-    rep.push_back(exit_vertex[r]);
   }
   // Corners start their side (a ray leaving through a corner merges with it).
   const ExactPoint corner[4] = {ExactPoint(x0, y0), ExactPoint(x1, y0), ExactPoint(x1, y1), ExactPoint(x0, y1)};
   for (int s = 0; s < 4; ++s) {
     const std::uint32_t v = static_cast<std::uint32_t>(D.vertices_.size());
     D.vertices_.push_back({corner[s], Vertex::Kind::Box, kNone});
-    rep.push_back(v);
     const ExactFT along = s == 0 ? ExactFT(x0) : s == 1 ? ExactFT(y0) : s == 2 ? ExactFT(-x1) : ExactFT(-y1);
     exits.push_back({s, along, v});
   }
+  same.grow(D.vertices_.size());
   std::sort(exits.begin(), exits.end(), [](const Exit& a, const Exit& b) {
     if (a.side != b.side) return a.side < b.side;
     return a.along < b.along;
   });
   for (std::size_t q = 1; q < exits.size(); ++q)
     if (exits[q].side == exits[q - 1].side && exits[q].along == exits[q - 1].along)
-      rep[find(exits[q].vertex)] = find(exits[q - 1].vertex);
+      same.join(exits[q].vertex, exits[q - 1].vertex);
   // An exit exactly at a corner sorts at the end of the previous side: merge it too.
   for (std::size_t q = 0; q < exits.size(); ++q) {
     const auto& e = exits[q];
-    if (D.vertices_[e.vertex].p == corner[(e.side + 1) % 4]) rep[find(e.vertex)] = find(static_cast<std::uint32_t>(D.vertices_.size() - 4 + (e.side + 1) % 4));
+    if (D.vertices_[e.vertex].p == corner[(e.side + 1) % 4])
+      same.join(e.vertex, static_cast<std::uint32_t>(D.vertices_.size() - 4 + (e.side + 1) % 4));
   }
 
   // 4. Half-edges: the pieces of each ray and of the box; twins are h and h ^ 1.
   std::vector<ExactPoint> heading;  // a point in the direction of each half-edge, from the origin
   auto add_edge = [&](std::uint32_t a, std::uint32_t b, std::uint32_t ray, const EVector& d) {
-    a = find(a), b = find(b);
+    a = same.find(a), b = same.find(b);
     if (a == b) return;
     D.half_edges_.push_back({a, b, kNone, kNone, ray});
     D.half_edges_.push_back({b, a, kNone, kNone, ray});

@@ -27,6 +27,8 @@ using Reading = std::vector<std::uint32_t>;
 
 /// The rotation that starts with the least label: one representative per cyclic order.
 Reading normalized(Reading r);
+/// The rotation of r that starts with `first` (which must be in r).
+Reading rotated_to(Reading r, std::uint32_t first);
 /// r with the labels a and b exchanged.
 Reading transposed(Reading r, std::uint32_t a, std::uint32_t b);
 /// True iff b comes right after a, counter-clockwise.
