@@ -1,0 +1,121 @@
+// SPDX-License-Identifier: Apache-2.0
+#include <preimage/error.hpp>
+#include <preimage/tracking/local_map.hpp>
+
+#include <cmath>
+
+namespace preimage::tracking {
+
+const char* to_string(EdgeKind k) {
+  switch (k) {
+    case EdgeKind::Solid: return "solid";
+    case EdgeKind::Occlusion: return "occlusion";
+    case EdgeKind::Range: return "range";
+    case EdgeKind::FieldOfView: return "field-of-view";
+  }
+  return "?";
+}
+
+std::size_t LocalMap::count(EdgeKind k) const {
+  std::size_t c = 0;
+  for (auto e : edges) c += e == k;
+  return c;
+}
+
+double LocalMap::area() const {
+  double a = 0;
+  for (std::size_t i = 0; i < size(); ++i) {
+    const Point& p = vertices[i];
+    const Point& q = vertices[next(i)];
+    a += p.x() * q.y() - q.x() * p.y();
+  }
+  return a / 2;
+}
+
+namespace {
+// Crossing parity of the ray from p towards +x with the polygon, boundary excluded.
+// Returns -1 if p is on the boundary, else 0/1.
+int parity(const LocalMap& m, const Point& p) {
+  int inside = 0;
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    const Point& a = m.vertices[i];
+    const Point& b = m.vertices[m.next(i)];
+    if (geometry::on_segment(a, b, p)) return -1;
+    // Half-open rule on y decided by exact comparisons; the side by orientation.
+    const bool ay = CGAL::compare_y(a, p) == CGAL::LARGER, by = CGAL::compare_y(b, p) == CGAL::LARGER;
+    if (ay == by) continue;
+    const int o = geometry::orientation(a, b, p);
+    if ((by && o > 0) || (!by && o < 0)) inside ^= 1;
+  }
+  return inside;
+}
+}  // namespace
+
+bool LocalMap::contains(const Point& p) const { return parity(*this, p) != 0; }
+bool LocalMap::strictly_contains(const Point& p) const { return parity(*this, p) == 1; }
+
+void LocalMap::validate(const std::string& what) const {
+  const std::size_t n = size();
+  if (n < 3) throw InputError(what + ": a visibility polygon needs at least 3 vertices, got " + std::to_string(n));
+  if (edges.size() != n || corner.size() != n)
+    throw InputError(what + ": " + std::to_string(n) + " vertices but " + std::to_string(edges.size()) + " edge tags and " +
+                     std::to_string(corner.size()) + " corner entries");
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t j = next(i);
+    const std::string name = what + ": edge " + std::to_string(i) + " (vertices " + std::to_string(i) + "-" + std::to_string(j) + ")";
+    if (vertices[i] == vertices[j]) throw InputError(name + " has zero length");
+    if (edges[i] == EdgeKind::Occlusion) {
+      if (corner[i] != i && corner[i] != j) throw InputError(name + ": an occlusion edge needs its corner at one of its endpoints");
+    } else if (corner[i] != kNone) {
+      throw InputError(name + ": only occlusion edges have a corner");
+    }
+    const bool at_observer = i == observer_vertex || j == observer_vertex;
+    if (at_observer) {
+      if (edges[i] != EdgeKind::FieldOfView) throw InputError(name + ": edges at the observer must be field-of-view bounds");
+      continue;
+    }
+    if (edges[i] == EdgeKind::FieldOfView) throw InputError(name + ": a field-of-view bound must end at the observer");
+    // Angular order about the observer: no edge may turn clockwise. Occlusion edges are
+    // radial in exact maps, so rounding their far end may tilt them either way.
+    if (edges[i] != EdgeKind::Occlusion && geometry::orientation(observer, vertices[i], vertices[j]) < 0)
+      throw InputError(name + " turns clockwise about the observer: vertices are not in counter-clockwise angular order");
+    if (geometry::on_segment(vertices[i], vertices[j], observer)) throw InputError(name + " passes through the observer");
+  }
+  if (observer_vertex == kNone) {
+    if (!strictly_contains(observer)) throw InputError(what + ": the observer is not inside its visibility polygon");
+  } else if (observer_vertex >= n || vertices[observer_vertex] != observer) {
+    throw InputError(what + ": observer_vertex does not hold the observer");
+  } else if (geometry::orientation(vertices[prev(observer_vertex)], observer, vertices[next(observer_vertex)]) < 0) {
+    throw InputError(what + ": the field of view is wider than 180 deg (only cones up to 180 deg or full 360 deg are supported)");
+  }
+  if (area() <= 0) throw InputError(what + ": the polygon is not counter-clockwise");
+}
+
+LocalMap local_map_from_visibility(const geometry::VisibilityPolygon& vis) {
+  if (vis.location.kind != geometry::Location::Kind::Interior)
+    throw InputError("observer at (" + std::to_string(vis.query.x()) + ", " + std::to_string(vis.query.y()) +
+                     ") is on the boundary; a local map needs it in the open free space");
+  LocalMap m;
+  m.observer = vis.query;
+  const std::size_t n = vis.vertices.size();
+  m.vertices.reserve(n);
+  for (auto& v : vis.vertices) m.vertices.push_back(v.approx);
+  m.edges.resize(n);
+  m.corner.assign(n, kNone);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& e = vis.edges[i];
+    if (e.kind == geometry::VisibilityEdge::Kind::Solid) {
+      m.edges[i] = EdgeKind::Solid;
+      continue;
+    }
+    m.edges[i] = EdgeKind::Occlusion;
+    const std::size_t j = i + 1 == n ? 0 : i + 1;
+    const auto& a = vis.vertices[i];
+    m.corner[i] = static_cast<std::uint32_t>(
+        a.kind == geometry::VisibilityVertex::Kind::EnvironmentVertex && a.vertex == e.reflex ? i : j);
+  }
+  m.validate("visibility polygon");
+  return m;
+}
+
+}  // namespace preimage::tracking
