@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <preimage/geometry/queries.hpp>
 
+#include <cmath>
 #include <stdexcept>
 
 namespace preimage::geometry {
@@ -120,6 +121,23 @@ bool direction_free(const Environment& env, const Location& at, const Point& t) 
   }
 }
 }  // namespace
+
+double ray_range(const Environment& env, const Point& origin, double angle, double max_range) {
+  const double dx = std::cos(angle), dy = std::sin(angle), ox = origin.x(), oy = origin.y();
+  double best = max_range;
+  for (std::size_t e = 0; e < env.num_vertices(); ++e) {
+    const Point& a = env.vertex(e);
+    const Point& b = env.vertex(env.next(e));
+    const double ex = b.x() - a.x(), ey = b.y() - a.y();
+    const double den = dx * ey - dy * ex;
+    if (den == 0) continue;  // parallel: a grazing beam returns from the next edge
+    const double ax = a.x() - ox, ay = a.y() - oy;
+    const double t = (ax * ey - ay * ex) / den;  // along the beam
+    const double s = (ax * dy - ay * dx) / den;  // along the edge
+    if (t > 0 && t < best && s >= 0 && s <= 1) best = t;
+  }
+  return best;
+}
 
 bool visible(const Environment& env, const Point& p, const Point& q) {
   const Location lp = locate(env, p), lq = locate(env, q);

@@ -38,6 +38,11 @@ inline std::optional<RayHit> shoot_ray(const Environment& env, const Point& orig
   return shoot_ray(env, to_exact(origin), to_exact(toward) - to_exact(origin));
 }
 
+/// Distance from `origin` along direction `angle` (radians) to the boundary, or
+/// `max_range` if nothing is nearer: a floating-point *measurement* for simulated range
+/// sensors (a laser's reading), not a decision — nothing is decided on it exactly.
+double ray_range(const Environment& env, const Point& origin, double angle, double max_range);
+
 /// Does the closed segment pq lie in closed free space (grazing the boundary allowed)?
 /// p and q may be interior points, on edges or at vertices.
 bool visible(const Environment& env, const Point& p, const Point& q);
