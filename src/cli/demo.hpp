@@ -21,5 +21,6 @@ void demo_beams(DemoContext& ctx);
 void demo_beams_homotopy(DemoContext& ctx);
 void demo_wallfollow(DemoContext& ctx);
 void demo_landmarks(DemoContext& ctx);
+void demo_tracking(DemoContext& ctx);
 
 }  // namespace preimage::cli

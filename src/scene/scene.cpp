@@ -102,7 +102,7 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   }
   Scene s;
   s.source = source;
-  allow_keys(doc, "$", {"name", "description", "environment", "start", "goal", "robot", "landmarks", "beams", "imaginary_beams"});
+  allow_keys(doc, "$", {"name", "description", "environment", "start", "goal", "robot", "landmarks", "beams", "imaginary_beams", "tracking"});
   if (doc.contains("name")) s.name = string_at(doc["name"], "$.name");
   if (doc.contains("description")) s.description = string_at(doc["description"], "$.description");
   if (doc.contains("environment")) {
@@ -140,6 +140,28 @@ Scene parse_scene(const std::string& text, const std::string& source) {
                   point(L[i]["at"], p + ".at")};
       s.landmarks.push_back(std::move(lm));
     }
+  }
+  if (doc.contains("tracking")) {
+    const json& T = doc["tracking"];
+    allow_keys(T, "$.tracking", {"observer", "heading", "target", "target_radius", "target_speed", "target_path"});
+    TrackingSetup t;
+    if (T.contains("observer")) t.observer = point(T["observer"], "$.tracking.observer");
+    if (T.contains("target")) t.target = point(T["target"], "$.tracking.target");
+    if (T.contains("heading")) t.heading = number(T["heading"], "$.tracking.heading");
+    if (T.contains("target_radius")) {
+      t.target_radius = number(T["target_radius"], "$.tracking.target_radius");
+      if (t.target_radius <= 0) fail("$.tracking.target_radius", "must be positive");
+    }
+    if (T.contains("target_speed")) {
+      t.target_speed = number(T["target_speed"], "$.tracking.target_speed");
+      if (t.target_speed < 0) fail("$.tracking.target_speed", "must not be negative");
+    }
+    if (T.contains("target_path")) {
+      const json& P = T["target_path"];
+      if (!P.is_array()) fail("$.tracking.target_path", "expected an array of points, got " + type_name(P));
+      for (std::size_t i = 0; i < P.size(); ++i) t.target_path.push_back(point(P[i], "$.tracking.target_path[" + std::to_string(i) + "]"));
+    }
+    s.tracking = t;
   }
   // "beams" and "imaginary_beams" share one format.
   for (const char* key : {"beams", "imaginary_beams"}) {
@@ -200,6 +222,18 @@ json to_json(const Scene& s) {
     json L = json::array();
     for (auto& l : s.landmarks) L.push_back({{"label", l.label}, {"at", point_json(l.at)}});
     doc["landmarks"] = L;
+  }
+  if (s.tracking) {
+    const auto& t = *s.tracking;
+    json T = {{"heading", t.heading}, {"target_radius", t.target_radius}, {"target_speed", t.target_speed}};
+    if (t.observer) T["observer"] = point_json(*t.observer);
+    if (t.target) T["target"] = point_json(*t.target);
+    if (!t.target_path.empty()) {
+      json P = json::array();
+      for (auto& p : t.target_path) P.push_back(point_json(p));
+      T["target_path"] = P;
+    }
+    doc["tracking"] = T;
   }
   for (const auto* list : {&s.beams, &s.imaginary_beams}) {
     if (list->empty()) continue;

@@ -212,7 +212,7 @@ EscapePathTree escape_path_tree(const LocalMap& map, const Point& t) {
     // Behind the observer (360 deg, no vertex on the ray): the edge from the last vertex of
     // this list to the first of the other crosses l; by Property 2 this sweep may use only
     // its part on this side.
-    if (prev != kNone && cur != map.observer_vertex && rank[prev] != Back && rank[cur] != Back &&
+    if (prev != kNone && map.observer_vertex == kNone && rank[prev] != Back && rank[cur] != Back &&
         rank[cur] != rank[prev]) {
       const std::uint32_t e = static_cast<std::uint32_t>(side > 0 ? prev : cur);
       if (is_escape(map.edges[e])) {
@@ -220,7 +220,8 @@ EscapePathTree escape_path_tree(const LocalMap& map, const Point& t) {
         const Point& b = map.vertices[cur];
         // Where ab crosses l: a and b lie strictly on opposite sides, so the ratio is in (0, 1).
         auto side_area = [&](const Point& p) { return (t.x() - o.x()) * (p.y() - o.y()) - (t.y() - o.y()) * (p.x() - o.x()); };
-        const double da = side_area(a), db = side_area(b), r = da / (da - db);
+        const double da = side_area(a), db = side_area(b);
+        const double r = da != db ? std::clamp(da / (da - db), 0.0, 1.0) : 0.5;  // rounding may tie them
         s.escape(e, a, Point(a.x() + r * (b.x() - a.x()), a.y() + r * (b.y() - a.y())), side);
       }
     }

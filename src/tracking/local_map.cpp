@@ -60,6 +60,10 @@ void LocalMap::validate(const std::string& what) const {
   if (edges.size() != n || corner.size() != n)
     throw InputError(what + ": " + std::to_string(n) + " vertices but " + std::to_string(edges.size()) + " edge tags and " +
                      std::to_string(corner.size()) + " corner entries");
+  if (!std::isfinite(observer.x()) || !std::isfinite(observer.y())) throw InputError(what + ": the observer is not finite");
+  for (std::size_t i = 0; i < n; ++i)
+    if (!std::isfinite(vertices[i].x()) || !std::isfinite(vertices[i].y()))
+      throw InputError(what + ": vertex " + std::to_string(i) + " is not finite");
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t j = next(i);
     const std::string name = what + ": edge " + std::to_string(i) + " (vertices " + std::to_string(i) + "-" + std::to_string(j) + ")";
@@ -75,9 +79,9 @@ void LocalMap::validate(const std::string& what) const {
       continue;
     }
     if (edges[i] == EdgeKind::FieldOfView) throw InputError(name + ": a field-of-view bound must end at the observer");
-    // Angular order about the observer: no edge may turn clockwise. Occlusion edges are
-    // radial in exact maps, so rounding their far end may tilt them either way.
-    if (edges[i] != EdgeKind::Occlusion && geometry::orientation(observer, vertices[i], vertices[j]) < 0)
+    // Angular order about the observer: no edge may turn clockwise (the sweep needs V
+    // star-shaped, so that the line through the target crosses it once).
+    if (geometry::orientation(observer, vertices[i], vertices[j]) < 0)
       throw InputError(name + " turns clockwise about the observer: vertices are not in counter-clockwise angular order");
     if (geometry::on_segment(vertices[i], vertices[j], observer)) throw InputError(name + " passes through the observer");
   }
@@ -89,6 +93,26 @@ void LocalMap::validate(const std::string& what) const {
     throw InputError(what + ": the field of view is wider than 180 deg (only cones up to 180 deg or full 360 deg are supported)");
   }
   if (area() <= 0) throw InputError(what + ": the polygon is not counter-clockwise");
+}
+
+void straighten_occlusion_edges(LocalMap& m) {
+  const Point& o = m.observer;
+  for (std::size_t e = 0; e < m.size(); ++e) {
+    if (m.edges[e] != EdgeKind::Occlusion) continue;
+    const std::size_t f = m.next(e);
+    if (geometry::orientation(o, m.vertices[e], m.vertices[f]) >= 0) continue;
+    // Turn the far end about the observer, counter-clockwise if it is the edge's second
+    // endpoint and clockwise if its first, by steps growing from ~1e-15 rad, until the
+    // exact predicate accepts the edge.
+    const bool far_is_second = m.corner[e] == e;
+    Point& far = m.vertices[far_is_second ? f : e];
+    const double dx = far.x() - o.x(), dy = far.y() - o.y();
+    for (double a = 1e-15; a < 1e-6; a *= 2) {
+      const double t = far_is_second ? a : -a, c = std::cos(t), sn = std::sin(t);
+      far = Point(o.x() + c * dx - sn * dy, o.y() + sn * dx + c * dy);
+      if (geometry::orientation(o, m.vertices[e], m.vertices[f]) >= 0) break;
+    }
+  }
 }
 
 LocalMap local_map_from_visibility(const geometry::VisibilityPolygon& vis) {
@@ -114,6 +138,38 @@ LocalMap local_map_from_visibility(const geometry::VisibilityPolygon& vis) {
     m.corner[i] = static_cast<std::uint32_t>(
         a.kind == geometry::VisibilityVertex::Kind::EnvironmentVertex && a.vertex == e.reflex ? i : j);
   }
+  // Distinct symbolic vertices may round to one point (a ray through two aligned
+  // vertices): merge them, keeping the edge that leaves the merged point.
+  std::vector<std::uint32_t> index_of(n);
+  LocalMap c;
+  c.observer = m.observer;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!c.vertices.empty() && m.vertices[i] == c.vertices.back()) {
+      index_of[i] = static_cast<std::uint32_t>(c.vertices.size() - 1);
+      c.edges.back() = m.edges[i];
+      c.corner.back() = m.corner[i];
+      continue;
+    }
+    index_of[i] = static_cast<std::uint32_t>(c.vertices.size());
+    c.vertices.push_back(m.vertices[i]);
+    c.edges.push_back(m.edges[i]);
+    c.corner.push_back(m.corner[i]);
+  }
+  while (c.vertices.size() > 1 && c.vertices.back() == c.vertices.front()) {
+    for (auto& k : index_of)
+      if (k == c.vertices.size() - 1) k = 0;
+    c.vertices.pop_back();
+    c.edges.pop_back();
+    c.corner.pop_back();
+  }
+  for (auto& k : c.corner)
+    if (k != kNone) k = index_of[k];
+  // A corner merged into the far end of its own edge leaves a one-vertex "edge": keep the
+  // corner at the nearer endpoint.
+  for (std::size_t e = 0; e < c.size(); ++e)
+    if (c.corner[e] != kNone && c.corner[e] != e && c.corner[e] != c.next(e)) c.corner[e] = static_cast<std::uint32_t>(e);
+  m = std::move(c);
+  straighten_occlusion_edges(m);
   m.validate("visibility polygon");
   return m;
 }

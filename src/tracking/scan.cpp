@@ -56,6 +56,22 @@ Scan simulate_scan(const geometry::Environment& env, const Pose& pose, const Las
   return s;
 }
 
+const BeamDirections& beam_directions(const Scan& scan) {
+  thread_local BeamDirections dirs;
+  thread_local double min = 0, inc = 0;
+  if (dirs.cos.size() != scan.ranges.size() || min != scan.angle_min || inc != scan.angle_increment) {
+    min = scan.angle_min;
+    inc = scan.angle_increment;
+    dirs.cos.resize(scan.ranges.size());
+    dirs.sin.resize(scan.ranges.size());
+    for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
+      dirs.cos[i] = std::cos(scan.angle(i));
+      dirs.sin[i] = std::sin(scan.angle(i));
+    }
+  }
+  return dirs;
+}
+
 std::vector<Point> scan_points(const Scan& scan, const MapParams& mp) {
   std::vector<Point> out;
   for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
@@ -120,12 +136,15 @@ LocalMap local_map_from_scan(const Scan& scan, const MapParams& mp) {
   const std::size_t n = scan.ranges.size();
   const bool full = scan.full_circle();
   const double R = scan.max_range;
-  std::vector<char> valid(n);
-  std::vector<Point> pts(n, Point(0, 0));
+  thread_local std::vector<char> valid;
+  thread_local std::vector<Point> pts;
+  valid.assign(n, 0);
+  pts.assign(n, Point(0, 0));
+  const BeamDirections& dir = beam_directions(scan);
   for (std::size_t i = 0; i < n; ++i) {
     const double r = scan.ranges[i];
     valid[i] = r > mp.min_range && r < R - mp.range_margin;
-    if (valid[i]) pts[i] = Point(r * std::cos(scan.angle(i)), r * std::sin(scan.angle(i)));
+    if (valid[i]) pts[i] = Point(r * dir.cos[i], r * dir.sin[i]);
   }
   // A break between beam i-1 and i: an out-of-range reading, or an occlusion gap.
   auto gap_between = [&](std::size_t a, std::size_t b) {
@@ -160,6 +179,7 @@ LocalMap local_map_from_scan(const Scan& scan, const MapParams& mp) {
         for (std::size_t i = 0; i < n; ++i) B.add(range_point(scan.angle(i)), EdgeKind::Range);
         m.edges.push_back(EdgeKind::Range);
         m.corner.push_back(kNone);
+        straighten_occlusion_edges(m);
         m.validate("scan map");
         return m;
       }
@@ -252,6 +272,7 @@ LocalMap local_map_from_scan(const Scan& scan, const MapParams& mp) {
       m.corner.push_back(kNone);
     }
   }
+  straighten_occlusion_edges(m);
   m.validate("scan map");
   return m;
 }

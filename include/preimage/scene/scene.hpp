@@ -36,6 +36,16 @@ struct Beam {
 };
 const char* to_string(Beam::Shape s);
 
+/// The tracking slot (escape-path tracking module): where the observer and the target
+/// start, the target's radius and speed, and an optional scripted path for it.
+struct TrackingSetup {
+  std::optional<Point> observer, target;
+  double heading = 0;          // observer heading, degrees
+  double target_radius = 0.2;
+  double target_speed = 0.5;   // m/s
+  std::vector<Point> target_path;
+};
+
 struct Scene {
   std::string name;
   std::string description;
@@ -47,6 +57,7 @@ struct Scene {
   /// A user-chosen basis for homotopy classes (beams paper 5.3, step 4): disjoint
   /// directed beams with a spanning tree joining every obstacle to the outer boundary.
   std::vector<Beam> imaginary_beams;
+  std::optional<TrackingSetup> tracking;
 
   /// The environment, or InputError("<source>: the scene has no environment").
   const geometry::Environment& require_environment() const;

@@ -56,6 +56,12 @@ struct LocalMap {
   void validate(const std::string& what = "local map") const;
 };
 
+/// Occlusion edges are radial: their ends are on one ray from the observer. Rounded to
+/// doubles, the far end may fall a hair clockwise of it, and V would no longer be
+/// star-shaped. This turns such far ends about the observer by the least amount (from
+/// 1e-15 rad up) that exact orientation accepts.
+void straighten_occlusion_edges(LocalMap& map);
+
 /// The local map from the exact visibility polygon of the geometry core (unlimited range,
 /// 360 deg): solid edges on environment edges, occlusion edges from the reflex vertex
 /// outwards. Vertex coordinates are rounded to doubles, as sensor data would be; the

@@ -38,7 +38,7 @@ struct Vec2 {
 inline Vec2 vec(const Point& p) { return {p.x(), p.y()}; }
 
 struct RiskParams {
-  double c = 1.0;       // scale of equation (3)
+  double c = 0.1;       // scale of equation (3)
   int m = 0;            // exponent of the reactive component, m >= 0
   double delta = 0.2;   // target radius
   double min_h = 1e-6;  // h is floored here (a target touching its free edge has escaped)

@@ -1,0 +1,19 @@
+// SPDX-License-Identifier: Apache-2.0
+// SVG figures for the tracking module: V(q^o) with solid and free edges and the
+// escape-path tree (the paper's Figs. 2-3), and a tracking run with both paths.
+#pragma once
+#include <preimage/tracking/simulation.hpp>
+
+#include <string>
+
+namespace preimage::tracking {
+
+/// V (world frame) with its edges by kind, the escape-path tree, the shortest escape path
+/// and, if given, -grad phi-bar drawn from the observer. `env` may be null.
+std::string escape_path_tree_figure(const geometry::Environment* env, const LocalMap& map, const EscapePathTree& tree,
+                                    const Vec2* descent = nullptr, const Vec2* plain_descent = nullptr);
+
+/// A closed-loop run: observer path, target path, where sight was lost.
+std::string tracking_run_figure(const geometry::Environment& env, const SimulationResult& run, const std::string& title);
+
+}  // namespace preimage::tracking

@@ -1,0 +1,150 @@
+// SPDX-License-Identifier: Apache-2.0
+#include <preimage/tracking/tracker.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace preimage::tracking {
+
+const char* to_string(Aggregation a) { return a == Aggregation::Recursive ? "recursive" : "plain"; }
+
+namespace {
+
+// Gauss-Newton fit of a circle of known radius to pts: minimises sum (|p - c| - r)^2,
+// starting behind the cluster's centroid as seen from the sensor.
+bool fit_circle(const std::vector<Vec2>& pts, double r, Vec2& c, double& rms) {
+  Vec2 m;
+  for (auto& p : pts) m = m + p;
+  m = m * (1.0 / static_cast<double>(pts.size()));
+  const double mn = m.norm();
+  if (mn == 0) return false;
+  c = m + m * (r / mn);
+  for (int it = 0; it < 8; ++it) {
+    double a11 = 0, a12 = 0, a22 = 0, b1 = 0, b2 = 0;
+    for (auto& p : pts) {
+      const Vec2 d = c - p;
+      const double n = d.norm();
+      if (n == 0) return false;
+      const Vec2 J = d * (1.0 / n);  // d(|c - p| - r)/dc
+      const double res = n - r;
+      a11 += J.x * J.x; a12 += J.x * J.y; a22 += J.y * J.y;
+      b1 -= J.x * res; b2 -= J.y * res;
+    }
+    const double det = a11 * a22 - a12 * a12;
+    if (std::abs(det) < 1e-18) break;
+    c = c + Vec2{(a22 * b1 - a12 * b2) / det, (a11 * b2 - a12 * b1) / det};
+  }
+  double ss = 0;
+  for (auto& p : pts) ss += ((c - p).norm() - r) * ((c - p).norm() - r);
+  rms = std::sqrt(ss / static_cast<double>(pts.size()));
+  return std::isfinite(rms);
+}
+
+}  // namespace
+
+Detection detect_target(const Scan& scan, const DetectParams& dp, const std::optional<Point>& prior) {
+  Detection best;
+  const std::size_t n = scan.ranges.size();
+  const double margin = 0.05;
+  auto valid = [&](std::size_t i) { return scan.ranges[i] > 0.01 && scan.ranges[i] < scan.max_range - margin; };
+  const BeamDirections& dir = beam_directions(scan);
+  auto point = [&](std::size_t i) { return Vec2{scan.ranges[i] * dir.cos[i], scan.ranges[i] * dir.sin[i]}; };
+  std::vector<Vec2> cluster;
+  double best_score = 1e300;
+  std::size_t i = 0;
+  while (i < n) {
+    if (!valid(i)) { ++i; continue; }
+    std::size_t j = i;
+    while (j + 1 < n && valid(j + 1) && (point(j + 1) - point(j)).norm() <= dp.jump) ++j;
+    const std::size_t a = i, b = j;
+    i = j + 1;
+    if (b - a + 1 < dp.min_points) continue;
+    if ((point(b) - point(a)).norm() > 2.2 * dp.radius) continue;  // wider than the target
+    // The target stands in front of what is behind it: both flanks are further or empty.
+    double near = 1e300;
+    for (std::size_t k = a; k <= b; ++k) near = std::min(near, scan.ranges[k]);
+    const bool left_ok = a == 0 || !valid(a - 1) || scan.ranges[a - 1] > near + 0.5 * dp.radius;
+    const bool right_ok = b + 1 == n || !valid(b + 1) || scan.ranges[b + 1] > near + 0.5 * dp.radius;
+    if (!left_ok || !right_ok) continue;
+    cluster.clear();
+    for (std::size_t k = a; k <= b; ++k) cluster.push_back(point(k));
+    Vec2 c;
+    double rms;
+    if (!fit_circle(cluster, dp.radius, c, rms) || rms > dp.max_rms) continue;
+    double score = rms;
+    if (prior) {
+      const double d = (c - vec(*prior)).norm();
+      if (d > dp.gate) continue;
+      score = d;
+    }
+    ++best.candidates;
+    if (score < best_score) {
+      best_score = score;
+      best.found = true;
+      best.center = Point(c.x, c.y);
+      best.rms = rms;
+      best.first = a;
+      best.last = b;
+    }
+  }
+  return best;
+}
+
+Scan without_target(const Scan& scan, const Detection& d) {
+  Scan s = scan;
+  if (!d.found) return s;
+  const std::size_t n = scan.ranges.size();
+  const bool has_l = d.first > 0, has_r = d.last + 1 < n;
+  const double rl = has_l ? scan.ranges[d.first - 1] : (has_r ? scan.ranges[d.last + 1] : scan.max_range);
+  const double rr = has_r ? scan.ranges[d.last + 1] : rl;
+  const double sat = scan.max_range - 0.05;
+  for (std::size_t k = d.first; k <= d.last; ++k) {
+    if (rl >= sat || rr >= sat) {
+      s.ranges[k] = scan.max_range;
+    } else {
+      const double f = static_cast<double>(k - d.first + 1) / static_cast<double>(d.last - d.first + 2);
+      s.ranges[k] = rl + f * (rr - rl);
+    }
+  }
+  return s;
+}
+
+namespace {
+Command clamp(Command c, const ControlParams& p) {
+  c.v = std::clamp(c.v, p.reverse ? -p.v_max : 0.0, p.v_max);
+  c.omega = std::clamp(c.omega, -p.omega_max, p.omega_max);
+  return c;
+}
+Command regulator(const Point& t, const ControlParams& p) {
+  const double dist = std::hypot(t.x(), t.y()), bearing = std::atan2(t.y(), t.x());
+  return {p.k_distance * (dist - p.preferred_distance) * std::max(0.0, std::cos(bearing)), p.k_bearing * bearing};
+}
+}  // namespace
+
+Command risk_command(const Vec2& grad, const Point& target, const ControlParams& p) {
+  Command c = regulator(target, p);
+  const double g = grad.norm();
+  if (g > 0) {
+    const Vec2 d = grad * -1.0, n{1, 0};
+    c.v += p.k_v * n.dot(d);
+    c.omega += p.k_omega * n.cross(d) / g;
+  }
+  return clamp(c, p);
+}
+
+Command naive_command(const Point& target, const ControlParams& p) { return clamp(regulator(target, p), p); }
+
+TrackStep track(const Scan& scan, const TrackerParams& tp, const std::optional<Point>& prior) {
+  TrackStep out;
+  out.detection = detect_target(scan, tp.detect, prior);
+  out.map = local_map_from_scan(out.detection.found ? without_target(scan, out.detection) : scan, tp.map);
+  if (!out.detection.found || !out.map.strictly_contains(out.detection.center)) return out;
+  out.tracked = true;
+  out.tree = escape_path_tree(out.map, out.detection.center);
+  out.risks = escape_risks(out.map, out.tree, tp.risk);
+  out.gradient = tp.aggregation == Aggregation::Recursive ? recursive_average(out.tree, out.risks) : plain_average(out.risks);
+  out.command = risk_command(out.gradient, out.detection.center, tp.control);
+  return out;
+}
+
+}  // namespace preimage::tracking

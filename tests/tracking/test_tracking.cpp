@@ -1,0 +1,145 @@
+// SPDX-License-Identifier: Apache-2.0
+#include <preimage/error.hpp>
+#include <preimage/scene/scene.hpp>
+#include <preimage/tracking/replay.hpp>
+#include <preimage/tracking/simulation.hpp>
+
+#include "support/escape_oracle.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+using namespace preimage;
+using namespace preimage::tracking;
+using geometry::Point;
+
+namespace {
+std::string example(const std::string& name) { return std::string(PREIMAGE_EXAMPLES) + "/tracking/" + name; }
+}  // namespace
+
+TEST(TrackingFixtures, TargetOnARoundedRadialEdge) {
+  // Scan 49 of the ACES log: replay put the target straight ahead, on the ray of a radial
+  // occlusion edge whose rounded far end fell clockwise of it; V was not star-shaped and
+  // the sweep missed two free edges ("escape edge 43 was not reached").
+  std::ifstream in(std::string(PREIMAGE_FIXTURES) + "/scans/aces_scan49_target_on_radial_edge.log");
+  std::string line;
+  ASSERT_TRUE(std::getline(in, line));
+  const auto scan = parse_log_line(line, 50, "fixture");
+  ASSERT_TRUE(scan.has_value());
+  const LocalMap map = local_map_from_scan(*scan);
+  const Point t(std::cos(scan->angle(90)), std::sin(scan->angle(90)));
+  const EscapePathTree tree = escape_path_tree(map, t);
+  const auto oracle = preimage::testing::brute_force_sde(map, t);
+  ASSERT_EQ(tree.paths.size(), oracle.size());
+  for (std::size_t i = 0; i < oracle.size(); ++i) EXPECT_NEAR(tree.paths[i].length, oracle[i], 1e-9 * (1 + oracle[i]));
+  EXPECT_TRUE(replay_scan(*scan, TrackerParams{}).has_tree);
+}
+
+TEST(TrackingAggregation, ChairSceneRecursiveAverageDiffersFromPlain) {
+  // Figs. 4-5: the chair's legs give many free edges on one branch (around the
+  // partition's corner). The plain average is pulled towards them (left, behind the
+  // chair); the recursive average weighs that branch once and points the other way.
+  const scene::Scene sc = scene::load_scene(example("chair.json"));
+  const geometry::VisibilityIndex index(sc.require_environment());
+  const LocalMap map = exact_local_map(index, *sc.tracking->observer);
+  const EscapePathTree tree = escape_path_tree(map, *sc.tracking->target);
+  RiskParams rp;
+  rp.delta = sc.tracking->target_radius;
+  const auto risks = escape_risks(map, tree, rp);
+  // The branch: one node holding the chair's edges.
+  std::size_t largest = 0;
+  for (auto& c : tree.child_paths()) largest = std::max(largest, c.size());
+  EXPECT_GE(largest, 6u);
+  const Vec2 plain = plain_average(risks) * -1.0, rec = recursive_average(tree, risks) * -1.0;
+  EXPECT_LT(plain.x, 0) << "plain average should point left, towards the chair";
+  EXPECT_GT(rec.x, 0) << "recursive average should point right";
+  const double angle = std::acos(plain.dot(rec) / (plain.norm() * rec.norm()));
+  EXPECT_GT(angle, 5 * M_PI / 180);
+}
+
+TEST(TrackingSimulation, RunsAreConsistentAndStayInFreeSpace) {
+  for (const char* name : {"corridor.json", "box.json", "lab.json"}) {
+    const scene::Scene sc = scene::load_scene(example(name));
+    const TrackingScenario s = TrackingScenario::from_scene(sc);
+    for (auto strategy : {Strategy::Risk, Strategy::Sde, Strategy::Naive}) {
+      for (auto policy : {TargetPolicy::Scripted, TargetPolicy::Random, TargetPolicy::Adversarial}) {
+        SimulationParams p;
+        p.strategy = strategy;
+        p.policy = policy;
+        p.steps = 80;
+        p.seed = 3;
+        const SimulationResult r = simulate(s, p);
+        ASSERT_EQ(r.observer.size(), 81u);
+        double len = 0, tlen = 0;
+        std::size_t seen = 0;
+        int first_lost = -1;
+        for (std::size_t i = 0; i < r.observer.size(); ++i) {
+          EXPECT_EQ(geometry::locate(*s.environment, r.observer[i].position).kind, geometry::Location::Kind::Interior);
+          EXPECT_TRUE(geometry::locate(*s.environment, r.target[i]).in_free_space());
+          const bool vis = geometry::visible(*s.environment, r.observer[i].position, r.target[i]) &&
+                           std::hypot(r.target[i].x() - r.observer[i].position.x(), r.target[i].y() - r.observer[i].position.y()) <= p.laser.max_range;
+          EXPECT_EQ(vis, static_cast<bool>(r.visible[i]));
+          seen += vis;
+          if (!vis && first_lost < 0) first_lost = static_cast<int>(i);
+          if (i) {
+            len += std::hypot(r.observer[i].position.x() - r.observer[i - 1].position.x(), r.observer[i].position.y() - r.observer[i - 1].position.y());
+            tlen += std::hypot(r.target[i].x() - r.target[i - 1].x(), r.target[i].y() - r.target[i - 1].y());
+            // kinematic limits: at most v_max dt per step
+            EXPECT_LE(std::hypot(r.observer[i].position.x() - r.observer[i - 1].position.x(),
+                                 r.observer[i].position.y() - r.observer[i - 1].position.y()),
+                      p.tracker.control.v_max * p.dt + 1e-12);
+          }
+        }
+        EXPECT_NEAR(r.observer_length, len, 1e-9);
+        EXPECT_NEAR(r.target_length, tlen, 1e-9);
+        EXPECT_DOUBLE_EQ(r.escape_time, first_lost < 0 ? -1.0 : first_lost * p.dt);
+        EXPECT_DOUBLE_EQ(r.visible_fraction, static_cast<double>(seen) / 81.0);
+        // Same seed, same run.
+        EXPECT_EQ(simulate(s, p).observer.back().position, r.observer.back().position);
+      }
+    }
+  }
+}
+
+TEST(TrackingSimulation, TheObserverFollowsAScriptedTargetRoundTheCorridor) {
+  // The target walks 31 m round two corners at 0.6 m/s; TRACK must keep it in sight.
+  const scene::Scene sc = scene::load_scene(example("corridor.json"));
+  SimulationParams p;
+  p.steps = 500;
+  const SimulationResult r = simulate(TrackingScenario::from_scene(sc), p);
+  EXPECT_DOUBLE_EQ(r.escape_time, -1.0);
+  EXPECT_GT(r.target_length, 25.0);
+}
+
+TEST(TrackingReplay, LogLinesAreParsedOrNamed) {
+  const auto s = parse_log_line("12.5 -1.5707963 0.0174533 1 2 3 4", 8, "log:3");
+  ASSERT_TRUE(s.has_value());
+  EXPECT_EQ(s->ranges.size(), 4u);
+  EXPECT_DOUBLE_EQ(s->timestamp, 12.5);
+  EXPECT_FALSE(parse_log_line("ODOM 0 0 0 0 0 0 0.1 pippo 0.1", 50, "log:1").has_value());
+  EXPECT_FALSE(parse_log_line("# comment", 50, "log:1").has_value());
+  try {
+    parse_log_line("FLASER 3 1.0 x 1.0 0 0 0 0 0 0 7.5 host 7.5", 50, "aces.log:12");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "aces.log:12: token 4 (\"x\"): expected a number");
+  }
+  EXPECT_THROW(parse_log_line("FLASER 180 1 2", 50, "l"), InputError);
+}
+
+
+TEST(TrackingFixtures, CoincidentVisibilityVerticesAreMerged) {
+  // From (2, 6) in the lab, the ray through one chair corner meets another corner: V has
+  // two symbolic vertices at one point, which the local map rejected as a zero-length
+  // edge ("visibility polygon: edge 36 (vertices 36-37) has zero length").
+  const scene::Scene sc = scene::load_scene(example("lab.json"));
+  const geometry::VisibilityIndex index(sc.require_environment());
+  const LocalMap map = exact_local_map(index, Point(2, 6));
+  const Point t(5, 5.5);
+  const auto tree = escape_path_tree(map, t);
+  const auto oracle = preimage::testing::brute_force_sde(map, t);
+  ASSERT_EQ(tree.paths.size(), oracle.size());
+  for (std::size_t i = 0; i < oracle.size(); ++i) EXPECT_NEAR(tree.paths[i].length, oracle[i], 1e-9 * (1 + oracle[i]));
+}
