@@ -98,13 +98,15 @@ void LocalMap::validate(const std::string& what) const {
 void straighten_occlusion_edges(LocalMap& m) {
   const Point& o = m.observer;
   for (std::size_t e = 0; e < m.size(); ++e) {
-    if (m.edges[e] != EdgeKind::Occlusion) continue;
+    if (m.edges[e] == EdgeKind::FieldOfView) continue;
     const std::size_t f = m.next(e);
     if (geometry::orientation(o, m.vertices[e], m.vertices[f]) >= 0) continue;
     // Turn the far end about the observer, counter-clockwise if it is the edge's second
     // endpoint and clockwise if its first, by steps growing from ~1e-15 rad, until the
-    // exact predicate accepts the edge.
-    const bool far_is_second = m.corner[e] == e;
+    // exact predicate accepts the edge. (A solid edge seen edge-on is radial too.)
+    const bool far_is_second = m.edges[e] == EdgeKind::Occlusion
+                                   ? m.corner[e] == e
+                                   : CGAL::compare_distance_to_point(o, m.vertices[f], m.vertices[e]) == CGAL::LARGER;
     Point& far = m.vertices[far_is_second ? f : e];
     const double dx = far.x() - o.x(), dy = far.y() - o.y();
     for (double a = 1e-15; a < 1e-6; a *= 2) {

@@ -207,7 +207,12 @@ SimulationResult simulate(const TrackingScenario& sc, const SimulationParams& sp
           const Point p(o.position.x() + c.v * sp.dt * std::cos(th), o.position.y() + c.v * sp.dt * std::sin(th));
           if (c.v > 0 && !can_move(o.position, p)) continue;
           if (!sees(Pose{p, th}, estimate)) continue;
-          const LocalMap m = exact_local_map(index, p);
+          LocalMap m;
+          try {
+            m = exact_local_map(index, p);
+          } catch (const InputError&) {
+            continue;  // a degenerate V at this candidate: skip it
+          }
           if (!m.strictly_contains(estimate)) continue;
           const double sde = std::min(escape_path_tree(m, estimate).sde(), 1e9);
           const double tie = std::abs(c.v - naive.v) + std::abs(c.omega - naive.omega);
@@ -235,8 +240,14 @@ SimulationResult simulate(const TrackingScenario& sc, const SimulationParams& sp
     } else if (sp.policy == TargetPolicy::Adversarial) {
       speed = sp.speed_ratio * cp.v_max;
       // Run along the current shortest escape path from the observer's true position.
-      const LocalMap m = exact_local_map(index, o.position);
-      if (m.strictly_contains(t)) {
+      LocalMap m;
+      bool ok = true;
+      try {
+        m = exact_local_map(index, o.position);
+      } catch (const InputError&) {
+        ok = false;  // keep the previous plan
+      }
+      if (ok && m.strictly_contains(t)) {
         const EscapePathTree tree = escape_path_tree(m, t);
         if (tree.shortest != kNone) {
           plan = tree.polyline(tree.shortest);

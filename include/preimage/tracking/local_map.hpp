@@ -56,9 +56,9 @@ struct LocalMap {
   void validate(const std::string& what = "local map") const;
 };
 
-/// Occlusion edges are radial: their ends are on one ray from the observer. Rounded to
-/// doubles, the far end may fall a hair clockwise of it, and V would no longer be
-/// star-shaped. This turns such far ends about the observer by the least amount (from
+/// Occlusion edges (and solid edges seen edge-on) are radial: their ends are on one ray
+/// from the observer. Rounded to doubles, the far end may fall a hair clockwise of it, and
+/// V would no longer be star-shaped. This turns such far ends about the observer by the least amount (from
 /// 1e-15 rad up) that exact orientation accepts.
 void straighten_occlusion_edges(LocalMap& map);
 
