@@ -40,7 +40,7 @@ const Case& scan_case(std::size_t beams) {
   const Detection d = detect_target(c.scan, c.params.detect);
   if (!d.found) throw std::runtime_error("bench: target not detected");
   c.target = d.center;
-  c.map = local_map_from_scan(without_target(c.scan, d), c.params.map);
+  c.map = local_map_without_target(c.scan, d, c.params.map);
   return cases.emplace(beams, std::move(c)).first->second;
 }
 

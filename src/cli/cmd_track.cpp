@@ -114,10 +114,7 @@ SimulationParams sim_params(const std::string& policy, const std::string& strate
 void run_simulate(const std::string& file, const SimulationParams& p, const std::string& svg, bool as_json) {
   const scene::Scene sc = scene::load_scene(file);
   const TrackingScenario s = TrackingScenario::from_scene(sc);
-  SimulationParams q = p;
-  q.tracker.detect.radius = s.target.radius;
-  q.tracker.risk.delta = s.target.radius;
-  const SimulationResult r = simulate(s, q);
+  const SimulationResult r = simulate(s, p);
   if (!svg.empty()) std::ofstream(svg) << tracking_run_figure(*s.environment, r, to_string(p.strategy));
   if (as_json) {
     json j = {{"scene", s.name}, {"strategy", to_string(p.strategy)}, {"target_policy", to_string(p.policy)},
@@ -155,10 +152,7 @@ void run_evaluate(const std::vector<std::string>& files, std::size_t seeds, std:
         double esc_sum = 0, vis_sum = 0, len_sum = 0;
         std::size_t escaped = 0;
         for (std::size_t seed = 1; seed <= seeds; ++seed) {
-          SimulationParams p = sim_params(policy, strategy, steps, seed, fov, "recursive");
-          p.tracker.detect.radius = s.target.radius;
-          p.tracker.risk.delta = s.target.radius;
-          const SimulationResult r = simulate(s, p);
+          const SimulationResult r = simulate(s, sim_params(policy, strategy, steps, seed, fov, "recursive"));
           const double horizon = static_cast<double>(r.observer.size() - 1) * r.dt;
           escaped += r.escape_time >= 0;
           esc_sum += r.escape_time >= 0 ? r.escape_time : horizon;

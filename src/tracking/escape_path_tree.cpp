@@ -45,7 +45,6 @@ enum Rank : std::uint8_t { Front = 0, Left = 1, Back = 2, Right = 3 };
 
 struct Sweep {
   const LocalMap& map;
-  const Point& o;
   EscapePathTree& tree;
   std::vector<double> best;  // per edge: best SDE so far (+inf)
 
@@ -146,7 +145,7 @@ EscapePathTree escape_path_tree(const LocalMap& map, const Point& t) {
   EscapePathTree tree;
   tree.target = t;
   tree.nodes.push_back(EscapeNode{kNone, kNone, t, 0.0, 0});
-  Sweep s{map, o, tree, std::vector<double>(n, std::numeric_limits<double>::infinity()), {}, {}};
+  Sweep s{map, tree, std::vector<double>(n, std::numeric_limits<double>::infinity()), {}, {}};
   s.index_of.assign(n, kNone);
   for (std::uint32_t e = 0; e < n; ++e)
     if (is_escape(map.edges[e])) {

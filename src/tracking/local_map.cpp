@@ -2,6 +2,8 @@
 #include <preimage/error.hpp>
 #include <preimage/tracking/local_map.hpp>
 
+#include <CGAL/Polygon_2_algorithms.h>
+
 #include <cmath>
 
 namespace preimage::tracking {
@@ -32,27 +34,13 @@ double LocalMap::area() const {
   return a / 2;
 }
 
-namespace {
-// Crossing parity of the ray from p towards +x with the polygon, boundary excluded.
-// Returns -1 if p is on the boundary, else 0/1.
-int parity(const LocalMap& m, const Point& p) {
-  int inside = 0;
-  for (std::size_t i = 0; i < m.size(); ++i) {
-    const Point& a = m.vertices[i];
-    const Point& b = m.vertices[m.next(i)];
-    if (geometry::on_segment(a, b, p)) return -1;
-    // Half-open rule on y decided by exact comparisons; the side by orientation.
-    const bool ay = CGAL::compare_y(a, p) == CGAL::LARGER, by = CGAL::compare_y(b, p) == CGAL::LARGER;
-    if (ay == by) continue;
-    const int o = geometry::orientation(a, b, p);
-    if ((by && o > 0) || (!by && o < 0)) inside ^= 1;
-  }
-  return inside;
+// CGAL's exact point-in-polygon test (Polygon_2 algorithms, LGPL), as Environment uses.
+bool LocalMap::contains(const Point& p) const {
+  return CGAL::bounded_side_2(vertices.begin(), vertices.end(), p, geometry::Kernel()) != CGAL::ON_UNBOUNDED_SIDE;
 }
-}  // namespace
-
-bool LocalMap::contains(const Point& p) const { return parity(*this, p) != 0; }
-bool LocalMap::strictly_contains(const Point& p) const { return parity(*this, p) == 1; }
+bool LocalMap::strictly_contains(const Point& p) const {
+  return CGAL::bounded_side_2(vertices.begin(), vertices.end(), p, geometry::Kernel()) == CGAL::ON_BOUNDED_SIDE;
+}
 
 void LocalMap::validate(const std::string& what) const {
   const std::size_t n = size();

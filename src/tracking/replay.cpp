@@ -77,7 +77,7 @@ ReplayScan replay_scan(const Scan& scan, const TrackerParams& tp, double ahead) 
   r.timestamp = scan.timestamp;
   const auto t0 = std::chrono::steady_clock::now();
   const Detection det = detect_target(scan, tp.detect);
-  const LocalMap map = local_map_from_scan(det.found ? without_target(scan, det) : scan, tp.map);
+  const LocalMap map = local_map_without_target(scan, det, tp.map);
   r.vertices = map.size();
   r.solid = map.count(EdgeKind::Solid);
   r.occlusion = map.count(EdgeKind::Occlusion);

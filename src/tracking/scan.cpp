@@ -72,16 +72,6 @@ const BeamDirections& beam_directions(const Scan& scan) {
   return dirs;
 }
 
-std::vector<Point> scan_points(const Scan& scan, const MapParams& mp) {
-  std::vector<Point> out;
-  for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
-    const double r = scan.ranges[i];
-    if (r > mp.min_range && r < scan.max_range - mp.range_margin)
-      out.emplace_back(r * std::cos(scan.angle(i)), r * std::sin(scan.angle(i)));
-  }
-  return out;
-}
-
 namespace {
 
 // Douglas-Peucker on pts[b..e] (inclusive), appending the kept points after pts[b]. A chord
@@ -200,16 +190,15 @@ LocalMap local_map_from_scan(const Scan& scan, const MapParams& mp) {
     simplify(run, 0, run.size() - 1, mp.simplify, fitted, stack);
     for (auto& q : fitted) B.add(q, EdgeKind::Solid);
   };
-  // Closes V from the last emitted point (at angle a) to the point q at angle b
-  // (index q_index once emitted, or already vertex 0 when closing a full circle).
-  auto bridge = [&](double a, double b, bool out_of_range, bool closing) {
-    const std::uint32_t from = B.last();
-    if (out_of_range) {  // occlusion - range - occlusion
-      B.add(range_point(a), EdgeKind::Occlusion, from);
-      arc(a, b);
-      return std::pair{EdgeKind::Occlusion, closing ? 0u : B.next_index()};
-    }
-    return std::pair{EdgeKind::Occlusion, kNone};  // corner decided by the caller (nearer end)
+  // Leaves the last emitted point radially for the range circle at angle a and follows
+  // the circle to angle b: the first two edges of occlusion-range-occlusion.
+  auto out_to_range = [&](double a, double b) {
+    B.add(range_point(a), EdgeKind::Occlusion, B.last());
+    arc(a, b);
+  };
+  // Across an occlusion gap the corner is the endpoint nearer the observer.
+  auto nearer_of = [&](const Point& p, std::uint32_t p_index, std::uint32_t other) {
+    return CGAL::compare_distance_to_point(m.observer, p, m.vertices[other]) == CGAL::SMALLER ? p_index : other;
   };
 
   constexpr std::size_t kNoReading = static_cast<std::size_t>(-1);
@@ -233,13 +222,12 @@ LocalMap local_map_from_scan(const Scan& scan, const MapParams& mp) {
       run.push_back(p);
     } else {
       flush();
-      const auto [kind, corner] = bridge(angle_at(last_kw), angle_at(kw), saw_invalid, false);
-      std::uint32_t c = corner;
-      if (c == kNone) {
-        const bool p_nearer = CGAL::compare_distance_to_point(m.observer, p, m.vertices[B.last()]) == CGAL::SMALLER;
-        c = p_nearer ? B.next_index() : B.last();
+      if (saw_invalid) {
+        out_to_range(angle_at(last_kw), angle_at(kw));
+        B.add(p, EdgeKind::Occlusion, B.next_index());
+      } else {
+        B.add(p, EdgeKind::Occlusion, nearer_of(p, B.next_index(), B.last()));
       }
-      B.add(p, kind, c);
       run.assign(1, p);
     }
     last_kw = kw;
@@ -252,21 +240,19 @@ LocalMap local_map_from_scan(const Scan& scan, const MapParams& mp) {
       B.add(range_point(angle_at(0)), EdgeKind::FieldOfView);
       arc(angle_at(0), angle_at(n - 1));
     } else if (saw_invalid) {
-      B.add(range_point(angle_at(last_kw)), EdgeKind::Occlusion, B.last());
-      arc(angle_at(last_kw), angle_at(n - 1));
+      out_to_range(angle_at(last_kw), angle_at(n - 1));
     }
     m.edges.push_back(EdgeKind::FieldOfView);
     m.corner.push_back(kNone);
   } else {
     const std::size_t first_i = start % n;
     if (saw_invalid) {
-      bridge(angle_at(last_kw), angle_at(start + n), true, true);
+      out_to_range(angle_at(last_kw), angle_at(start + n));
       m.edges.push_back(EdgeKind::Occlusion);
       m.corner.push_back(0);
     } else if (gap_between(last_kw % n, first_i)) {
-      const bool first_nearer = CGAL::compare_distance_to_point(m.observer, m.vertices[0], m.vertices[B.last()]) == CGAL::SMALLER;
       m.edges.push_back(EdgeKind::Occlusion);
-      m.corner.push_back(first_nearer ? 0 : B.last());
+      m.corner.push_back(nearer_of(m.vertices[0], 0, B.last()));
     } else {
       m.edges.push_back(EdgeKind::Solid);
       m.corner.push_back(kNone);

@@ -148,7 +148,11 @@ SimulationResult simulate(const TrackingScenario& sc, const SimulationParams& sp
   Pose o = sc.observer;
   Point t = sc.target.center;
   const double r = sc.target.radius;
-  const ControlParams& cp = sp.tracker.control;
+  // The tracker knows the target's radius: detection fits it, the risk's delta is it.
+  TrackerParams tp = sp.tracker;
+  tp.detect.radius = r;
+  tp.risk.delta = r;
+  const ControlParams& cp = tp.control;
   const bool cone = sp.laser.fov < 2 * M_PI - 1e-9;
 
   std::vector<Point> plan;  // the target's remaining path
@@ -187,7 +191,7 @@ SimulationResult simulate(const TrackingScenario& sc, const SimulationParams& sp
 
     // --- the observer: TRACK on a scan, or a baseline
     const Scan scan = simulate_scan(env, o, sp.laser, Disc{t, r}, &rng);
-    const TrackStep ts = track(scan, sp.tracker, to_sensor(o, estimate));
+    const TrackStep ts = track(scan, tp, to_sensor(o, estimate));
     out.tracked.push_back(ts.tracked);
     if (ts.detection.found) estimate = to_world(o, ts.detection.center);
     const Point est_s = to_sensor(o, estimate);

@@ -109,6 +109,10 @@ Scan without_target(const Scan& scan, const Detection& d) {
   return s;
 }
 
+LocalMap local_map_without_target(const Scan& scan, const Detection& d, const MapParams& mp) {
+  return local_map_from_scan(d.found ? without_target(scan, d) : scan, mp);
+}
+
 namespace {
 Command clamp(Command c, const ControlParams& p) {
   c.v = std::clamp(c.v, p.reverse ? -p.v_max : 0.0, p.v_max);
@@ -137,7 +141,7 @@ Command naive_command(const Point& target, const ControlParams& p) { return clam
 TrackStep track(const Scan& scan, const TrackerParams& tp, const std::optional<Point>& prior) {
   TrackStep out;
   out.detection = detect_target(scan, tp.detect, prior);
-  out.map = local_map_from_scan(out.detection.found ? without_target(scan, out.detection) : scan, tp.map);
+  out.map = local_map_without_target(scan, out.detection, tp.map);
   if (!out.detection.found || !out.map.strictly_contains(out.detection.center)) return out;
   out.tracked = true;
   out.tree = escape_path_tree(out.map, out.detection.center);

@@ -57,4 +57,13 @@ std::vector<double> brute_force_sde(const tracking::LocalMap& map, const Point& 
   return out;
 }
 
+Point random_free_point(const geometry::Environment& env, std::mt19937_64& rng) {
+  const auto box = env.bbox();
+  std::uniform_real_distribution<double> X(box.xmin(), box.xmax()), Y(box.ymin(), box.ymax());
+  for (;;) {
+    const Point p(X(rng), Y(rng));
+    if (geometry::locate(env, p).kind == geometry::Location::Kind::Interior) return p;
+  }
+}
+
 }  // namespace preimage::testing

@@ -32,15 +32,6 @@ Point random_inside(const LocalMap& map, std::mt19937_64& rng) {
   }
 }
 
-Point random_free(const geometry::Environment& env, std::mt19937_64& rng) {
-  const auto box = env.bbox();
-  std::uniform_real_distribution<double> X(box.xmin(), box.xmax()), Y(box.ymin(), box.ymax());
-  for (;;) {
-    Point p(X(rng), Y(rng));
-    if (geometry::locate(env, p).kind == geometry::Location::Kind::Interior) return p;
-  }
-}
-
 }  // namespace
 
 TEST(EscapePathTree, EverySepMatchesBruteForceOnRandomEnvironments) {
@@ -50,7 +41,7 @@ TEST(EscapePathTree, EverySepMatchesBruteForceOnRandomEnvironments) {
     const auto env = geometry::generators::random_environment(30 + seed % 20, seed % 4, seed);
     const geometry::VisibilityIndex index(env);
     for (int trial = 0; trial < 5; ++trial) {
-      const Point o = random_free(env, rng);
+      const Point o = preimage::testing::random_free_point(env, rng);
       const LocalMap map = local_map_from_visibility(index.compute(o));
       const Point t = random_inside(map, rng);
       const EscapePathTree tree = escape_path_tree(map, t);

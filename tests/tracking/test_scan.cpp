@@ -18,15 +18,6 @@ using geometry::Point;
 
 namespace {
 
-Point random_free(const geometry::Environment& env, std::mt19937_64& rng) {
-  const auto box = env.bbox();
-  std::uniform_real_distribution<double> X(box.xmin(), box.xmax()), Y(box.ymin(), box.ymax());
-  for (;;) {
-    Point p(X(rng), Y(rng));
-    if (geometry::locate(env, p).kind == geometry::Location::Kind::Interior) return p;
-  }
-}
-
 // The scan map, moved into the world frame (heading 0: a translation).
 LocalMap to_world(LocalMap m, const Point& o) {
   for (auto& p : m.vertices) p = Point(p.x() + o.x(), p.y() + o.y());
@@ -44,7 +35,7 @@ TEST(ScanMap, MatchesTheExactVisibilityPolygon) {
   const geometry::VisibilityIndex index(env);
   int corners = 0, sde_checked = 0;
   for (int trial = 0; trial < 30; ++trial) {
-    const Point o = random_free(env, rng);
+    const Point o = preimage::testing::random_free_point(env, rng);
     const LocalMap exact = local_map_from_visibility(index.compute(o));
     LaserSpec spec;
     spec.beams = 7200;
@@ -71,7 +62,7 @@ TEST(ScanMap, MatchesTheExactVisibilityPolygon) {
     }
     // A target inside both maps.
     for (int tries = 0; tries < 50; ++tries) {
-      const Point t = random_free(env, rng);
+      const Point t = preimage::testing::random_free_point(env, rng);
       if (!exact.strictly_contains(t) || !local.strictly_contains(t)) continue;
       const double a = escape_path_tree(exact, t).sde(), b = escape_path_tree(local, t).sde();
       if (std::isfinite(a)) {
@@ -94,7 +85,7 @@ TEST(ScanMap, ConeMapsGiveBruteForceEscapePaths) {
     const auto env = geometry::generators::random_environment(40, 3, seed);
     const auto box = env.bbox();
     for (int trial = 0; trial < 4; ++trial) {
-      const Point o = random_free(env, rng);
+      const Point o = preimage::testing::random_free_point(env, rng);
       std::uniform_real_distribution<double> H(-M_PI, M_PI);
       LaserSpec spec;
       spec.fov = M_PI;

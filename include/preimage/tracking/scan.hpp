@@ -72,7 +72,4 @@ LocalMap local_map_from_scan(const Scan& scan, const MapParams& params = {});
 struct BeamDirections { std::vector<double> cos, sin; };
 const BeamDirections& beam_directions(const Scan& scan);
 
-/// The points of the valid readings, in beam order (sensor frame).
-std::vector<Point> scan_points(const Scan& scan, const MapParams& params = {});
-
 }  // namespace preimage::tracking

@@ -40,7 +40,7 @@ struct SimulationParams {
   double speed_ratio = 0.5;      // adversarial target speed / observer v_max
   std::uint64_t seed = 1;
   LaserSpec laser{2 * M_PI, 360, 8.0, 0.01};
-  TrackerParams tracker;
+  TrackerParams tracker;         // its detection radius and risk delta come from the scenario's target
   bool stop_at_escape = false;
 };
 

@@ -32,6 +32,9 @@ Detection detect_target(const Scan& scan, const DetectParams& params, const std:
 /// The scan with the target's readings replaced as if it were not there, interpolating
 /// the background across its shadow: the paper assumes no obstacle lies in the shadow.
 Scan without_target(const Scan& scan, const Detection& detection);
+/// V(q^o) from the scan with the detected target's shadow filled (the scan as is if the
+/// target was not found).
+LocalMap local_map_without_target(const Scan& scan, const Detection& detection, const MapParams& params);
 
 struct ControlParams {
   double k_v = 1.0, k_omega = 1.5;      // equation (6)
