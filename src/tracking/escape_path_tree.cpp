@@ -81,8 +81,8 @@ struct Sweep {
 
   // Nearest point of segment [a, b] to w, as a point and as "which": 0 a, 1 b, 2 interior.
   static int nearest_kind(const Point& a, const Point& b, const Point& w) {
-    if (CGAL::angle(a, b, a, w) != CGAL::ACUTE) return 0;
-    if (CGAL::angle(b, a, b, w) != CGAL::ACUTE) return 1;
+    if (geometry::dot_sign(a, b, a, w) <= 0) return 0;
+    if (geometry::dot_sign(b, a, b, w) <= 0) return 1;
     return 2;
   }
   static Point foot(const Point& a, const Point& b, const Point& w) {
@@ -108,12 +108,15 @@ struct Sweep {
       const int kind = nearest_kind(a, b, w);
       int turn;  // sign of cross(q - w, nxt - w)
       if (kind < 2) {
-        turn = geometry::orientation(w, kind == 0 ? a : b, nxt);
+        // nxt is often that very endpoint (the corner pushed last): skip the predicate,
+        // whose filters cannot certify a zero determinant and fall back to exact arithmetic.
+        const Point& end = kind == 0 ? a : b;
+        turn = end == nxt ? 0 : geometry::orientation(w, end, nxt);
       } else {
         // q - w is the normal of ab pointing from w to the line: cross(sigma perp(d), v)
         // = -sigma dot(d, v), with sigma = +1 when w is right of a -> b.
         const int sigma = -geometry::orientation(a, b, w);
-        const int dot = static_cast<int>(CGAL::angle(a, b, w, nxt));  // sign of dot(b - a, nxt - w)
+        const int dot = geometry::dot_sign(a, b, w, nxt);
         turn = -sigma * dot;
       }
       if (side * turn > 0) break;  // blocked
@@ -158,7 +161,7 @@ EscapePathTree escape_path_tree(const LocalMap& map, const Point& t) {
   for (std::size_t i = 0; i < n; ++i) {
     if (i == map.observer_vertex) continue;
     const int side = geometry::orientation(o, t, map.vertices[i]);
-    rank[i] = side > 0 ? Left : side < 0 ? Right : CGAL::angle(o, t, o, map.vertices[i]) == CGAL::ACUTE ? Front : Back;
+    rank[i] = side > 0 ? Left : side < 0 ? Right : geometry::dot_sign(o, t, o, map.vertices[i]) > 0 ? Front : Back;
   }
   // Start of the counter-clockwise order at the ray: after the observer (cone), or at the
   // first Front/Left vertex that follows a Back/Right one (360 deg).

@@ -52,26 +52,34 @@ void LocalMap::validate(const std::string& what) const {
   for (std::size_t i = 0; i < n; ++i)
     if (!std::isfinite(vertices[i].x()) || !std::isfinite(vertices[i].y()))
       throw InputError(what + ": vertex " + std::to_string(i) + " is not finite");
+  // The message is built only on failure: validate runs once per scan in TRACK.
+  auto edge_name = [&](std::size_t i, std::size_t j) {
+    return std::string(what).append(": edge ").append(std::to_string(i)).append(" (vertices ").append(std::to_string(i))
+        .append("-").append(std::to_string(j)).append(")");
+  };
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t j = next(i);
-    const std::string name = what + ": edge " + std::to_string(i) + " (vertices " + std::to_string(i) + "-" + std::to_string(j) + ")";
-    if (vertices[i] == vertices[j]) throw InputError(name + " has zero length");
+    if (vertices[i] == vertices[j]) throw InputError(edge_name(i, j) + " has zero length");
     if (edges[i] == EdgeKind::Occlusion) {
-      if (corner[i] != i && corner[i] != j) throw InputError(name + ": an occlusion edge needs its corner at one of its endpoints");
+      if (corner[i] != i && corner[i] != j)
+        throw InputError(edge_name(i, j) + ": an occlusion edge needs its corner at one of its endpoints");
     } else if (corner[i] != kNone) {
-      throw InputError(name + ": only occlusion edges have a corner");
+      throw InputError(edge_name(i, j) + ": only occlusion edges have a corner");
     }
     const bool at_observer = i == observer_vertex || j == observer_vertex;
     if (at_observer) {
-      if (edges[i] != EdgeKind::FieldOfView) throw InputError(name + ": edges at the observer must be field-of-view bounds");
+      if (edges[i] != EdgeKind::FieldOfView)
+        throw InputError(edge_name(i, j) + ": edges at the observer must be field-of-view bounds");
       continue;
     }
-    if (edges[i] == EdgeKind::FieldOfView) throw InputError(name + ": a field-of-view bound must end at the observer");
+    if (edges[i] == EdgeKind::FieldOfView) throw InputError(edge_name(i, j) + ": a field-of-view bound must end at the observer");
     // Angular order about the observer: no edge may turn clockwise (the sweep needs V
     // star-shaped, so that the line through the target crosses it once).
-    if (geometry::orientation(observer, vertices[i], vertices[j]) < 0)
-      throw InputError(name + " turns clockwise about the observer: vertices are not in counter-clockwise angular order");
-    if (geometry::on_segment(vertices[i], vertices[j], observer)) throw InputError(name + " passes through the observer");
+    const int turn = geometry::orientation(observer, vertices[i], vertices[j]);
+    if (turn < 0)
+      throw InputError(edge_name(i, j) + " turns clockwise about the observer: vertices are not in counter-clockwise angular order");
+    if (turn == 0 && geometry::on_segment(vertices[i], vertices[j], observer))
+      throw InputError(edge_name(i, j) + " passes through the observer");
   }
   if (observer_vertex == kNone) {
     if (!strictly_contains(observer)) throw InputError(what + ": the observer is not inside its visibility polygon");

@@ -3,7 +3,10 @@
 #include <preimage/geometry/queries.hpp>
 #include <preimage/tracking/scan.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <string>
 
 namespace preimage::tracking {
@@ -74,30 +77,85 @@ const BeamDirections& beam_directions(const Scan& scan) {
 
 namespace {
 
-// Douglas-Peucker on pts[b..e] (inclusive), appending the kept points after pts[b]. A chord
-// is also split when it spans a quarter turn or more about the sensor, so every fitted
-// edge turns counter-clockwise about the observer.
-void simplify(const std::vector<Point>& pts, std::size_t b, std::size_t e, double tol, std::vector<Point>& out,
-              std::vector<std::size_t>& stack) {
+// The beams of one scan as plain arrays, indexed in walk order: a full circle is walked
+// from `start` for n beams, so the arrays hold 2n entries (beam k mod n at k) and every
+// run of successive readings is contiguous.
+struct ScanPoints {
+  std::vector<double> x, y;
+  std::vector<char> valid;
+  std::vector<char> brk;  // brk[k]: the readings k-1 and k are not neighbours on one polyline
+};
+
+// The point of (lo, hi) farthest from the line through lo and hi if its distance, times
+// the chord length, exceeds `above`; else lo. Squared distances (same argmax), four at a
+// time in two SSE2 lane pairs (GCC vector extensions) so that no single max chain limits
+// the loop; ties go to the lower index, as a plain scalar loop would.
+std::size_t farthest_from_chord(const double* xs, const double* ys, std::size_t lo, std::size_t hi, double above) {
+  const double ax = xs[lo], ay = ys[lo], dx = xs[hi] - ax, dy = ys[hi] - ay;
+  double best = above * above;
+  std::size_t worst = lo, i = lo + 1;
+  using v2d = double __attribute__((vector_size(16)));
+  using v2i = std::int64_t __attribute__((vector_size(16)));
+  if (hi - i >= 8) {
+    v2d w0 = {best, best}, w1 = w0;
+    v2i at0 = {0, 0}, at1 = at0;
+    const v2i step = {4, 4};
+    v2i idx0 = {static_cast<std::int64_t>(i), static_cast<std::int64_t>(i + 1)}, idx1 = idx0 + 2;
+    auto sq = [&](std::size_t j) {
+      v2d px, py;
+      std::memcpy(&px, xs + j, sizeof px);
+      std::memcpy(&py, ys + j, sizeof py);
+      const v2d c = dx * (py - ay) - dy * (px - ax);
+      return c * c;
+    };
+    for (; i + 4 <= hi; i += 4) {
+      const v2d d0 = sq(i), d1 = sq(i + 2);
+      const v2i g0 = d0 > w0, g1 = d1 > w1;  // strictly greater: a lane keeps its earliest maximum
+      w0 = g0 ? d0 : w0;
+      w1 = g1 ? d1 : w1;
+      at0 = g0 ? idx0 : at0;
+      at1 = g1 ? idx1 : at1;
+      idx0 += step;
+      idx1 += step;
+    }
+    const double lane_w[4] = {w0[0], w0[1], w1[0], w1[1]};
+    const std::int64_t lane_at[4] = {at0[0], at0[1], at1[0], at1[1]};
+    const double floor = best;
+    for (int l = 0; l < 4; ++l) {
+      const auto j = static_cast<std::size_t>(lane_at[l]);
+      if (lane_w[l] > best || (lane_w[l] == best && lane_w[l] > floor && j < worst)) {
+        best = lane_w[l];
+        worst = j;
+      }
+    }
+  }
+  for (; i < hi; ++i) {
+    const double c = dx * (ys[i] - ay) - dy * (xs[i] - ax), d = c * c;
+    if (d > best) { best = d; worst = i; }
+  }
+  return worst;
+}
+
+// Douglas-Peucker on the readings b..e (walk indices, inclusive), appending the kept
+// indices after b. They are successive beams, so a chord from lo to hi spans (hi - lo)
+// beam increments about the sensor; a chord of `max_span` beams or more is split too, so
+// that every fitted edge stays well under a half turn and turns counter-clockwise about
+// the observer (which LocalMap::validate then checks exactly).
+void simplify(const ScanPoints& P, std::size_t b, std::size_t e, double tol, std::size_t max_span,
+              std::vector<std::size_t>& out, std::vector<std::size_t>& stack) {
   stack.clear();
   stack.push_back(e);
   std::size_t lo = b;
-  const Point origin(0, 0);
   while (!stack.empty()) {
     const std::size_t hi = stack.back();
     std::size_t worst = lo;
     if (hi > lo + 1) {
-      const double ax = pts[lo].x(), ay = pts[lo].y();
-      const double dx = pts[hi].x() - ax, dy = pts[hi].y() - ay, len = std::hypot(dx, dy);
-      double wd = tol * len;
-      for (std::size_t i = lo + 1; i < hi; ++i) {
-        const double d = std::abs(dx * (pts[i].y() - ay) - dy * (pts[i].x() - ax));
-        if (d > wd) { wd = d; worst = i; }
-      }
-      if (worst == lo && (CGAL::angle(origin, pts[lo], origin, pts[hi]) != CGAL::ACUTE)) worst = (lo + hi) / 2;
+      const double dx = P.x[hi] - P.x[lo], dy = P.y[hi] - P.y[lo];
+      worst = farthest_from_chord(P.x.data(), P.y.data(), lo, hi, tol * std::sqrt(dx * dx + dy * dy));
+      if (worst == lo && hi - lo >= max_span) worst = (lo + hi) / 2;
     }
     if (worst == lo) {
-      out.push_back(pts[hi]);
+      out.push_back(hi);
       lo = hi;
       stack.pop_back();
     } else {
@@ -126,25 +184,42 @@ LocalMap local_map_from_scan(const Scan& scan, const MapParams& mp) {
   const std::size_t n = scan.ranges.size();
   const bool full = scan.full_circle();
   const double R = scan.max_range;
-  thread_local std::vector<char> valid;
-  thread_local std::vector<Point> pts;
-  valid.assign(n, 0);
-  pts.assign(n, Point(0, 0));
+  const double lo_r = mp.min_range, hi_r = R - mp.range_margin;
+  const double two_inc = 2 * scan.angle_increment;
   const BeamDirections& dir = beam_directions(scan);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double r = scan.ranges[i];
-    valid[i] = r > mp.min_range && r < R - mp.range_margin;
-    if (valid[i]) pts[i] = Point(r * dir.cos[i], r * dir.sin[i]);
+
+  // Points, validity and breaks in beam order. A break between beams k-1 and k: either is
+  // out of range, or an occlusion gap (further apart than gap + 2 r dtheta).
+  thread_local ScanPoints P;
+  P.x.resize(2 * n);
+  P.y.resize(2 * n);
+  P.valid.resize(2 * n);
+  P.brk.resize(2 * n + 1);
+  {  // raw pointers: stores through char would otherwise make the compiler reload every
+     // vector's data pointer on each beam
+    const double *r = scan.ranges.data(), *cs = dir.cos.data(), *sn = dir.sin.data();
+    double *x = P.x.data(), *y = P.y.data();
+    char *valid = P.valid.data(), *brk = P.brk.data();
+    for (std::size_t k = 0; k < n; ++k) {
+      valid[k] = r[k] > lo_r && r[k] < hi_r;
+      x[k] = r[k] * cs[k];
+      y[k] = r[k] * sn[k];
+    }
+    auto gap = [&](std::size_t a, std::size_t b) {  // beams a, b both valid
+      const double thr = mp.gap + two_inc * std::max(r[a], r[b]);
+      const double dx = x[a] - x[b], dy = y[a] - y[b];
+      return dx * dx + dy * dy > thr * thr;
+    };
+    brk[0] = 1;
+    for (std::size_t k = 1; k < n; ++k) brk[k] = !valid[k - 1] || !valid[k] || gap(k - 1, k);
+    brk[n] = !full || !valid[n - 1] || !valid[0] || gap(n - 1, 0);  // across the seam
   }
-  // A break between beam i-1 and i: an out-of-range reading, or an occlusion gap.
-  auto gap_between = [&](std::size_t a, std::size_t b) {
-    const double r = std::max(scan.ranges[a], scan.ranges[b]);
-    const double thr = mp.gap + 2 * r * scan.angle_increment;
-    return CGAL::squared_distance(pts[a], pts[b]) > thr * thr;
-  };
 
   LocalMap m;
   m.observer = Point(0, 0);
+  m.vertices.reserve(n / 2 + 16);  // one allocation per array in the common case
+  m.edges.reserve(n / 2 + 16);
+  m.corner.reserve(n / 2 + 16);
   Builder B{m};
   auto range_point = [&](double a) { return Point(R * std::cos(a), R * std::sin(a)); };
   // The range arc from angle a to b (a < b, unwrapped), after range_point(a) was added.
@@ -153,18 +228,16 @@ LocalMap local_map_from_scan(const Scan& scan, const MapParams& mp) {
     for (int j = 1; j <= k; ++j) B.add(range_point(a + (b - a) * j / k), EdgeKind::Range);
   };
 
-  // Beam order to walk: a cone from its first beam; a full circle from the first beam
-  // that starts a run (after an out-of-range reading or a gap), so runs do not wrap.
+  // Where to start walking: a cone at its first beam; a full circle at the first valid
+  // beam that follows a break, so that no run wraps past the end of the walk.
   std::size_t start = 0;
   if (full) {
     start = n;
-    for (std::size_t i = 0; i < n && start == n; ++i) {
-      const std::size_t p = (i + n - 1) % n;
-      if (valid[i] && (!valid[p] || gap_between(p, i))) start = i;
-    }
+    for (std::size_t k = 0; k < n && start == n; ++k)
+      if (P.valid[k] && P.brk[k == 0 ? n : k]) start = k;
     if (start == n) {
       bool any = false;
-      for (auto v : valid) any = any || v;
+      for (std::size_t k = 0; k < n; ++k) any = any || P.valid[k];
       if (!any) {  // nothing in range all round: V is the range disc
         for (std::size_t i = 0; i < n; ++i) B.add(range_point(scan.angle(i)), EdgeKind::Range);
         m.edges.push_back(EdgeKind::Range);
@@ -175,20 +248,26 @@ LocalMap local_map_from_scan(const Scan& scan, const MapParams& mp) {
       }
       start = 0;  // one closed run all round
     }
+    // Walk indices n .. start+n-1 are beams 0 .. start-1 again.
+    std::copy_n(P.x.begin(), start, P.x.begin() + static_cast<std::ptrdiff_t>(n));
+    std::copy_n(P.y.begin(), start, P.y.begin() + static_cast<std::ptrdiff_t>(n));
+    std::copy_n(P.valid.begin(), start, P.valid.begin() + static_cast<std::ptrdiff_t>(n));
+    std::copy_n(P.brk.begin() + 1, start, P.brk.begin() + static_cast<std::ptrdiff_t>(n + 1));
   } else {
     B.add(m.observer, EdgeKind::FieldOfView);
     m.observer_vertex = 0;
   }
 
-  std::vector<Point> run, fitted;
-  std::vector<std::size_t> stack;
+  thread_local std::vector<std::size_t> fitted, stack;
+  const auto quarter_turn = static_cast<std::size_t>(std::max(2.0, std::floor(M_PI / 2 / scan.angle_increment)));
   auto angle_at = [&](std::size_t kw) { return scan.angle_min + static_cast<double>(kw) * scan.angle_increment; };
-  // Emits the fitted polyline of the current run (its first point is already emitted).
-  auto flush = [&]() {
-    if (run.size() < 2) return;
+  auto point = [&](std::size_t kw) { return Point(P.x[kw], P.y[kw]); };
+  // Emits the fitted polyline of the run b..e (its first point is already emitted).
+  auto flush = [&](std::size_t b, std::size_t e) {
+    if (e == b) return;
     fitted.clear();
-    simplify(run, 0, run.size() - 1, mp.simplify, fitted, stack);
-    for (auto& q : fitted) B.add(q, EdgeKind::Solid);
+    simplify(P, b, e, mp.simplify, quarter_turn, fitted, stack);
+    for (auto kw : fitted) B.add(point(kw), EdgeKind::Solid);
   };
   // Leaves the last emitted point radially for the range circle at angle a and follows
   // the circle to angle b: the first two edges of occlusion-range-occlusion.
@@ -202,14 +281,14 @@ LocalMap local_map_from_scan(const Scan& scan, const MapParams& mp) {
   };
 
   constexpr std::size_t kNoReading = static_cast<std::size_t>(-1);
-  std::size_t last_kw = kNoReading;  // walk index of the last valid reading
+  std::size_t last = kNoReading, run = 0;  // walk index of the last valid reading; its run's first
   bool saw_invalid = false;
-  for (std::size_t k = 0; k < n; ++k) {
-    const std::size_t i = (start + k) % n;
-    const std::size_t kw = start + k;  // unwrapped: angles keep increasing
-    if (!valid[i]) { saw_invalid = true; continue; }
-    const Point& p = pts[i];
-    if (last_kw == kNoReading) {  // first valid reading
+  const char *valid = P.valid.data(), *brk = P.brk.data();
+  for (std::size_t kw = start; kw < start + n; ++kw) {
+    if (!valid[kw]) { saw_invalid = true; continue; }
+    if (last != kNoReading && !brk[kw]) { last = kw; continue; }  // the run goes on (the common case)
+    const Point p = point(kw);
+    if (last == kNoReading) {  // first valid reading
       if (!full && saw_invalid) {
         B.add(range_point(angle_at(0)), EdgeKind::FieldOfView);
         arc(angle_at(0), angle_at(kw));
@@ -217,46 +296,39 @@ LocalMap local_map_from_scan(const Scan& scan, const MapParams& mp) {
       } else {
         B.add(p, EdgeKind::FieldOfView);  // (full circle: the first vertex; no edge yet)
       }
-      run.assign(1, p);
-    } else if (!saw_invalid && !gap_between(last_kw % n, i)) {
-      run.push_back(p);
     } else {
-      flush();
+      flush(run, last);
       if (saw_invalid) {
-        out_to_range(angle_at(last_kw), angle_at(kw));
+        out_to_range(angle_at(last), angle_at(kw));
         B.add(p, EdgeKind::Occlusion, B.next_index());
       } else {
         B.add(p, EdgeKind::Occlusion, nearer_of(p, B.next_index(), B.last()));
       }
-      run.assign(1, p);
     }
-    last_kw = kw;
+    run = last = kw;
     saw_invalid = false;
   }
-  flush();
+  if (last != kNoReading) flush(run, last);
   // Close the polygon.
   if (!full) {
-    if (last_kw == kNoReading) {  // nothing in range
+    if (last == kNoReading) {  // nothing in range
       B.add(range_point(angle_at(0)), EdgeKind::FieldOfView);
       arc(angle_at(0), angle_at(n - 1));
     } else if (saw_invalid) {
-      out_to_range(angle_at(last_kw), angle_at(n - 1));
+      out_to_range(angle_at(last), angle_at(n - 1));
     }
     m.edges.push_back(EdgeKind::FieldOfView);
     m.corner.push_back(kNone);
+  } else if (saw_invalid) {
+    out_to_range(angle_at(last), angle_at(start + n));
+    m.edges.push_back(EdgeKind::Occlusion);
+    m.corner.push_back(0);
+  } else if (P.brk[start == 0 ? n : start]) {  // the seam between the last reading and the first
+    m.edges.push_back(EdgeKind::Occlusion);
+    m.corner.push_back(nearer_of(m.vertices[0], 0, B.last()));
   } else {
-    const std::size_t first_i = start % n;
-    if (saw_invalid) {
-      out_to_range(angle_at(last_kw), angle_at(start + n));
-      m.edges.push_back(EdgeKind::Occlusion);
-      m.corner.push_back(0);
-    } else if (gap_between(last_kw % n, first_i)) {
-      m.edges.push_back(EdgeKind::Occlusion);
-      m.corner.push_back(nearer_of(m.vertices[0], 0, B.last()));
-    } else {
-      m.edges.push_back(EdgeKind::Solid);
-      m.corner.push_back(kNone);
-    }
+    m.edges.push_back(EdgeKind::Solid);
+    m.corner.push_back(kNone);
   }
   straighten_occlusion_edges(m);
   m.validate("scan map");

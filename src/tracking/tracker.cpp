@@ -32,7 +32,9 @@ bool fit_circle(const std::vector<Vec2>& pts, double r, Vec2& c, double& rms) {
     }
     const double det = a11 * a22 - a12 * a12;
     if (std::abs(det) < 1e-18) break;
-    c = c + Vec2{(a22 * b1 - a12 * b2) / det, (a11 * b2 - a12 * b1) / det};
+    const Vec2 step{(a22 * b1 - a12 * b2) / det, (a11 * b2 - a12 * b1) / det};
+    c = c + step;
+    if (step.dot(step) < 1e-18) break;  // converged to a nanometre
   }
   double ss = 0;
   for (auto& p : pts) ss += ((c - p).norm() - r) * ((c - p).norm() - r);
@@ -49,13 +51,20 @@ Detection detect_target(const Scan& scan, const DetectParams& dp, const std::opt
   auto valid = [&](std::size_t i) { return scan.ranges[i] > 0.01 && scan.ranges[i] < scan.max_range - margin; };
   const BeamDirections& dir = beam_directions(scan);
   auto point = [&](std::size_t i) { return Vec2{scan.ranges[i] * dir.cos[i], scan.ranges[i] * dir.sin[i]}; };
-  std::vector<Vec2> cluster;
+  thread_local std::vector<Vec2> cluster;
   double best_score = 1e300;
+  const double jump2 = dp.jump * dp.jump;
   std::size_t i = 0;
   while (i < n) {
     if (!valid(i)) { ++i; continue; }
     std::size_t j = i;
-    while (j + 1 < n && valid(j + 1) && (point(j + 1) - point(j)).norm() <= dp.jump) ++j;
+    Vec2 pj = point(j);
+    while (j + 1 < n && valid(j + 1)) {
+      const Vec2 q = point(j + 1), d = q - pj;
+      if (d.dot(d) > jump2) break;
+      pj = q;
+      ++j;
+    }
     const std::size_t a = i, b = j;
     i = j + 1;
     if (b - a + 1 < dp.min_points) continue;
@@ -66,6 +75,10 @@ Detection detect_target(const Scan& scan, const DetectParams& dp, const std::opt
     const bool left_ok = a == 0 || !valid(a - 1) || scan.ranges[a - 1] > near + 0.5 * dp.radius;
     const bool right_ok = b + 1 == n || !valid(b + 1) || scan.ranges[b + 1] > near + 0.5 * dp.radius;
     if (!left_ok || !right_ok) continue;
+    // With a prior, skip clusters whose fit could not pass the gate: a fit with rms <=
+    // max_rms has every point within r + sqrt(N) max_rms of its centre.
+    const double reach = dp.radius + std::sqrt(static_cast<double>(b - a + 1)) * dp.max_rms;
+    if (prior && (point(a) - vec(*prior)).norm() > dp.gate + reach) continue;
     cluster.clear();
     for (std::size_t k = a; k <= b; ++k) cluster.push_back(point(k));
     Vec2 c;

@@ -10,6 +10,8 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <string>
 
@@ -30,6 +32,26 @@ inline int orientation(const Point& a, const Point& b, const Point& c) {
 inline int orientation(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c) {
   return static_cast<int>(CGAL::orientation(a, b, c));
 }
+
+/// Sign of the dot product (b - a) . (d - c): +1 acute, 0 right angle, -1 obtuse — exactly
+/// CGAL::angle(a, b, c, d). Epick filters Angle_2 only dynamically (an interval evaluation
+/// with a rounding-mode switch per call, several times an orientation test); this puts in
+/// front the semi-static filter of CGAL's own Angle_3 (same expression shape: differences
+/// of doubles, products, a sum; same error bound and under/overflow guards) and falls back
+/// to CGAL::angle whenever the double sign is not certain. Hot in the escape-path sweep.
+inline int dot_sign(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const double ux = b.x() - a.x(), uy = b.y() - a.y(), vx = d.x() - c.x(), vy = d.y() - c.y();
+  const double mu = std::max(std::abs(ux), std::abs(uy)), mv = std::max(std::abs(vx), std::abs(vy));
+  if (mu == 0 || mv == 0) return 0;  // a zero vector (a difference of doubles is 0 only for equal doubles)
+  if (std::min(mu, mv) > 1e-146 && std::max(mu, mv) < 7e153) {  // thresholds of Static_filters/Angle_3.h
+    const double s = ux * vx + uy * vy, eps = 1.6e-15 * mu * mv;
+    if (s > eps) return 1;
+    if (s < -eps) return -1;
+  }
+  return static_cast<int>(CGAL::angle(a, b, c, d));
+}
+/// Sign of (p - q) . (r - q), the angle at q: CGAL::angle(p, q, r), filtered as dot_sign.
+inline int angle_sign(const Point& p, const Point& q, const Point& r) { return dot_sign(q, p, q, r); }
 
 /// Which half-turn around c the direction c -> q lies in: 0 for angles [0, pi) from
 /// east, 1 for [pi, 2 pi). Predicates only (p.x() of a lazy point builds a DAG node).

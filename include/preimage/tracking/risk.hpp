@@ -33,7 +33,8 @@ struct Vec2 {
   Vec2 operator*(double k) const { return {x * k, y * k}; }
   double dot(Vec2 o) const { return x * o.x + y * o.y; }
   double cross(Vec2 o) const { return x * o.y - y * o.x; }
-  double norm() const { return std::hypot(x, y); }
+  // sqrt, not hypot: lengths here are metres, far from overflow, and hypot is ~10x slower.
+  double norm() const { return std::sqrt(x * x + y * y); }
 };
 inline Vec2 vec(const Point& p) { return {p.x(), p.y()}; }
 

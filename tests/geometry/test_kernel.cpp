@@ -1,0 +1,61 @@
+// The filtered predicates of kernel.hpp against exact rational evaluation.
+#include <gtest/gtest.h>
+#include <preimage/geometry/kernel.hpp>
+
+#include <random>
+
+using namespace preimage::geometry;
+
+namespace {
+
+int exact_dot_sign(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const ExactPoint A = to_exact(a), B = to_exact(b), C = to_exact(c), D = to_exact(d);
+  return static_cast<int>(CGAL::sign((B - A) * (D - C)));
+}
+
+}  // namespace
+
+// Random directions are decided by the double filter; perpendicular ones built from
+// integers are exactly 0; perpendicular ones built from rounded decimals are within a few
+// ulps of 0 either way, where only the exact fallback can tell. Scales near the filter's
+// underflow and overflow guards are covered too.
+TEST(DotSign, AgreesWithExactArithmeticIncludingNearRightAngles) {
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> u(-100, 100);
+  std::uniform_int_distribution<int> k(-50, 50);
+  int signs[3] = {0, 0, 0};
+  auto check = [&](const Point& a, const Point& b, const Point& c, const Point& d) {
+    const int want = exact_dot_sign(a, b, c, d);
+    ASSERT_EQ(dot_sign(a, b, c, d), want) << format_point(a) << format_point(b) << format_point(c) << format_point(d);
+    ASSERT_EQ(dot_sign(a, b, c, d), static_cast<int>(CGAL::angle(a, b, c, d)));
+    ++signs[want + 1];
+  };
+  for (int i = 0; i < 20000; ++i) {
+    const Point a(u(rng), u(rng)), c(u(rng), u(rng));
+    check(a, Point(u(rng), u(rng)), c, Point(u(rng), u(rng)));
+    // Exactly perpendicular: integer directions and offsets.
+    const int x = k(rng), y = k(rng), s = k(rng);
+    const Point ai(k(rng), k(rng)), ci(k(rng), k(rng));
+    check(ai, Point(ai.x() + x, ai.y() + y), ci, Point(ci.x() - s * y, ci.y() + s * x));
+    // Nearly perpendicular: the same directions from decimal (rounded) base points.
+    const double f = 0.1 * (1 + i % 7);
+    check(a, Point(a.x() + f * x, a.y() + f * y), c, Point(c.x() - f * y, c.y() + f * x));
+    // Tiny and huge scales (the filter's guards hand these to CGAL).
+    for (double scale : {1e-150, 1e-140, 1e150, 1e160}) {
+      const Point z(0, 0);
+      check(z, Point(scale * x, scale * y), z, Point(-scale * y + scale * 1e-3, scale * x));
+    }
+  }
+  EXPECT_GT(signs[0], 1000);
+  EXPECT_GT(signs[1], 1000);  // exact right angles
+  EXPECT_GT(signs[2], 1000);
+}
+
+TEST(AngleSign, IsTheAngleAtTheMiddlePoint) {
+  const Point q(1, 1);
+  EXPECT_EQ(angle_sign(Point(2, 1), q, Point(2, 2)), 1);
+  EXPECT_EQ(angle_sign(Point(2, 1), q, Point(1, 5)), 0);
+  EXPECT_EQ(angle_sign(Point(2, 1), q, Point(0, 2)), -1);
+  EXPECT_EQ(angle_sign(Point(0.1, 0.7), Point(0.3, 0.2), Point(0.7, 0.1)),
+            static_cast<int>(CGAL::angle(Point(0.1, 0.7), Point(0.3, 0.2), Point(0.7, 0.1))));
+}
