@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <string>
 
 namespace preimage::tracking {
@@ -16,6 +17,14 @@ bool Scan::full_circle() const {
 }
 
 void Scan::validate(const std::string& what) const {
+  validate_layout(what);
+  for (std::size_t i = 0; i < ranges.size(); ++i)
+    if (!std::isfinite(ranges[i]) || ranges[i] < 0)
+      throw InputError(what + ": reading " + std::to_string(i) + " is " + std::to_string(ranges[i]) +
+                       " (ranges must be finite and non-negative)");
+}
+
+void Scan::validate_layout(const std::string& what) const {
   if (ranges.size() < 2) throw InputError(what + ": a scan needs at least 2 readings, got " + std::to_string(ranges.size()));
   if (!(angle_increment > 0) || !std::isfinite(angle_min))
     throw InputError(what + ": angle_increment must be positive and angle_min finite");
@@ -24,10 +33,6 @@ void Scan::validate(const std::string& what) const {
   if (!full_circle() && span > M_PI * (1 + 1e-12))
     throw InputError(what + ": the beams span " + std::to_string(span * 180 / M_PI) +
                      " deg; only cones up to 180 deg or a full 360 deg are supported");
-  for (std::size_t i = 0; i < ranges.size(); ++i)
-    if (!std::isfinite(ranges[i]) || ranges[i] < 0)
-      throw InputError(what + ": reading " + std::to_string(i) + " is " + std::to_string(ranges[i]) +
-                       " (ranges must be finite and non-negative)");
 }
 
 Scan simulate_scan(const geometry::Environment& env, const Pose& pose, const LaserSpec& spec,
@@ -77,63 +82,48 @@ const BeamDirections& beam_directions(const Scan& scan) {
 
 namespace {
 
-// The beams of one scan as plain arrays, indexed in walk order: a full circle is walked
-// from `start` for n beams, so the arrays hold 2n entries (beam k mod n at k) and every
-// run of successive readings is contiguous.
+// The scan's points as plain arrays in walk order, and its runs: maximal sequences of
+// successive in-range readings with no occlusion gap between neighbours (the sub-lists of
+// L_p in V.A). A full circle is walked from the first reading after a break, so the
+// arrays hold up to 2n entries (beam k mod n at walk index k) and every run is contiguous.
 struct ScanPoints {
   std::vector<double> x, y;
-  std::vector<char> valid;
-  std::vector<char> brk;  // brk[k]: the readings k-1 and k are not neighbours on one polyline
+  struct Run { std::size_t first, last; };  // walk indices, inclusive
+  std::vector<Run> runs;
 };
 
 // The point of (lo, hi) farthest from the line through lo and hi if its distance, times
-// the chord length, exceeds `above`; else lo. Squared distances (same argmax), four at a
-// time in two SSE2 lane pairs (GCC vector extensions) so that no single max chain limits
-// the loop; ties go to the lower index, as a plain scalar loop would.
-std::size_t farthest_from_chord(const double* xs, const double* ys, std::size_t lo, std::size_t hi, double above) {
+// the chord length, exceeds `above`; else lo. Two passes that vectorise: squared
+// distances (same argmax) into `sq`, their maximum in two SSE2 lane pairs (GCC vector
+// extensions), then the first index holding it — the lowest, as a scalar loop would pick.
+std::size_t farthest_from_chord(const double* xs, const double* ys, std::size_t lo, std::size_t hi, double above,
+                                std::vector<double>& sq) {
   const double ax = xs[lo], ay = ys[lo], dx = xs[hi] - ax, dy = ys[hi] - ay;
-  double best = above * above;
-  std::size_t worst = lo, i = lo + 1;
+  const std::size_t m = hi - lo - 1;
+  if (sq.size() < m) sq.resize(m);
+  const double *__restrict X = xs + lo + 1, *__restrict Y = ys + lo + 1;
+  double* __restrict D = sq.data();
+  for (std::size_t i = 0; i < m; ++i) {
+    const double c = dx * (Y[i] - ay) - dy * (X[i] - ax);
+    D[i] = c * c;
+  }
   using v2d = double __attribute__((vector_size(16)));
-  using v2i = std::int64_t __attribute__((vector_size(16)));
-  if (hi - i >= 8) {
-    v2d w0 = {best, best}, w1 = w0;
-    v2i at0 = {0, 0}, at1 = at0;
-    const v2i step = {4, 4};
-    v2i idx0 = {static_cast<std::int64_t>(i), static_cast<std::int64_t>(i + 1)}, idx1 = idx0 + 2;
-    auto sq = [&](std::size_t j) {
-      v2d px, py;
-      std::memcpy(&px, xs + j, sizeof px);
-      std::memcpy(&py, ys + j, sizeof py);
-      const v2d c = dx * (py - ay) - dy * (px - ax);
-      return c * c;
-    };
-    for (; i + 4 <= hi; i += 4) {
-      const v2d d0 = sq(i), d1 = sq(i + 2);
-      const v2i g0 = d0 > w0, g1 = d1 > w1;  // strictly greater: a lane keeps its earliest maximum
-      w0 = g0 ? d0 : w0;
-      w1 = g1 ? d1 : w1;
-      at0 = g0 ? idx0 : at0;
-      at1 = g1 ? idx1 : at1;
-      idx0 += step;
-      idx1 += step;
-    }
-    const double lane_w[4] = {w0[0], w0[1], w1[0], w1[1]};
-    const std::int64_t lane_at[4] = {at0[0], at0[1], at1[0], at1[1]};
-    const double floor = best;
-    for (int l = 0; l < 4; ++l) {
-      const auto j = static_cast<std::size_t>(lane_at[l]);
-      if (lane_w[l] > best || (lane_w[l] == best && lane_w[l] > floor && j < worst)) {
-        best = lane_w[l];
-        worst = j;
-      }
-    }
+  const double floor = above * above;
+  v2d w0 = {floor, floor}, w1 = w0;
+  std::size_t i = 0;
+  for (; i + 4 <= m; i += 4) {
+    v2d a0, a1;
+    std::memcpy(&a0, D + i, sizeof a0);
+    std::memcpy(&a1, D + i + 2, sizeof a1);
+    w0 = a0 > w0 ? a0 : w0;
+    w1 = a1 > w1 ? a1 : w1;
   }
-  for (; i < hi; ++i) {
-    const double c = dx * (ys[i] - ay) - dy * (xs[i] - ax), d = c * c;
-    if (d > best) { best = d; worst = i; }
-  }
-  return worst;
+  double best = std::max(std::max(w0[0], w0[1]), std::max(w1[0], w1[1]));
+  for (; i < m; ++i) best = D[i] > best ? D[i] : best;
+  if (!(best > floor)) return lo;
+  std::size_t j = 0;
+  while (D[j] != best) ++j;
+  return lo + 1 + j;
 }
 
 // Douglas-Peucker on the readings b..e (walk indices, inclusive), appending the kept
@@ -142,7 +132,7 @@ std::size_t farthest_from_chord(const double* xs, const double* ys, std::size_t 
 // that every fitted edge stays well under a half turn and turns counter-clockwise about
 // the observer (which LocalMap::validate then checks exactly).
 void simplify(const ScanPoints& P, std::size_t b, std::size_t e, double tol, std::size_t max_span,
-              std::vector<std::size_t>& out, std::vector<std::size_t>& stack) {
+              std::vector<std::size_t>& out, std::vector<std::size_t>& stack, std::vector<double>& sq) {
   stack.clear();
   stack.push_back(e);
   std::size_t lo = b;
@@ -151,7 +141,7 @@ void simplify(const ScanPoints& P, std::size_t b, std::size_t e, double tol, std
     std::size_t worst = lo;
     if (hi > lo + 1) {
       const double dx = P.x[hi] - P.x[lo], dy = P.y[hi] - P.y[lo];
-      worst = farthest_from_chord(P.x.data(), P.y.data(), lo, hi, tol * std::sqrt(dx * dx + dy * dy));
+      worst = farthest_from_chord(P.x.data(), P.y.data(), lo, hi, tol * std::sqrt(dx * dx + dy * dy), sq);
       if (worst == lo && hi - lo >= max_span) worst = (lo + hi) / 2;
     }
     if (worst == lo) {
@@ -180,39 +170,54 @@ struct Builder {
 }  // namespace
 
 LocalMap local_map_from_scan(const Scan& scan, const MapParams& mp) {
-  scan.validate();
+  scan.validate_layout();  // the readings are checked on the way (below)
   const std::size_t n = scan.ranges.size();
   const bool full = scan.full_circle();
   const double R = scan.max_range;
-  const double lo_r = mp.min_range, hi_r = R - mp.range_margin;
-  const double two_inc = 2 * scan.angle_increment;
   const BeamDirections& dir = beam_directions(scan);
 
-  // Points, validity and breaks in beam order. A break between beams k-1 and k: either is
-  // out of range, or an occlusion gap (further apart than gap + 2 r dtheta).
+  // One pass over the beams: points, and runs split where a reading is out of range or
+  // two neighbours are further apart than gap + 2 r dtheta (an occlusion gap).
   thread_local ScanPoints P;
   P.x.resize(2 * n);
   P.y.resize(2 * n);
-  P.valid.resize(2 * n);
-  P.brk.resize(2 * n + 1);
-  {  // raw pointers: stores through char would otherwise make the compiler reload every
-     // vector's data pointer on each beam
-    const double *r = scan.ranges.data(), *cs = dir.cos.data(), *sn = dir.sin.data();
-    double *x = P.x.data(), *y = P.y.data();
-    char *valid = P.valid.data(), *brk = P.brk.data();
+  auto& runs = P.runs;
+  runs.clear();
+  const double* r = scan.ranges.data();
+  const double lo_r = mp.min_range, hi_r = R - mp.range_margin, two_inc = 2 * scan.angle_increment;
+  // Neighbours (range, point) further apart than gap + 2 r dtheta.
+  auto gap_between = [&](double ra, double xa, double ya, double rb, double xb, double yb) {
+    const double thr = mp.gap + two_inc * std::max(ra, rb);
+    return (xa - xb) * (xa - xb) + (ya - yb) * (ya - yb) > thr * thr;
+  };
+  auto gap = [&](std::size_t a, std::size_t b) { return gap_between(r[a], P.x[a], P.y[a], r[b], P.x[b], P.y[b]); };
+  {
+    const double *cs = dir.cos.data(), *sn = dir.sin.data();
+    double *x = P.x.data(), *y = P.y.data();  // (locals: the loop's stores cannot move them)
+    bool bad = false, open = false;            // open: beam k-1 is in range, in a run from `first`
+    std::size_t first = 0;
+    double pr = 0, px = 0, py = 0;  // beam k-1
     for (std::size_t k = 0; k < n; ++k) {
-      valid[k] = r[k] > lo_r && r[k] < hi_r;
-      x[k] = r[k] * cs[k];
-      y[k] = r[k] * sn[k];
+      const double rk = r[k], xk = rk * cs[k], yk = rk * sn[k];
+      bad |= !(rk >= 0) | !(rk <= std::numeric_limits<double>::max());  // NaN fails both
+      x[k] = xk;
+      y[k] = yk;
+      const bool joins = open && !gap_between(pr, px, py, rk, xk, yk);
+      pr = rk;
+      px = xk;
+      py = yk;
+      if (!((rk > lo_r) & (rk < hi_r))) {
+        if (open) runs.push_back({first, k - 1});
+        open = false;
+        continue;
+      }
+      if (joins) continue;  // the run goes on (the common case)
+      if (open) runs.push_back({first, k - 1});
+      first = k;
+      open = true;
     }
-    auto gap = [&](std::size_t a, std::size_t b) {  // beams a, b both valid
-      const double thr = mp.gap + two_inc * std::max(r[a], r[b]);
-      const double dx = x[a] - x[b], dy = y[a] - y[b];
-      return dx * dx + dy * dy > thr * thr;
-    };
-    brk[0] = 1;
-    for (std::size_t k = 1; k < n; ++k) brk[k] = !valid[k - 1] || !valid[k] || gap(k - 1, k);
-    brk[n] = !full || !valid[n - 1] || !valid[0] || gap(n - 1, 0);  // across the seam
+    if (open) runs.push_back({first, n - 1});
+    if (bad) scan.validate();  // throws, naming the reading
   }
 
   LocalMap m;
@@ -222,113 +227,111 @@ LocalMap local_map_from_scan(const Scan& scan, const MapParams& mp) {
   m.corner.reserve(n / 2 + 16);
   Builder B{m};
   auto range_point = [&](double a) { return Point(R * std::cos(a), R * std::sin(a)); };
-  // The range arc from angle a to b (a < b, unwrapped), after range_point(a) was added.
-  auto arc = [&](double a, double b) {
-    const int k = std::max(1, static_cast<int>(std::ceil((b - a) / mp.arc_step)));
-    for (int j = 1; j <= k; ++j) B.add(range_point(a + (b - a) * j / k), EdgeKind::Range);
-  };
-
-  // Where to start walking: a cone at its first beam; a full circle at the first valid
-  // beam that follows a break, so that no run wraps past the end of the walk.
-  std::size_t start = 0;
-  if (full) {
-    start = n;
-    for (std::size_t k = 0; k < n && start == n; ++k)
-      if (P.valid[k] && P.brk[k == 0 ? n : k]) start = k;
-    if (start == n) {
-      bool any = false;
-      for (std::size_t k = 0; k < n; ++k) any = any || P.valid[k];
-      if (!any) {  // nothing in range all round: V is the range disc
-        for (std::size_t i = 0; i < n; ++i) B.add(range_point(scan.angle(i)), EdgeKind::Range);
-        m.edges.push_back(EdgeKind::Range);
-        m.corner.push_back(kNone);
-        straighten_occlusion_edges(m);
-        m.validate("scan map");
-        return m;
-      }
-      start = 0;  // one closed run all round
-    }
-    // Walk indices n .. start+n-1 are beams 0 .. start-1 again.
-    std::copy_n(P.x.begin(), start, P.x.begin() + static_cast<std::ptrdiff_t>(n));
-    std::copy_n(P.y.begin(), start, P.y.begin() + static_cast<std::ptrdiff_t>(n));
-    std::copy_n(P.valid.begin(), start, P.valid.begin() + static_cast<std::ptrdiff_t>(n));
-    std::copy_n(P.brk.begin() + 1, start, P.brk.begin() + static_cast<std::ptrdiff_t>(n + 1));
-  } else {
-    B.add(m.observer, EdgeKind::FieldOfView);
-    m.observer_vertex = 0;
-  }
-
-  thread_local std::vector<std::size_t> fitted, stack;
-  const auto quarter_turn = static_cast<std::size_t>(std::max(2.0, std::floor(M_PI / 2 / scan.angle_increment)));
   auto angle_at = [&](std::size_t kw) { return scan.angle_min + static_cast<double>(kw) * scan.angle_increment; };
   auto point = [&](std::size_t kw) { return Point(P.x[kw], P.y[kw]); };
-  // Emits the fitted polyline of the run b..e (its first point is already emitted).
-  auto flush = [&](std::size_t b, std::size_t e) {
-    if (e == b) return;
-    fitted.clear();
-    simplify(P, b, e, mp.simplify, quarter_turn, fitted, stack);
-    for (auto kw : fitted) B.add(point(kw), EdgeKind::Solid);
+  // A radial occlusion edge between the reading at walk index kw and the range circle is
+  // built turned away from the reading by turn(kw) = 1e-13 max(1, R / r) rad (1e-12 m at
+  // R = 8 m): its orientation about the observer is then certified by CGAL's
+  // floating-point filter instead of exact arithmetic, and it cannot come out turning
+  // clockwise. Nothing a sensor with centimetre noise measured is changed by it.
+  auto turn = [&](std::size_t kw) { return 1e-13 * std::max(1.0, R / r[kw < n ? kw : kw - n]); };
+  // The range arc from angle a to b (a < b, unwrapped), after the point at a was added;
+  // its last point is turned back by end_turn.
+  auto arc = [&](double a, double b, double end_turn) {
+    const int k = std::max(1, static_cast<int>(std::ceil((b - a) / mp.arc_step)));
+    for (int j = 1; j <= k; ++j) B.add(range_point(j == k ? b - end_turn : a + (b - a) * j / k), EdgeKind::Range);
   };
-  // Leaves the last emitted point radially for the range circle at angle a and follows
-  // the circle to angle b: the first two edges of occlusion-range-occlusion.
-  auto out_to_range = [&](double a, double b) {
-    B.add(range_point(a), EdgeKind::Occlusion, B.last());
-    arc(a, b);
+  // Leaves the last emitted point (the reading at walk index kw) radially for the range
+  // circle and follows the circle to angle b: the first two edges of
+  // occlusion-range-occlusion.
+  auto out_to_range = [&](std::size_t kw, double b, double end_turn) {
+    const double a = angle_at(kw);
+    B.add(range_point(a + turn(kw)), EdgeKind::Occlusion, B.last());
+    arc(a, b, end_turn);
   };
   // Across an occlusion gap the corner is the endpoint nearer the observer.
   auto nearer_of = [&](const Point& p, std::uint32_t p_index, std::uint32_t other) {
     return CGAL::compare_distance_to_point(m.observer, p, m.vertices[other]) == CGAL::SMALLER ? p_index : other;
   };
+  thread_local std::vector<std::size_t> fitted, stack;
+  thread_local std::vector<double> sq;
+  const auto quarter_turn = static_cast<std::size_t>(std::max(2.0, std::floor(M_PI / 2 / scan.angle_increment)));
+  // Emits the fitted polyline of a run (its first point is already emitted).
+  auto flush = [&](const ScanPoints::Run& run) {
+    if (run.last == run.first) return;
+    fitted.clear();
+    simplify(P, run.first, run.last, mp.simplify, quarter_turn, fitted, stack, sq);
+    for (auto kw : fitted) B.add(point(kw), EdgeKind::Solid);
+  };
 
-  constexpr std::size_t kNoReading = static_cast<std::size_t>(-1);
-  std::size_t last = kNoReading, run = 0;  // walk index of the last valid reading; its run's first
-  bool saw_invalid = false;
-  const char *valid = P.valid.data(), *brk = P.brk.data();
-  for (std::size_t kw = start; kw < start + n; ++kw) {
-    if (!valid[kw]) { saw_invalid = true; continue; }
-    if (last != kNoReading && !brk[kw]) { last = kw; continue; }  // the run goes on (the common case)
-    const Point p = point(kw);
-    if (last == kNoReading) {  // first valid reading
-      if (!full && saw_invalid) {
+  // A full circle starts at the first run after a break. When the seam between the last
+  // beam and the first is no break, the first run continues the last one: it moves to
+  // walk indices n.. .
+  std::size_t first_run = 0;
+  bool closed_run = false;  // one run all round, no break anywhere
+  if (full) {
+    if (runs.empty()) {  // nothing in range all round: V is the range disc
+      for (std::size_t i = 0; i < n; ++i) B.add(range_point(scan.angle(i)), EdgeKind::Range);
+      m.edges.push_back(EdgeKind::Range);
+      m.corner.push_back(kNone);
+      straighten_occlusion_edges(m);
+      m.validate("scan map");
+      return m;
+    }
+    const bool seam_joins = runs.front().first == 0 && runs.back().last == n - 1 && !gap(n - 1, 0);
+    if (seam_joins && runs.size() == 1) {
+      closed_run = true;
+    } else if (seam_joins) {
+      const std::size_t k = runs.front().last + 1;
+      std::copy_n(P.x.begin(), k, P.x.begin() + static_cast<std::ptrdiff_t>(n));
+      std::copy_n(P.y.begin(), k, P.y.begin() + static_cast<std::ptrdiff_t>(n));
+      runs.back().last = n + runs.front().last;
+      first_run = 1;
+    }
+  } else {
+    B.add(m.observer, EdgeKind::FieldOfView);
+    m.observer_vertex = 0;
+  }
+
+  for (std::size_t j = first_run; j < runs.size(); ++j) {
+    const auto& run = runs[j];
+    const Point p = point(run.first);
+    if (j == first_run) {
+      if (!full && run.first > 0) {  // out-of-range readings before the first run
         B.add(range_point(angle_at(0)), EdgeKind::FieldOfView);
-        arc(angle_at(0), angle_at(kw));
+        arc(angle_at(0), angle_at(run.first), turn(run.first));
         B.add(p, EdgeKind::Occlusion, B.next_index());
       } else {
         B.add(p, EdgeKind::FieldOfView);  // (full circle: the first vertex; no edge yet)
       }
-    } else {
-      flush(run, last);
-      if (saw_invalid) {
-        out_to_range(angle_at(last), angle_at(kw));
-        B.add(p, EdgeKind::Occlusion, B.next_index());
-      } else {
-        B.add(p, EdgeKind::Occlusion, nearer_of(p, B.next_index(), B.last()));
-      }
+    } else if (run.first > runs[j - 1].last + 1) {  // an out-of-range gap
+      out_to_range(runs[j - 1].last, angle_at(run.first), turn(run.first));
+      B.add(p, EdgeKind::Occlusion, B.next_index());
+    } else {  // an occlusion gap
+      B.add(p, EdgeKind::Occlusion, nearer_of(p, B.next_index(), B.last()));
     }
-    run = last = kw;
-    saw_invalid = false;
+    flush(run);
   }
-  if (last != kNoReading) flush(run, last);
   // Close the polygon.
   if (!full) {
-    if (last == kNoReading) {  // nothing in range
+    if (runs.empty()) {  // nothing in range
       B.add(range_point(angle_at(0)), EdgeKind::FieldOfView);
-      arc(angle_at(0), angle_at(n - 1));
-    } else if (saw_invalid) {
-      out_to_range(angle_at(last), angle_at(n - 1));
+      arc(angle_at(0), angle_at(n - 1), 0);
+    } else if (runs.back().last < n - 1) {
+      out_to_range(runs.back().last, angle_at(n - 1), 0);
     }
     m.edges.push_back(EdgeKind::FieldOfView);
     m.corner.push_back(kNone);
-  } else if (saw_invalid) {
-    out_to_range(angle_at(last), angle_at(start + n));
+  } else if (const std::size_t start = runs[first_run].first, last = runs.back().last; last + 1 < start + n) {
+    out_to_range(last, angle_at(start + n), turn(start));
     m.edges.push_back(EdgeKind::Occlusion);
     m.corner.push_back(0);
-  } else if (P.brk[start == 0 ? n : start]) {  // the seam between the last reading and the first
-    m.edges.push_back(EdgeKind::Occlusion);
-    m.corner.push_back(nearer_of(m.vertices[0], 0, B.last()));
-  } else {
+  } else if (closed_run) {
     m.edges.push_back(EdgeKind::Solid);
     m.corner.push_back(kNone);
+  } else {  // an occlusion gap between the last reading and the first
+    m.edges.push_back(EdgeKind::Occlusion);
+    m.corner.push_back(nearer_of(m.vertices[0], 0, B.last()));
   }
   straighten_occlusion_edges(m);
   m.validate("scan map");

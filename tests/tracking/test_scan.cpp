@@ -135,6 +135,50 @@ TEST(ScanMap, OutOfRangeGapIsClosedByOcclusionRangeOcclusion) {
     }
 }
 
+TEST(ScanMap, FullCircleRunsAcrossTheSeam) {
+  // 360-deg scans of concentric arcs: where the walk starts and how the polygon closes
+  // depends on whether the run of readings goes on across the seam (last beam -> first).
+  // Each case: the free edges expected, and escape paths equal to brute force.
+  struct Case {
+    const char* name;
+    std::vector<std::pair<std::size_t, double>> arcs;  // (first beam, range) up to the next
+    std::size_t occlusion, range;
+  };
+  const double sat = 8;  // max range: out of range
+  const std::vector<Case> cases = {
+      {"one closed run all round", {{0, 3}}, 0, 0},
+      {"nothing in range", {{0, sat}}, 0, 360},
+      {"out of range at the start", {{0, sat}, {10, 3}}, 2, 1},
+      {"out of range at the end", {{0, 3}, {350, sat}}, 2, 1},
+      {"out of range across the seam", {{0, sat}, {5, 3}, {355, sat}}, 2, 1},
+      {"occlusion gap at the seam", {{0, 2}, {180, 4}}, 2, 0},
+      {"a run continued across the seam", {{0, 2}, {90, 4}, {270, 2}}, 2, 0},
+      {"continued run and a range gap", {{0, 2}, {90, sat}, {100, 4}, {270, 2}}, 3, 1},
+  };
+  for (const auto& c : cases) {
+    Scan s;
+    s.angle_min = -M_PI;
+    s.angle_increment = 2 * M_PI / 360;
+    s.max_range = sat;
+    s.ranges.assign(360, 0);
+    for (std::size_t i = 0; i < c.arcs.size(); ++i)
+      for (std::size_t k = c.arcs[i].first; k < (i + 1 < c.arcs.size() ? c.arcs[i + 1].first : 360); ++k)
+        s.ranges[k] = c.arcs[i].second;
+    const LocalMap m = local_map_from_scan(s);
+    EXPECT_EQ(m.count(EdgeKind::Occlusion), c.occlusion) << c.name;
+    if (c.range == 360) {
+      EXPECT_EQ(m.count(EdgeKind::Range), m.size()) << c.name;
+    } else {
+      EXPECT_EQ(m.count(EdgeKind::Range) > 0, c.range > 0) << c.name;
+    }
+    const Point t(0.5, 0.3);
+    const auto tree = escape_path_tree(m, t);
+    const auto oracle = preimage::testing::brute_force_sde(m, t);
+    ASSERT_EQ(tree.paths.size(), oracle.size()) << c.name;
+    for (std::size_t i = 0; i < oracle.size(); ++i) EXPECT_NEAR(tree.paths[i].length, oracle[i], 1e-9) << c.name;
+  }
+}
+
 TEST(ScanMap, BadReadingsAreNamed) {
   Scan s;
   s.angle_min = -M_PI / 2;

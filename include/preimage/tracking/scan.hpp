@@ -30,6 +30,8 @@ struct Scan {
   /// Throws InputError naming the reading if a range is not finite or negative, or if the
   /// beams are not counter-clockwise within one turn.
   void validate(const std::string& what = "scan") const;
+  /// The checks of validate() that do not read every range (count, increment, span).
+  void validate_layout(const std::string& what = "scan") const;
 };
 
 struct LaserSpec {
