@@ -43,14 +43,15 @@ double dist(const Point& a, const Point& b) { return std::sqrt(CGAL::to_double(C
 // Rank of a vertex in counter-clockwise order starting at the ray q^o -> q^t.
 enum Rank : std::uint8_t { Front = 0, Left = 1, Back = 2, Right = 3 };
 
+// The pivot list: vertex (kNone = target), geodesic distance, tree node (lazy).
+struct Pivot { std::uint32_t vertex; double distance; std::uint32_t node; };
+
 struct Sweep {
   const LocalMap& map;
   EscapePathTree& tree;
-  std::vector<double> best;  // per edge: best SDE so far (+inf)
-
-  // The pivot list: vertex (kNone = target), geodesic distance, tree node (lazy).
-  struct Pivot { std::uint32_t vertex; double distance; std::uint32_t node; };
-  std::vector<Pivot> stack;
+  std::vector<double>& best;             // per edge: best SDE so far (+inf)
+  std::vector<Pivot>& stack;
+  std::vector<std::uint32_t>& index_of;  // edge -> index in tree.paths
 
   const Point& at(const Pivot& p) const { return p.vertex == kNone ? tree.target : map.vertices[p.vertex]; }
 
@@ -133,7 +134,6 @@ struct Sweep {
       path.side = j == 0 ? 0 : side;
     }
   }
-  std::vector<std::uint32_t> index_of;  // edge -> index in tree.paths
 };
 
 }  // namespace
@@ -148,8 +148,16 @@ EscapePathTree escape_path_tree(const LocalMap& map, const Point& t) {
   EscapePathTree tree;
   tree.target = t;
   tree.nodes.push_back(EscapeNode{kNone, kNone, t, 0.0, 0});
-  Sweep s{map, tree, std::vector<double>(n, std::numeric_limits<double>::infinity()), {}, {}};
-  s.index_of.assign(n, kNone);
+  // Scratch kept per thread: TRACK builds one tree per scan.
+  thread_local std::vector<double> best;
+  thread_local std::vector<Pivot> stack;
+  thread_local std::vector<std::uint32_t> index_of;
+  thread_local std::vector<Rank> rank;
+  best.assign(n, std::numeric_limits<double>::infinity());
+  index_of.assign(n, kNone);
+  Sweep s{map, tree, best, stack, index_of};
+  tree.paths.reserve(map.count(EdgeKind::Occlusion) + map.count(EdgeKind::Range));
+  tree.nodes.reserve(tree.paths.capacity() + 8);
   for (std::uint32_t e = 0; e < n; ++e)
     if (is_escape(map.edges[e])) {
       s.index_of[e] = static_cast<std::uint32_t>(tree.paths.size());
@@ -157,7 +165,7 @@ EscapePathTree escape_path_tree(const LocalMap& map, const Point& t) {
     }
 
   // Rank every vertex about the ray from the observer through the target.
-  std::vector<Rank> rank(n, Front);
+  rank.assign(n, Front);
   for (std::size_t i = 0; i < n; ++i) {
     if (i == map.observer_vertex) continue;
     const int side = geometry::orientation(o, t, map.vertices[i]);

@@ -29,7 +29,8 @@ EdgeRisk corner_risk(const Point& observer, const Point& corner, const Point& pi
   const double h = std::max(h_raw, rp.min_h);
   const Vec2 grad_h = h_raw > rp.min_h ? t * (sgn * lever / r) : Vec2{};
   const Vec2 grad_r = u * -1.0;
-  const double hm = std::pow(1.0 / h, rp.m + 2);
+  double hm = 1;  // (1/h)^(m+2) by multiplication: m is a small integer, pow is slow
+  for (int i = 0; i < rp.m + 2; ++i) hm /= h;
   out.r_o = r;
   out.h = h;
   out.phi = rp.c * r * r * hm;

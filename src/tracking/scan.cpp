@@ -92,14 +92,25 @@ struct ScanPoints {
   std::vector<Run> runs;
 };
 
-// The point of (lo, hi) farthest from the line through lo and hi if its distance, times
-// the chord length, exceeds `above`; else lo. Two passes that vectorise: squared
-// distances (same argmax) into `sq`, their maximum in two SSE2 lane pairs (GCC vector
-// extensions), then the first index holding it — the lowest, as a scalar loop would pick.
-std::size_t farthest_from_chord(const double* xs, const double* ys, std::size_t lo, std::size_t hi, double above,
+// The point of (lo, hi) farthest from the line through lo and hi if it is further than
+// tol, else lo. Distances are compared as cross products squared against tol^2 |chord|^2
+// (same argmax, no square root). Long chords take two passes that vectorise: squared
+// distances into `sq`, their maximum in two SSE2 lane pairs (GCC vector extensions), then
+// the first index holding it — the lowest, as the plain loop for short chords picks.
+std::size_t farthest_from_chord(const double* xs, const double* ys, std::size_t lo, std::size_t hi, double tol,
                                 std::vector<double>& sq) {
   const double ax = xs[lo], ay = ys[lo], dx = xs[hi] - ax, dy = ys[hi] - ay;
+  const double floor = tol * tol * (dx * dx + dy * dy);
   const std::size_t m = hi - lo - 1;
+  if (m < 8) {
+    double best = floor;
+    std::size_t worst = lo;
+    for (std::size_t i = lo + 1; i < hi; ++i) {
+      const double c = dx * (ys[i] - ay) - dy * (xs[i] - ax);
+      if (c * c > best) { best = c * c; worst = i; }
+    }
+    return worst;
+  }
   if (sq.size() < m) sq.resize(m);
   const double *__restrict X = xs + lo + 1, *__restrict Y = ys + lo + 1;
   double* __restrict D = sq.data();
@@ -108,7 +119,6 @@ std::size_t farthest_from_chord(const double* xs, const double* ys, std::size_t 
     D[i] = c * c;
   }
   using v2d = double __attribute__((vector_size(16)));
-  const double floor = above * above;
   v2d w0 = {floor, floor}, w1 = w0;
   std::size_t i = 0;
   for (; i + 4 <= m; i += 4) {
@@ -140,8 +150,7 @@ void simplify(const ScanPoints& P, std::size_t b, std::size_t e, double tol, std
     const std::size_t hi = stack.back();
     std::size_t worst = lo;
     if (hi > lo + 1) {
-      const double dx = P.x[hi] - P.x[lo], dy = P.y[hi] - P.y[lo];
-      worst = farthest_from_chord(P.x.data(), P.y.data(), lo, hi, tol * std::sqrt(dx * dx + dy * dy), sq);
+      worst = farthest_from_chord(P.x.data(), P.y.data(), lo, hi, tol, sq);
       if (worst == lo && hi - lo >= max_span) worst = (lo + hi) / 2;
     }
     if (worst == lo) {

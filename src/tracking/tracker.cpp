@@ -54,51 +54,102 @@ Detection detect_target(const Scan& scan, const DetectParams& dp, const std::opt
   thread_local std::vector<Vec2> cluster;
   double best_score = 1e300;
   const double jump2 = dp.jump * dp.jump;
-  std::size_t i = 0;
-  while (i < n) {
-    if (!valid(i)) { ++i; continue; }
-    std::size_t j = i;
-    Vec2 pj = point(j);
-    while (j + 1 < n && valid(j + 1)) {
-      const Vec2 q = point(j + 1), d = q - pj;
-      if (d.dot(d) > jump2) break;
-      pj = q;
-      ++j;
+  auto joins = [&](std::size_t i, std::size_t j) {  // beams i, j in one cluster (i, j valid)
+    const Vec2 d = point(j) - point(i);
+    return d.dot(d) <= jump2;
+  };
+  // The clusters that start in beams [from, to) (and may run on past `to`).
+  auto scan_beams = [&](std::size_t from, std::size_t to) {
+    std::size_t i = from;
+    // A cluster running into `from` started before it: not ours.
+    if (from > 0 && valid(from - 1))
+      while (i < n && valid(i) && joins(i - 1, i)) ++i;
+    while (i < to) {
+      if (!valid(i)) { ++i; continue; }
+      std::size_t j = i;
+      Vec2 pj = point(j);
+      while (j + 1 < n && valid(j + 1)) {
+        const Vec2 q = point(j + 1), d = q - pj;
+        if (d.dot(d) > jump2) break;
+        pj = q;
+        ++j;
+      }
+      const std::size_t a = i, b = j;
+      i = j + 1;
+      if (b - a + 1 < dp.min_points) continue;
+      if ((point(b) - point(a)).norm() > 2.2 * dp.radius) continue;  // wider than the target
+      // The target stands in front of what is behind it: both flanks are further or empty.
+      double near = 1e300;
+      for (std::size_t k = a; k <= b; ++k) near = std::min(near, scan.ranges[k]);
+      const bool left_ok = a == 0 || !valid(a - 1) || scan.ranges[a - 1] > near + 0.5 * dp.radius;
+      const bool right_ok = b + 1 == n || !valid(b + 1) || scan.ranges[b + 1] > near + 0.5 * dp.radius;
+      if (!left_ok || !right_ok) continue;
+      // With a prior, skip clusters whose fit could not pass the gate: a fit with rms <=
+      // max_rms has every point within r + sqrt(N) max_rms of its centre.
+      const double reach = dp.radius + std::sqrt(static_cast<double>(b - a + 1)) * dp.max_rms;
+      if (prior && (point(a) - vec(*prior)).norm() > dp.gate + reach) continue;
+      cluster.clear();
+      for (std::size_t k = a; k <= b; ++k) cluster.push_back(point(k));
+      Vec2 c;
+      double rms;
+      if (!fit_circle(cluster, dp.radius, c, rms) || rms > dp.max_rms) continue;
+      double score = rms;
+      if (prior) {
+        const double d = (c - vec(*prior)).norm();
+        if (d > dp.gate) continue;
+        score = d;
+      }
+      ++best.candidates;
+      if (score < best_score) {
+        best_score = score;
+        best.found = true;
+        best.center = Point(c.x, c.y);
+        best.rms = rms;
+        best.first = a;
+        best.last = b;
+      }
     }
-    const std::size_t a = i, b = j;
-    i = j + 1;
-    if (b - a + 1 < dp.min_points) continue;
-    if ((point(b) - point(a)).norm() > 2.2 * dp.radius) continue;  // wider than the target
-    // The target stands in front of what is behind it: both flanks are further or empty.
-    double near = 1e300;
-    for (std::size_t k = a; k <= b; ++k) near = std::min(near, scan.ranges[k]);
-    const bool left_ok = a == 0 || !valid(a - 1) || scan.ranges[a - 1] > near + 0.5 * dp.radius;
-    const bool right_ok = b + 1 == n || !valid(b + 1) || scan.ranges[b + 1] > near + 0.5 * dp.radius;
-    if (!left_ok || !right_ok) continue;
-    // With a prior, skip clusters whose fit could not pass the gate: a fit with rms <=
-    // max_rms has every point within r + sqrt(N) max_rms of its centre.
-    const double reach = dp.radius + std::sqrt(static_cast<double>(b - a + 1)) * dp.max_rms;
-    if (prior && (point(a) - vec(*prior)).norm() > dp.gate + reach) continue;
-    cluster.clear();
-    for (std::size_t k = a; k <= b; ++k) cluster.push_back(point(k));
-    Vec2 c;
-    double rms;
-    if (!fit_circle(cluster, dp.radius, c, rms) || rms > dp.max_rms) continue;
-    double score = rms;
-    if (prior) {
-      const double d = (c - vec(*prior)).norm();
-      if (d > dp.gate) continue;
-      score = d;
+  };
+  // With a prior, a cluster is fitted only if its first point lies within D = gate + reach
+  // (at most r + sqrt(n) max_rms) of it, so only beams whose bearing is within
+  // asin(D / |prior|) of the prior's (plus a beam either side) can start one.
+  const double D = dp.gate + dp.radius + std::sqrt(static_cast<double>(n)) * dp.max_rms;
+  const double dist = prior ? vec(*prior).norm() : 0;
+  if (!prior || !(dist > D)) {
+    scan_beams(0, n);
+    return best;
+  }
+  const double half = std::asin(D / dist), inc = scan.angle_increment, nn = static_cast<double>(n);
+  double bearing = std::atan2(prior->y(), prior->x());
+  while (bearing < scan.angle_min) bearing += 2 * M_PI;  // into [angle_min, angle_min + 2 pi)
+  while (bearing >= scan.angle_min + 2 * M_PI) bearing -= 2 * M_PI;
+  // The window in beam indices, inclusive: k0 >= -n/4 - 2, k1 < 5n/4 + 2 for a full circle.
+  const double k0 = std::floor((bearing - half - scan.angle_min) / inc) - 1;
+  const double k1 = std::ceil((bearing + half - scan.angle_min) / inc) + 1;
+  if (scan.full_circle()) {
+    if (k1 - k0 + 1 >= nn) {
+      scan_beams(0, n);
+    } else {  // one range, or two across the seam
+      const auto from = static_cast<std::size_t>(k0 < 0 ? k0 + nn : k0), len = static_cast<std::size_t>(k1 - k0 + 1);
+      scan_beams(from, std::min(n, from + len));
+      if (from + len > n) scan_beams(0, from + len - n);
     }
-    ++best.candidates;
-    if (score < best_score) {
-      best_score = score;
-      best.found = true;
-      best.center = Point(c.x, c.y);
-      best.rms = rms;
-      best.first = a;
-      best.last = b;
-    }
+    return best;
+  }
+  // A cone: the window, and its copy a turn earlier (a prior just clockwise of the first
+  // beam has its bearing near angle_min + 2 pi), clipped to the beams; the two merged
+  // when they meet.
+  const double turn = 2 * M_PI / inc;
+  const double lo1 = std::max(0.0, k0), hi1 = std::min(nn - 1, k1);
+  const double lo2 = std::max(0.0, k0 - turn), hi2 = std::min(nn - 1, k1 - turn);
+  auto scan_window = [&](double lo, double hi) {
+    scan_beams(static_cast<std::size_t>(lo), static_cast<std::size_t>(hi) + 1);
+  };
+  if (lo2 <= hi2 && lo1 <= hi1 && hi2 + 1 >= lo1) {
+    scan_window(lo2, std::max(hi1, hi2));
+  } else {
+    if (lo2 <= hi2) scan_window(lo2, hi2);
+    if (lo1 <= hi1) scan_window(lo1, hi1);
   }
   return best;
 }

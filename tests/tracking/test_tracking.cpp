@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <random>
 
 using namespace preimage;
 using namespace preimage::tracking;
@@ -111,6 +112,74 @@ TEST(TrackingSimulation, TheObserverFollowsAScriptedTargetRoundTheCorridor) {
   const SimulationResult r = simulate(TrackingScenario::from_scene(sc), p);
   EXPECT_DOUBLE_EQ(r.escape_time, -1.0);
   EXPECT_GT(r.target_length, 25.0);
+}
+
+namespace {
+// A scan of discs in a round room of radius 6 (no environment needed): beam i hits the
+// nearest disc, else the wall.
+Scan scan_of_discs(const std::vector<Disc>& discs, std::size_t beams, double fov, std::mt19937_64& rng) {
+  Scan s;
+  s.max_range = 8;
+  const bool full = fov >= 2 * M_PI;
+  s.angle_increment = full ? 2 * M_PI / static_cast<double>(beams) : fov / static_cast<double>(beams - 1);
+  s.angle_min = full ? -M_PI : -fov / 2;
+  std::normal_distribution<double> noise(0, 0.005);
+  for (std::size_t i = 0; i < beams; ++i) {
+    const double dx = std::cos(s.angle(i)), dy = std::sin(s.angle(i));
+    double r = 6;
+    for (const Disc& d : discs) {
+      const double b = d.center.x() * dx + d.center.y() * dy;
+      const double c = d.center.x() * d.center.x() + d.center.y() * d.center.y() - d.radius * d.radius;
+      if (b * b - c >= 0 && b - std::sqrt(b * b - c) > 0) r = std::min(r, b - std::sqrt(b * b - c));
+    }
+    s.ranges.push_back(r + noise(rng));
+  }
+  return s;
+}
+}  // namespace
+
+TEST(TrackingDetection, PriorWindowFindsTheDiscNearestThePriorAnywhereRound) {
+  // With a prior, detection looks only at the beams that can see within the gate of it:
+  // the window must wrap across the seam of a full circle (bearings near +-180 deg) and
+  // clip to a cone, and still find the disc by the prior, not the other one.
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> bearing(-M_PI, M_PI), range(3.0, 5.5), jitter(-0.3, 0.3);
+  DetectParams dp;
+  int found = 0, seam = 0, none = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const bool cone = trial % 2 == 1;
+    const double fov = cone ? M_PI : 2 * M_PI;
+    double a0 = trial % 8 == 0 ? M_PI - 0.05 : bearing(rng);  // often by the seam
+    if (cone) a0 = std::clamp(a0, -1.4, 1.4);
+    const double a1 = cone ? a0 - std::copysign(1.4, a0) : a0 + (trial % 3 == 0 ? 1.4 : -1.4);
+    const Disc d0{Point(range(rng) * std::cos(a0), range(rng) * std::sin(a0)), dp.radius};
+    const Disc d1{Point(range(rng) * std::cos(a1), range(rng) * std::sin(a1)), dp.radius};
+    if (std::sqrt(CGAL::to_double(CGAL::squared_distance(d0.center, d1.center))) < 2 * dp.gate + 0.7) continue;
+    const Scan s = scan_of_discs({d0, d1}, cone ? 361 : 720, fov, rng);
+    for (const Disc& want : {d0, d1}) {
+      const double wb = std::atan2(want.center.y(), want.center.x());
+      if (cone && std::abs(wb) > M_PI / 2 - 0.15) continue;  // at the cone's edge: half seen
+      const Point prior(want.center.x() + jitter(rng), want.center.y() + jitter(rng));
+      const Detection d = detect_target(s, dp, prior);
+      ASSERT_TRUE(d.found) << "trial " << trial << " disc at " << want.center;
+      EXPECT_LT(std::sqrt(CGAL::to_double(CGAL::squared_distance(d.center, want.center))), 0.03) << "trial " << trial;
+      ++found;
+      seam += std::abs(wb) > M_PI - 0.3;
+    }
+    // A prior where there is nothing: behind a cone, or between the discs.
+    const Point nothing = cone ? Point(-3, 0.2) : Point(-(d0.center.x() + d1.center.x()), -(d0.center.y() + d1.center.y()));
+    const Detection d = detect_target(s, dp, nothing);
+    bool near_disc = false;
+    for (const Disc& o : {d0, d1})
+      near_disc = near_disc || std::sqrt(CGAL::to_double(CGAL::squared_distance(o.center, nothing))) < dp.gate + 0.1;
+    if (!near_disc) {
+      EXPECT_FALSE(d.found) << "trial " << trial;
+      ++none;
+    }
+  }
+  EXPECT_GT(found, 400);
+  EXPECT_GT(seam, 40);
+  EXPECT_GT(none, 100);
 }
 
 TEST(TrackingReplay, LogLinesAreParsedOrNamed) {
