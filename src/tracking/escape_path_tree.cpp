@@ -43,7 +43,8 @@ double dist(const Point& a, const Point& b) { return std::sqrt(CGAL::to_double(C
 // Rank of a vertex in counter-clockwise order starting at the ray q^o -> q^t.
 enum Rank : std::uint8_t { Front = 0, Left = 1, Back = 2, Right = 3 };
 
-// The pivot list: vertex (kNone = target), geodesic distance, tree node (lazy).
+// The pivot list: vertex (kNone = target), geodesic distance and tree node, both lazy (-1,
+// kNone until needed: most pivots are popped before any escape path uses them).
 struct Pivot { std::uint32_t vertex; double distance; std::uint32_t node; };
 
 struct Sweep {
@@ -55,6 +56,14 @@ struct Sweep {
 
   const Point& at(const Pivot& p) const { return p.vertex == kNone ? tree.target : map.vertices[p.vertex]; }
 
+  // Geodesic distance of stack entry j, filling in the entries below it first.
+  double distance(std::size_t j) {
+    std::size_t k = j;
+    while (stack[k].distance < 0) --k;  // the root has distance 0
+    for (++k; k <= j; ++k) stack[k].distance = stack[k - 1].distance + dist(at(stack[k - 1]), at(stack[k]));
+    return stack[j].distance;
+  }
+
   void reset() { stack.assign(1, Pivot{kNone, 0.0, 0}); }
 
   // Tree node for stack entry j, creating the nodes below it first (parents precede children).
@@ -62,7 +71,7 @@ struct Sweep {
     std::size_t k = j;
     while (stack[k].node == kNone) --k;
     for (++k; k <= j; ++k) {
-      EscapeNode n{stack[k].vertex, stack[k - 1].node, at(stack[k]), stack[k].distance, side};
+      EscapeNode n{stack[k].vertex, stack[k - 1].node, at(stack[k]), distance(k), side};
       stack[k].node = static_cast<std::uint32_t>(tree.nodes.size());
       tree.nodes.push_back(n);
     }
@@ -77,7 +86,7 @@ struct Sweep {
     while (stack.size() >= 2 &&
            side * geometry::orientation(at(stack[stack.size() - 2]), at(stack.back()), p) >= 0)
       stack.pop_back();
-    stack.push_back(Pivot{v, stack.back().distance + dist(at(stack.back()), p), kNone});
+    stack.push_back(Pivot{v, -1.0, kNone});
   }
 
   // Nearest point of segment [a, b] to w, as a point and as "which": 0 a, 1 b, 2 interior.
@@ -102,7 +111,7 @@ struct Sweep {
     std::size_t j = stack.size() - 1;  // the top: a itself, or the target for the edge across l
     const int top = nearest_kind(a, b, at(stack[j]));
     Point q = top == 0 ? a : top == 1 ? b : foot(a, b, at(stack[j]));
-    double len = stack[j].distance + dist(at(stack[j]), q);
+    double len = distance(j) + dist(at(stack[j]), q);
     for (std::size_t k = j; k-- > 0;) {
       const Point& w = at(stack[k]);
       const Point& nxt = at(stack[k + 1]);
@@ -123,7 +132,7 @@ struct Sweep {
       if (side * turn > 0) break;  // blocked
       j = k;
       q = kind == 0 ? a : kind == 1 ? b : foot(a, b, w);
-      len = stack[k].distance + dist(w, q);
+      len = distance(k) + dist(w, q);
     }
     if (len < best[edge]) {
       best[edge] = len;
@@ -139,11 +148,15 @@ struct Sweep {
 }  // namespace
 
 EscapePathTree escape_path_tree(const LocalMap& map, const Point& t) {
+  if (auto tree = try_escape_path_tree(map, t)) return std::move(*tree);
+  throw InputError("target at (" + std::to_string(t.x()) + ", " + std::to_string(t.y()) +
+                   ") is not strictly inside the observer's visibility polygon");
+}
+
+std::optional<EscapePathTree> try_escape_path_tree(const LocalMap& map, const Point& t) {
+  if (!map.strictly_contains(t)) return std::nullopt;
   const std::size_t n = map.size();
   const Point& o = map.observer;
-  if (!map.strictly_contains(t))
-    throw InputError("target at (" + std::to_string(t.x()) + ", " + std::to_string(t.y()) +
-                     ") is not strictly inside the observer's visibility polygon");
   if (t == o) throw InputError("target and observer coincide");
   EscapePathTree tree;
   tree.target = t;
@@ -156,7 +169,9 @@ EscapePathTree escape_path_tree(const LocalMap& map, const Point& t) {
   best.assign(n, std::numeric_limits<double>::infinity());
   index_of.assign(n, kNone);
   Sweep s{map, tree, best, stack, index_of};
-  tree.paths.reserve(map.count(EdgeKind::Occlusion) + map.count(EdgeKind::Range));
+  std::size_t escapes = 0;
+  for (auto k : map.edges) escapes += is_escape(k);
+  tree.paths.reserve(escapes);
   tree.nodes.reserve(tree.paths.capacity() + 8);
   for (std::uint32_t e = 0; e < n; ++e)
     if (is_escape(map.edges[e])) {

@@ -94,46 +94,56 @@ struct ScanPoints {
 
 // The point of (lo, hi) farthest from the line through lo and hi if it is further than
 // tol, else lo. Distances are compared as cross products squared against tol^2 |chord|^2
-// (same argmax, no square root). Long chords take two passes that vectorise: squared
-// distances into `sq`, their maximum in two SSE2 lane pairs (GCC vector extensions), then
-// the first index holding it — the lowest, as the plain loop for short chords picks.
-std::size_t farthest_from_chord(const double* xs, const double* ys, std::size_t lo, std::size_t hi, double tol,
-                                std::vector<double>& sq) {
+// (same argmax, no square root). Long chords go four points at a time in two SSE2 lane
+// pairs (GCC vector extensions), remembering the first block of four where the maximum
+// grew; the point is then the first of that block attaining it — the lowest index, as
+// the plain loop for short chords picks.
+std::size_t farthest_from_chord(const double* xs, const double* ys, std::size_t lo, std::size_t hi, double tol) {
   const double ax = xs[lo], ay = ys[lo], dx = xs[hi] - ax, dy = ys[hi] - ay;
   const double floor = tol * tol * (dx * dx + dy * dy);
   const std::size_t m = hi - lo - 1;
-  if (m < 8) {
-    double best = floor;
-    std::size_t worst = lo;
-    for (std::size_t i = lo + 1; i < hi; ++i) {
-      const double c = dx * (ys[i] - ay) - dy * (xs[i] - ax);
-      if (c * c > best) { best = c * c; worst = i; }
-    }
-    return worst;
-  }
-  if (sq.size() < m) sq.resize(m);
-  const double *__restrict X = xs + lo + 1, *__restrict Y = ys + lo + 1;
-  double* __restrict D = sq.data();
-  for (std::size_t i = 0; i < m; ++i) {
+  const double *X = xs + lo + 1, *Y = ys + lo + 1;
+  auto sq = [&](std::size_t i) {
     const double c = dx * (Y[i] - ay) - dy * (X[i] - ax);
-    D[i] = c * c;
-  }
-  using v2d = double __attribute__((vector_size(16)));
-  v2d w0 = {floor, floor}, w1 = w0;
+    return c * c;
+  };
+  double best = floor;
+  std::size_t at = m;  // none
   std::size_t i = 0;
-  for (; i + 4 <= m; i += 4) {
-    v2d a0, a1;
-    std::memcpy(&a0, D + i, sizeof a0);
-    std::memcpy(&a1, D + i + 2, sizeof a1);
-    w0 = a0 > w0 ? a0 : w0;
-    w1 = a1 > w1 ? a1 : w1;
+  if (m >= 8) {
+    using v2d = double __attribute__((vector_size(16)));
+    auto load = [](const double* p) {
+      v2d v;
+      std::memcpy(&v, p, sizeof v);
+      return v;
+    };
+    auto block = [&](std::size_t b, v2d& c0, v2d& c1) {  // the squares at b .. b+3
+      c0 = dx * (load(Y + b) - ay) - dy * (load(X + b) - ax);
+      c1 = dx * (load(Y + b + 2) - ay) - dy * (load(X + b + 2) - ax);
+      c0 *= c0;
+      c1 *= c1;
+    };
+    std::size_t at_block = m;
+    for (; i + 4 <= m; i += 4) {
+      v2d c0, c1;
+      block(i, c0, c1);
+      const v2d h = c0 > c1 ? c0 : c1;
+      const double top = h[0] > h[1] ? h[0] : h[1];
+      if (top > best) {
+        best = top;
+        at_block = i;
+      }
+    }
+    if (at_block != m)
+      for (at = at_block; sq(at) != best; ++at) {
+      }
   }
-  double best = std::max(std::max(w0[0], w0[1]), std::max(w1[0], w1[1]));
-  for (; i < m; ++i) best = D[i] > best ? D[i] : best;
-  if (!(best > floor)) return lo;
-  std::size_t j = 0;
-  while (D[j] != best) ++j;
-  return lo + 1 + j;
+  for (; i < m; ++i)
+    if (const double d = sq(i); d > best) {
+      best = d;
+      at = i;
+    }
+  return at == m ? lo : lo + 1 + at;
 }
 
 // Douglas-Peucker on the readings b..e (walk indices, inclusive), appending the kept
@@ -142,7 +152,7 @@ std::size_t farthest_from_chord(const double* xs, const double* ys, std::size_t 
 // that every fitted edge stays well under a half turn and turns counter-clockwise about
 // the observer (which LocalMap::validate then checks exactly).
 void simplify(const ScanPoints& P, std::size_t b, std::size_t e, double tol, std::size_t max_span,
-              std::vector<std::size_t>& out, std::vector<std::size_t>& stack, std::vector<double>& sq) {
+              std::vector<std::size_t>& out, std::vector<std::size_t>& stack) {
   stack.clear();
   stack.push_back(e);
   std::size_t lo = b;
@@ -150,7 +160,7 @@ void simplify(const ScanPoints& P, std::size_t b, std::size_t e, double tol, std
     const std::size_t hi = stack.back();
     std::size_t worst = lo;
     if (hi > lo + 1) {
-      worst = farthest_from_chord(P.x.data(), P.y.data(), lo, hi, tol, sq);
+      worst = farthest_from_chord(P.x.data(), P.y.data(), lo, hi, tol);
       if (worst == lo && hi - lo >= max_span) worst = (lo + hi) / 2;
     }
     if (worst == lo) {
@@ -263,13 +273,12 @@ LocalMap local_map_from_scan(const Scan& scan, const MapParams& mp) {
     return CGAL::compare_distance_to_point(m.observer, p, m.vertices[other]) == CGAL::SMALLER ? p_index : other;
   };
   thread_local std::vector<std::size_t> fitted, stack;
-  thread_local std::vector<double> sq;
   const auto quarter_turn = static_cast<std::size_t>(std::max(2.0, std::floor(M_PI / 2 / scan.angle_increment)));
   // Emits the fitted polyline of a run (its first point is already emitted).
   auto flush = [&](const ScanPoints::Run& run) {
     if (run.last == run.first) return;
     fitted.clear();
-    simplify(P, run.first, run.last, mp.simplify, quarter_turn, fitted, stack, sq);
+    simplify(P, run.first, run.last, mp.simplify, quarter_turn, fitted, stack);
     for (auto kw : fitted) B.add(point(kw), EdgeKind::Solid);
   };
 
@@ -283,7 +292,6 @@ LocalMap local_map_from_scan(const Scan& scan, const MapParams& mp) {
       for (std::size_t i = 0; i < n; ++i) B.add(range_point(scan.angle(i)), EdgeKind::Range);
       m.edges.push_back(EdgeKind::Range);
       m.corner.push_back(kNone);
-      straighten_occlusion_edges(m);
       m.validate("scan map");
       return m;
     }
@@ -342,7 +350,10 @@ LocalMap local_map_from_scan(const Scan& scan, const MapParams& mp) {
     m.edges.push_back(EdgeKind::Occlusion);
     m.corner.push_back(nearer_of(m.vertices[0], 0, B.last()));
   }
-  straighten_occlusion_edges(m);
+  // Every edge turns counter-clockwise about the observer by construction: solid and
+  // occlusion-gap edges join readings of different beams, range points step round the
+  // circle, and radial edges are built turned (see `turn`). So, unlike the exact map, a
+  // scan map needs no straightening; validate() checks it exactly.
   m.validate("scan map");
   return m;
 }

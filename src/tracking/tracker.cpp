@@ -34,7 +34,7 @@ bool fit_circle(const std::vector<Vec2>& pts, double r, Vec2& c, double& rms) {
     if (std::abs(det) < 1e-18) break;
     const Vec2 step{(a22 * b1 - a12 * b2) / det, (a11 * b2 - a12 * b1) / det};
     c = c + step;
-    if (step.dot(step) < 1e-18) break;  // converged to a nanometre
+    if (step.dot(step) < 1e-12) break;  // converged to a micrometre (readings are noisy to ~1 cm)
   }
   double ss = 0;
   for (auto& p : pts) ss += ((c - p).norm() - r) * ((c - p).norm() - r);
@@ -154,27 +154,37 @@ Detection detect_target(const Scan& scan, const DetectParams& dp, const std::opt
   return best;
 }
 
-Scan without_target(const Scan& scan, const Detection& d) {
-  Scan s = scan;
-  if (!d.found) return s;
-  const std::size_t n = scan.ranges.size();
+namespace {
+// Replaces the target's readings in s (a copy of the scan) by the background.
+void fill_shadow(Scan& s, const Detection& d) {
+  const std::size_t n = s.ranges.size();
   const bool has_l = d.first > 0, has_r = d.last + 1 < n;
-  const double rl = has_l ? scan.ranges[d.first - 1] : (has_r ? scan.ranges[d.last + 1] : scan.max_range);
-  const double rr = has_r ? scan.ranges[d.last + 1] : rl;
-  const double sat = scan.max_range - 0.05;
+  const double rl = has_l ? s.ranges[d.first - 1] : (has_r ? s.ranges[d.last + 1] : s.max_range);
+  const double rr = has_r ? s.ranges[d.last + 1] : rl;
+  const double sat = s.max_range - 0.05;
   for (std::size_t k = d.first; k <= d.last; ++k) {
     if (rl >= sat || rr >= sat) {
-      s.ranges[k] = scan.max_range;
+      s.ranges[k] = s.max_range;
     } else {
       const double f = static_cast<double>(k - d.first + 1) / static_cast<double>(d.last - d.first + 2);
       s.ranges[k] = rl + f * (rr - rl);
     }
   }
+}
+}  // namespace
+
+Scan without_target(const Scan& scan, const Detection& d) {
+  Scan s = scan;
+  if (d.found) fill_shadow(s, d);
   return s;
 }
 
 LocalMap local_map_without_target(const Scan& scan, const Detection& d, const MapParams& mp) {
-  return local_map_from_scan(d.found ? without_target(scan, d) : scan, mp);
+  if (!d.found) return local_map_from_scan(scan, mp);
+  thread_local Scan filled;  // (assignment reuses its buffer: one scan per TRACK iteration)
+  filled = scan;
+  fill_shadow(filled, d);
+  return local_map_from_scan(filled, mp);
 }
 
 namespace {
@@ -206,9 +216,11 @@ TrackStep track(const Scan& scan, const TrackerParams& tp, const std::optional<P
   TrackStep out;
   out.detection = detect_target(scan, tp.detect, prior);
   out.map = local_map_without_target(scan, out.detection, tp.map);
-  if (!out.detection.found || !out.map.strictly_contains(out.detection.center)) return out;
+  if (!out.detection.found) return out;
+  auto tree = try_escape_path_tree(out.map, out.detection.center);
+  if (!tree) return out;  // the target is not inside V
   out.tracked = true;
-  out.tree = escape_path_tree(out.map, out.detection.center);
+  out.tree = std::move(*tree);
   out.risks = escape_risks(out.map, out.tree, tp.risk);
   out.gradient = tp.aggregation == Aggregation::Recursive ? recursive_average(out.tree, out.risks) : plain_average(out.risks);
   out.command = risk_command(out.gradient, out.detection.center, tp.control);

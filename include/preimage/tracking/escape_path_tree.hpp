@@ -14,6 +14,7 @@
 #include <preimage/tracking/local_map.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace preimage::tracking {
@@ -56,5 +57,8 @@ struct EscapePathTree {
 /// The escape-path tree of `target` in `map` (validated). Throws InputError if the target
 /// is not strictly inside V.
 EscapePathTree escape_path_tree(const LocalMap& map, const Point& target);
+/// The same, or nothing if the target is not strictly inside V (TRACK's case of a target
+/// detected outside its own map), without an exception.
+std::optional<EscapePathTree> try_escape_path_tree(const LocalMap& map, const Point& target);
 
 }  // namespace preimage::tracking
