@@ -168,7 +168,16 @@ LocalMap local_map_from_visibility(const geometry::VisibilityPolygon& vis) {
     if (c.corner[e] != kNone && c.corner[e] != e && c.corner[e] != c.next(e)) c.corner[e] = static_cast<std::uint32_t>(e);
   m = std::move(c);
   straighten_occlusion_edges(m);
-  m.validate("visibility polygon");
+  try {
+    m.validate("visibility polygon");
+  } catch (const InputError& e) {
+    // Rays from an observer exactly (or within rounding) in line with two obstacle
+    // vertices hit nearly one point; rounded to doubles, their hits can swap order.
+    throw InputError("observer at " + geometry::format_point(vis.query) +
+                     ": its visibility polygon, rounded to doubles, is not star-shaped (the observer is in line "
+                     "with obstacle vertices, so rays through them nearly coincide); move it off that line. " +
+                     e.what());
+  }
   return m;
 }
 
