@@ -57,6 +57,22 @@ TEST(TrackingFixtures, ObserverInLineWithObstacleVerticesIsRejectedClearly) {
   EXPECT_NO_THROW(local_map_from_visibility(index.compute(Point(3.001, 7.8))));
 }
 
+TEST(TrackingFixtures, SolidEdgeSeenEdgeOnIsStraightened) {
+  // In the lab, (12, 6.55) is on the line of an obstacle edge: V has a solid edge seen
+  // edge-on (radial), and rounded to doubles it turned clockwise, so V was rejected.
+  // Straightening solid edges like occlusion edges fixed it (found by evaluate on the lab,
+  // pinned down by a sweep of observers along obstacle edges' lines).
+  const auto sc = scene::load_scene(std::string(PREIMAGE_FIXTURES) + "/scenes/lab_solid_edge_seen_edge_on.json");
+  const geometry::VisibilityIndex index(sc.require_environment());
+  const LocalMap map = local_map_from_visibility(index.compute(*sc.tracking->observer));
+  const Point t = *sc.tracking->target;
+  ASSERT_TRUE(map.strictly_contains(t));
+  const EscapePathTree tree = escape_path_tree(map, t);
+  const auto oracle = preimage::testing::brute_force_sde(map, t);
+  ASSERT_EQ(tree.paths.size(), oracle.size());
+  for (std::size_t i = 0; i < oracle.size(); ++i) EXPECT_NEAR(tree.paths[i].length, oracle[i], 1e-9 * (1 + oracle[i]));
+}
+
 TEST(TrackingAggregation, ChairSceneRecursiveAverageDiffersFromPlain) {
   // Figs. 4-5: the chair's legs give many free edges on one branch (around the
   // partition's corner). The plain average is pulled towards them (left, behind the
