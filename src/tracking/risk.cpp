@@ -40,6 +40,7 @@ EdgeRisk corner_risk(const Point& observer, const Point& corner, const Point& pi
 
 std::vector<EdgeRisk> escape_risks(const LocalMap& map, const EscapePathTree& tree, const RiskParams& rp) {
   std::vector<EdgeRisk> out;
+  out.reserve(tree.paths.size());
   for (std::uint32_t i = 0; i < tree.paths.size(); ++i) {
     const EscapePath& p = tree.paths[i];
     if (p.kind != EdgeKind::Occlusion) continue;
@@ -62,8 +63,10 @@ Vec2 plain_average(const std::vector<EdgeRisk>& risks) {
 
 Vec2 recursive_average(const EscapePathTree& tree, const std::vector<EdgeRisk>& risks) {
   const std::size_t n = tree.nodes.size();
-  std::vector<Vec2> sum(n);
-  std::vector<int> count(n, 0);
+  thread_local std::vector<Vec2> sum;  // (per-thread scratch: one average per TRACK iteration)
+  thread_local std::vector<int> count;
+  sum.assign(n, Vec2{});
+  count.assign(n, 0);
   for (auto& r : risks) {
     const std::uint32_t v = tree.paths[r.path].node;
     sum[v] = sum[v] + r.gradient;
