@@ -38,8 +38,9 @@ void run_ept(const std::string& file, const std::string& observer, const std::st
   if (geometry::locate(env, o).kind != geometry::Location::Kind::Interior)
     throw InputError("--observer " + observer + ": not in the open free space of " + file);
   const LocalMap map = exact_local_map(index, o);
-  if (!map.strictly_contains(t)) throw InputError("--target " + target + ": not strictly inside the observer's visibility polygon");
-  const EscapePathTree tree = escape_path_tree(map, t);
+  const auto inside = try_escape_path_tree(map, t);
+  if (!inside) throw InputError("--target " + target + ": not strictly inside the observer's visibility polygon");
+  const EscapePathTree& tree = *inside;
   RiskParams rp;
   rp.delta = radius > 0 ? radius : (sc.tracking ? sc.tracking->target_radius : rp.delta);
   rp.m = m;

@@ -82,9 +82,8 @@ ReplayScan replay_scan(const Scan& scan, const TrackerParams& tp, double ahead) 
   r.solid = map.count(EdgeKind::Solid);
   r.occlusion = map.count(EdgeKind::Occlusion);
   r.range = map.count(EdgeKind::Range);
-  std::optional<Point> target;
-  if (det.found && map.strictly_contains(det.center)) {
-    target = det.center;
+  std::optional<EscapePathTree> tree;
+  if (det.found && (tree = try_escape_path_tree(map, det.center))) {
     r.target_rule = "detected";
   } else {
     // Straight ahead: the beam nearest angle 0.
@@ -98,22 +97,20 @@ ReplayScan replay_scan(const Scan& scan, const TrackerParams& tp, double ahead) 
     for (std::size_t b : beams) {
       const double d = std::min(ahead, 0.5 * std::min(scan.ranges[b], scan.max_range));
       const Point p(d * std::cos(scan.angle(b)), d * std::sin(scan.angle(b)));
-      if (d > 0 && map.strictly_contains(p)) {
-        target = p;
+      if (d > 0 && (tree = try_escape_path_tree(map, p))) {
         r.target_rule = b == beams.front() && beams.size() == 2 ? "ahead" : "longest beam";
         break;
       }
     }
   }
-  if (target) {
-    r.target = *target;
-    const EscapePathTree tree = escape_path_tree(map, *target);
-    const auto risks = escape_risks(map, tree, tp.risk);
-    r.gradient = recursive_average(tree, risks);
+  if (tree) {
+    r.target = tree->target;
+    const auto risks = escape_risks(map, *tree, tp.risk);
+    r.gradient = recursive_average(*tree, risks);
     r.has_tree = true;
-    r.sde = tree.sde();
-    r.tree_nodes = tree.nodes.size();
-    r.escape_paths = tree.paths.size();
+    r.sde = tree->sde();
+    r.tree_nodes = tree->nodes.size();
+    r.escape_paths = tree->paths.size();
   } else {
     r.target_rule = "none";
   }

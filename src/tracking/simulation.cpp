@@ -217,8 +217,9 @@ SimulationResult simulate(const TrackingScenario& sc, const SimulationParams& sp
           } catch (const InputError&) {
             continue;  // a degenerate V at this candidate: skip it
           }
-          if (!m.strictly_contains(estimate)) continue;
-          const double sde = std::min(escape_path_tree(m, estimate).sde(), 1e9);
+          const auto tree = try_escape_path_tree(m, estimate);
+          if (!tree) continue;
+          const double sde = std::min(tree->sde(), 1e9);
           const double tie = std::abs(c.v - naive.v) + std::abs(c.omega - naive.omega);
           if (sde > best + 1e-9 || (std::abs(sde - best) <= 1e-9 && tie < best_tie)) {
             best = sde;
@@ -251,18 +252,16 @@ SimulationResult simulate(const TrackingScenario& sc, const SimulationParams& sp
       } catch (const InputError&) {
         ok = false;  // keep the previous plan
       }
-      if (ok && m.strictly_contains(t)) {
-        const EscapePathTree tree = escape_path_tree(m, t);
-        if (tree.shortest != kNone) {
-          plan = tree.polyline(tree.shortest);
-          // and on past the escape point, out of sight
-          const Point& a = plan[plan.size() - 2];
-          const Point& b = plan.back();
-          const double len = dist(a, b);
-          if (len > 0) {
-            const Point beyond(b.x() + (b.x() - a.x()) / len, b.y() + (b.y() - a.y()) / len);
-            if (geometry::visible(env, b, beyond)) plan.push_back(beyond);
-          }
+      const auto tree = ok ? try_escape_path_tree(m, t) : std::nullopt;
+      if (tree && tree->shortest != kNone) {
+        plan = tree->polyline(tree->shortest);
+        // and on past the escape point, out of sight
+        const Point& a = plan[plan.size() - 2];
+        const Point& b = plan.back();
+        const double len = dist(a, b);
+        if (len > 0) {
+          const Point beyond(b.x() + (b.x() - a.x()) / len, b.y() + (b.y() - a.y()) / len);
+          if (geometry::visible(env, b, beyond)) plan.push_back(beyond);
         }
       }
     }
