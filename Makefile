@@ -2,6 +2,7 @@
 BUILD      ?= build
 BENCH_BUILD?= build-bench
 JOBS       ?= $(shell nproc)
+BUILD_TYPE ?= Release
 CMAKE_ARGS ?=
 
 .PHONY: all deps build demo test bench install clean
@@ -12,15 +13,18 @@ deps:
 	@scripts/install-deps
 
 $(BUILD)/CMakeCache.txt: | deps
-	cmake -S . -B $(BUILD) $(CMAKE_ARGS)
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) $(CMAKE_ARGS)
 
+# The library and the tool only: what `make demo` needs.
 build: deps $(BUILD)/CMakeCache.txt
-	cmake --build $(BUILD) -j $(JOBS)
+	cmake --build $(BUILD) -j $(JOBS) --target preimage_cli
 
 demo: build
 	$(BUILD)/preimage demo --out $(BUILD)/demo
 
-test: build
+# Everything (tests included), then the whole suite.
+test: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS)
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 # Benchmarks build in Release in their own tree; results go to build/bench/*.json.

@@ -35,9 +35,19 @@ void run_validate(const std::string& path, bool as_json) {
                                                 {"equal_x_coordinates", equal_x.has_value()}}}};
     text += ": " + std::to_string(env.num_vertices()) + " vertices (" + std::to_string(env.ring_size(0)) +
             " on the boundary), " + std::to_string(env.num_holes()) + " obstacles, free area " + geometry::format_number(env.area());
+    // Every degeneracy the JSON reports is named in the text too.
+    std::vector<std::string> degenerate;
     if (collinear)
-      text += "; not in general position (" + geometry::describe_vertex(env, (*collinear)[0]) + ", " +
-              geometry::describe_vertex(env, (*collinear)[1]) + ", " + geometry::describe_vertex(env, (*collinear)[2]) + " collinear)";
+      degenerate.push_back(geometry::describe_vertex(env, (*collinear)[0]) + ", " + geometry::describe_vertex(env, (*collinear)[1]) +
+                           " and " + geometry::describe_vertex(env, (*collinear)[2]) + " are collinear");
+    if (equal_x)
+      degenerate.push_back(geometry::describe_vertex(env, (*equal_x)[0]) + " and " + geometry::describe_vertex(env, (*equal_x)[1]) +
+                           " have equal x-coordinates");
+    if (!straight.empty())
+      degenerate.push_back(std::to_string(straight.size()) + (straight.size() == 1 ? " straight vertex" : " straight vertices") +
+                           " (collinear with both neighbours)");
+    for (std::size_t i = 0; i < degenerate.size(); ++i)
+      text += (i ? "; " : "; not in general position: ") + degenerate[i];
   } else {
     text += ": no environment";
   }

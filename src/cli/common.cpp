@@ -3,6 +3,7 @@
 
 #include <preimage/error.hpp>
 
+#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -49,6 +50,46 @@ nlohmann::json points_json(const std::vector<geometry::Point>& pts) {
   nlohmann::json out = nlohmann::json::array();
   for (const auto& p : pts) out.push_back({p.x(), p.y()});
   return out;
+}
+
+CLI::Validator integer_in(std::int64_t lo, std::int64_t hi) {
+  return CLI::Validator(
+      [lo, hi](std::string& text) -> std::string {
+        const std::string range = "expected an integer from " + std::to_string(lo) + " to " + std::to_string(hi);
+        std::int64_t v = 0;
+        const char* first = text.data();
+        const char* last = text.data() + text.size();
+        if (first != last && *first == '+') ++first;
+        const auto [ptr, ec] = std::from_chars(first, last, v);
+        if (ec == std::errc::result_out_of_range) return range + ", got '" + text + "' (out of range)";
+        if (ec != std::errc() || ptr != last || first == last) return range + ", got '" + text + "'";
+        if (v < lo || v > hi) return range + ", got " + text;
+        return {};
+      },
+      "INT in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+}
+
+CLI::Validator number_in(double lo, double hi, bool lo_open, bool hi_open) {
+  auto fmt = [](double v) {
+    std::ostringstream ss;
+    ss << v;
+    return ss.str();
+  };
+  const std::string range = std::string(lo_open ? "(" : "[") + fmt(lo) + ", " + fmt(hi) + (hi_open ? ")" : "]");
+  return CLI::Validator(
+      [=](std::string& text) -> std::string {
+        std::size_t used = 0;
+        double v = 0;
+        try {
+          v = std::stod(text, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        if (used == 0 || used != text.size() || !std::isfinite(v)) return "expected a number in " + range + ", got '" + text + "'";
+        if (v < lo || v > hi || (lo_open && v == lo) || (hi_open && v == hi)) return "expected a number in " + range + ", got " + text;
+        return {};
+      },
+      "NUMBER in " + range);
 }
 
 void print_json(const nlohmann::json& j) { std::cout << j.dump(2) << "\n"; }

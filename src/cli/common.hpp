@@ -27,6 +27,20 @@ nlohmann::json point_json(const geometry::ExactPoint& p);
 nlohmann::json points_json(const std::vector<geometry::Point>& pts);
 /// "(2, -3)": a winding vector or any integer tuple.
 std::string tuple_string(std::span<const std::int64_t> v);
+/// Validator for an integer flag in [lo, hi]: anything else ("-1" for a count, "1e3", "7x",
+/// out of range) is a usage error naming the flag and the range, before the value is
+/// converted (so a negative count never wraps to a huge one).
+CLI::Validator integer_in(std::int64_t lo, std::int64_t hi);
+/// Validator for a finite number in [lo, hi] (lo_open / hi_open exclude the ends).
+CLI::Validator number_in(double lo, double hi, bool lo_open = false, bool hi_open = false);
+
+/// An integer option checked by integer_in(lo, hi), its default shown in --help.
+template <class T>
+CLI::Option* add_count(CLI::App* cmd, const std::string& name, T& value, std::int64_t lo, std::int64_t hi,
+                       const std::string& help) {
+  return cmd->add_option(name, value, help)->check(integer_in(lo, hi))->capture_default_str();
+}
+
 /// Prints JSON to stdout, pretty.
 void print_json(const nlohmann::json& j);
 

@@ -2,6 +2,7 @@
 #include <preimage/geometry/environment.hpp>
 
 #include <preimage/error.hpp>
+#include <preimage/geometry/coordinates.hpp>
 #include <preimage/geometry/segment_sweep.hpp>
 
 #include <CGAL/Polygon_2_algorithms.h>
@@ -53,8 +54,9 @@ Environment Environment::make(Ring outer, std::vector<Ring> holes, const std::st
     if (ring.size() < 3)
       throw InputError(names[r] + ": a polygon needs at least 3 vertices, got " + std::to_string(ring.size()));
     for (std::size_t i = 0; i < ring.size(); ++i)
-      if (!std::isfinite(ring[i].x()) || !std::isfinite(ring[i].y()))
-        throw InputError(names[r] + ": vertex " + std::to_string(i) + " has a non-finite coordinate");
+      for (double c : {ring[i].x(), ring[i].y()})
+        if (auto why = coordinate_problem(c); !why.empty())
+          throw InputError(names[r] + ": vertex " + std::to_string(i) + ": " + why);
   }
 
   // Flatten (input order for now) so every error speaks in input indices.

@@ -2,6 +2,7 @@
 #include <preimage/scene/scene.hpp>
 
 #include <preimage/error.hpp>
+#include <preimage/geometry/coordinates.hpp>
 
 #include <cmath>
 #include <fstream>
@@ -59,9 +60,17 @@ double number(const json& j, const std::string& path) {
   return v;
 }
 
+double coordinate(const json& j, const std::string& path) {
+  const double v = number(j, path);
+  if (auto why = geometry::coordinate_problem(v); !why.empty()) fail(path, why);
+  return v;
+}
+
 Point point(const json& j, const std::string& path) {
   if (!j.is_array() || j.size() != 2) fail(path, "expected [x, y], got " + (j.is_array() ? "an array of " + std::to_string(j.size()) : type_name(j)));
-  return Point(number(j[0], path + "[0]"), number(j[1], path + "[1]"));
+  const double x = coordinate(j[0], path + "[0]");  // x first: the error names the first bad one
+  const double y = coordinate(j[1], path + "[1]");
+  return Point(x, y);
 }
 
 geometry::Ring ring(const json& j, const std::string& path) {

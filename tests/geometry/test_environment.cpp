@@ -36,7 +36,12 @@ TEST(Environment, ErrorsNameTheElement) {
   EXPECT_EQ(error_of({{0, 0}, {2, 0}, {0, 2}, {2, 2}}), "boundary: edges 1 and 3 intersect near (1, 1)");
   EXPECT_EQ(error_of({{0, 0}, {1, 0}, {1, 0}, {0, 1}}), "boundary: vertices 1 and 2 are repeated at (1, 0)");
   EXPECT_EQ(error_of({{0, 0}, {std::numeric_limits<double>::quiet_NaN(), 0}, {0, 1}}),
-            "boundary: vertex 1 has a non-finite coordinate");
+            "boundary: vertex 1: number is not finite");
+  // The supported range (geometry/coordinates.hpp): huge and subnormal values are refused
+  // where they enter, naming the vertex (they crashed visibility and landmarks, issue 26).
+  EXPECT_NE(error_of({{-1e308, -1e308}, {1e308, -1e308}, {1e308, 1e308}}).find("boundary: vertex 0: coordinate"), std::string::npos);
+  EXPECT_NE(error_of({{0, 0}, {5e-324, 0}, {0, 1}}).find("boundary: vertex 1: coordinate is subnormal"), std::string::npos);
+  EXPECT_EQ(error_of({{0, 0}, {1e12, 0}, {0, 1e-300}}), "");
   EXPECT_EQ(error_of(square, {{{20, 20}, {21, 20}, {21, 21}}}), "obstacles[0]: lies outside boundary");
   EXPECT_EQ(error_of(square, {{{1, 1}, {9, 1}, {9, 9}, {1, 9}}, {{2, 2}, {3, 2}, {3, 3}}}),
             "obstacles[1]: lies inside obstacles[0]");

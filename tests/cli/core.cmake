@@ -1,0 +1,71 @@
+# End-to-end tests of the command line: geometry, scene, render, decompose and the tool itself. Included from tests/CMakeLists.txt,
+# which defines cli_test(), EXPECT, FIX, EXAMPLES, FLOORPLANS and OUT.
+cli_test(help 0 "Subcommands:" - --help)
+cli_test(no_command fail "preimage: .*subcommand" -)
+cli_test(unknown_flag fail "preimage: .*--bogus" - validate ${EXAMPLES}/gallery.json --bogus)
+cli_test(validate_example 0 "ok: .*gallery.json: 20 vertices .* 3 obstacles" - validate ${EXAMPLES}/gallery.json)
+cli_test(validate_names_equal_x 0 "not in general position: .* have equal x-coordinates" - validate ${FIX}/scenes/stacked_vertical_vertices.json)
+cli_test(visibility_huge_coordinates fail "^preimage: \\$\\.environment\\.boundary\\[0\\]\\[0\\]: coordinate .* outside the supported range" -
+         visibility ${FIX}/scenes/huge_coordinates.json --from 5,5)
+cli_test(landmarks_subnormal_coordinates fail "\\$\\.landmarks\\[1\\]\\.at\\[0\\]: coordinate is subnormal" -
+         landmarks swap-graph ${FIX}/scenes/subnormal_landmarks.json)
+cli_test(validate_json 0 "\"obstacles\": 3" - validate ${EXAMPLES}/gallery.json --json)
+cli_test(validate_self_intersecting fail "^preimage: \\$\\.environment\\.boundary: edges 1 and 3 intersect near \\(1, 1\\)$" -
+         validate ${FIX}/scenes/self_intersecting.json)
+cli_test(validate_unknown_key fail "\\$\\.environment\\.walls: unknown key" - validate ${FIX}/scenes/unknown_key.json)
+cli_test(validate_syntax_error fail "syntax_error\\.json:3:33: JSON syntax error" - validate ${FIX}/scenes/syntax_error.json)
+cli_test(validate_bad_coordinate fail "\\$\\.environment\\.obstacles\\[0\\]\\[2\\]\\[1\\]: expected a number" -
+         validate ${FIX}/scenes/bad_coordinate.json)
+cli_test(validate_missing_file fail "nope\\.json: cannot open file" - validate ${FIX}/nope.json)
+cli_test(import_visilibity 0 "wrote .*: 8 vertices, 1 obstacles" ${OUT}/pillar.json
+         import ${FIX}/visilibity/room_with_pillar.txt --from visilibity -o ${OUT}/pillar.json)
+cli_test(import_visilibity_bad_token fail "bad_token\\.txt:3: expected 'x y', got '10 zero'" -
+         import ${FIX}/visilibity/bad_token.txt --from visilibity -o ${OUT}/never.json)
+cli_test(import_unknown_format fail "--from: unknown format 'dxf'" - import ${FIX}/visilibity/bad_token.txt --from dxf -o ${OUT}/x.json)
+cli_test(render 0 "wrote" ${OUT}/gallery.svg render ${EXAMPLES}/gallery.json -o ${OUT}/gallery.svg --triangulation)
+cli_test(visibility_text 0 "visibility polygon from \\(1, 1\\) \\(interior\\): [0-9]+ vertices" -
+         visibility ${EXAMPLES}/gallery.json --from 1,1)
+cli_test(visibility_json 0 "\"kind\": \"free\"" - visibility ${EXAMPLES}/gallery.json --from 1,1 --json)
+cli_test(visibility_on_edge 0 "\\(on-edge\\)" - visibility ${EXAMPLES}/gallery.json --from 12,2)
+cli_test(visibility_at_vertex 0 "\\(at-vertex\\)" - visibility ${EXAMPLES}/gallery.json --from 3,3)
+cli_test(visibility_svg 0 "wrote" ${OUT}/vis.svg visibility ${EXAMPLES}/gallery.json --from 1,1 --svg ${OUT}/vis.svg)
+cli_test(visibility_in_obstacle fail "query point \\(2.5, 2.5\\) is not in free space: it lies inside \\$\\.environment\\.obstacles\\[0\\]$" - visibility ${EXAMPLES}/gallery.json --from 2.5,2.5)
+cli_test(visibility_bad_point fail "--from: expected X,Y" - visibility ${EXAMPLES}/gallery.json --from 1:2)
+cli_test(decompose_text 0 "trapezoidal decomposition: 12 cells, 14 adjacencies" - decompose ${EXAMPLES}/gallery.json)
+cli_test(decompose_json 0 "\"method\": \"trapezoidal\"" - decompose ${EXAMPLES}/gallery.json --json)
+cli_test(decompose_svg 0 "wrote" ${OUT}/decompose.svg decompose ${EXAMPLES}/gallery.json --svg ${OUT}/decompose.svg)
+cli_test(decompose_office 0 "cells" - decompose ${FIX}/scenes/office_walls.json)
+cli_test(decompose_boustrophedon 0 "10 cells \\(12 trapezoids\\), 8 critical points.*10 = 8 \\+ 3 - 1" - decompose ${EXAMPLES}/gallery.json --method boustrophedon)
+cli_test(decompose_boustrophedon_angle_json 0 "\"reeb_graph\"" ${OUT}/boustrophedon.svg decompose ${FIX}/scenes/office_walls.json --method boustrophedon --angle 30 --json --svg ${OUT}/boustrophedon.svg)
+cli_test(decompose_angle_needs_boustrophedon fail "--angle: the trapezoidal decomposition sweeps along x" - decompose ${EXAMPLES}/gallery.json --angle 10)
+cli_test(cover_text 0 "coverage with width 0.5 at 0 degrees: length [0-9.]+ \\(bound [0-9.]+\\), [0-9]+ laps" - cover ${EXAMPLES}/gallery.json --width 0.5)
+cli_test(cover_auto_json_svg 0 "\"laps\"" ${OUT}/cover.svg cover ${EXAMPLES}/gallery.json --width 0.5 --angle auto --json --svg ${OUT}/cover.svg)
+cli_test(cover_bad_width fail "--width: the tool width must be a positive number" - cover ${EXAMPLES}/gallery.json --width -1)
+cli_test(cover_bad_angle fail "--angle: expected degrees or 'auto', got 'north'" - cover ${EXAMPLES}/gallery.json --width 1 --angle north)
+cli_test(decompose_stacked_vertices 0 "N_cells = N_critical \\+ N_obstacles - 1: ([0-9]+) = " - decompose ${FIX}/scenes/stacked_vertical_vertices.json --method boustrophedon)
+cli_test(cover_stacked_vertices 0 "coverage with width 0.3" - cover ${FIX}/scenes/stacked_vertical_vertices.json --width 0.3)
+cli_test(plan_stacked_vertices 0 "path from \\(0.5, 0.5\\) to \\(5.5, 5.5\\)" - plan ${FIX}/scenes/stacked_vertical_vertices.json)
+cli_test(decompose_unknown_method fail "--method" - decompose ${EXAMPLES}/gallery.json --method voronoi)
+cli_test(plan_scene_start_goal 0 "path from \\(1, 1\\) to \\(11, 7\\): [0-9]+ points" - plan ${EXAMPLES}/gallery.json)
+cli_test(plan_flags_json 0 "\"found\": true" ${OUT}/plan.svg plan ${EXAMPLES}/gallery.json --start 0.5,7.5 --goal 11.5,0.5 --json --svg ${OUT}/plan.svg)
+cli_test(plan_start_in_obstacle fail "start \\(2.5, 2.5\\) is not in free space: it lies inside \\$\\.environment\\.obstacles\\[0\\]" -
+         plan ${EXAMPLES}/gallery.json --start 2.5,2.5)
+cli_test(demo 0 "index\\.html" ${OUT}/demo/index.html demo --out ${OUT}/demo)
+
+# The real floor plans live in ../shared/data beside the checkout (CI has them there).
+if(EXISTS ${FLOORPLANS}/house_expo_room_0000.json)
+  cli_test(import_houseexpo_0000 0 "wrote .*: 147 vertices" ${OUT}/house0000.json
+           import ${FLOORPLANS}/house_expo_room_0000.json --from houseexpo -o ${OUT}/house0000.json)
+  cli_test(import_houseexpo_1451 0 "wrote .*: 434 vertices" ${OUT}/house1451.json
+           import ${FLOORPLANS}/house_expo_room_1451.json --from houseexpo -o ${OUT}/house1451.json)
+  cli_test(validate_imported_houseexpo 0 "ok: .*147 vertices" - validate ${OUT}/house0000.json)
+  set_tests_properties(cli.validate_imported_houseexpo PROPERTIES DEPENDS cli.import_houseexpo_0000)
+  cli_test(visibility_houseexpo 0 "\"location\": \"interior\"" - visibility ${OUT}/house1451.json --from 3,3 --json)
+  set_tests_properties(cli.visibility_houseexpo PROPERTIES DEPENDS cli.import_houseexpo_1451)
+  cli_test(decompose_houseexpo 0 "26 cells \\(225 trapezoids\\), 27 critical points" - decompose ${OUT}/house1451.json --method boustrophedon)
+  cli_test(plan_houseexpo 0 "path from \\(1, 1\\) to \\(9, 7\\)" - plan ${OUT}/house1451.json --start 1,1 --goal 9,7)
+  cli_test(cover_houseexpo 0 "coverage with width 0.4 at" - cover ${OUT}/house1451.json --width 0.4 --angle auto)
+  set_tests_properties(cli.decompose_houseexpo cli.plan_houseexpo cli.cover_houseexpo PROPERTIES DEPENDS cli.import_houseexpo_1451)
+else()
+  message(WARNING "shared data not found at ${FLOORPLANS}: the real floor-plan CLI tests are not registered")
+endif()

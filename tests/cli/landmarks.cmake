@@ -1,0 +1,13 @@
+# End-to-end tests of the command line: landmarks. Included from tests/CMakeLists.txt,
+# which defines cli_test(), EXPECT, FIX, EXAMPLES, FLOORPLANS and OUT.
+cli_test(landmarks_patrol_on_hull fail "landmark '1' is on the convex hull of all landmarks" - landmarks patrol ${LANDMARKS}/eight.json --watch 1)
+cli_test(landmarks_patrol_bad_label fail "--watch: no landmark labelled 'x' \\(token 2, at character 3\\)" - landmarks patrol ${LANDMARKS}/eight.json --watch 3,x)
+cli_test(landmarks_navigate_learn 0 "^robot: reached a cell reading the goal with [0-9]+ primitives" - landmarks navigate ${LANDMARKS}/eight.json --goal 1,3,2,5,8,6,4,7 --learn --svg ${OUT}/nav.svg)
+cli_test(landmarks_navigate_outside 0 "^robot: not realizable in a cell meeting the hull: the hull landmarks are out of their counter-clockwise order" -
+         landmarks navigate ${LANDMARKS}/eight.json --goal 1,5,3,7,8,4,6,2 --learn)
+cli_test(landmarks_navigate_short_goal fail "--goal: a cyclic permutation of all 8 landmarks is needed, got 3" - landmarks navigate ${LANDMARKS}/eight.json --goal 1,3,2)
+cli_test(landmarks_swap_graph 0 "^swap cell decomposition of 8 landmarks \\(56 swap rays\\): 153 cells, 16 meeting the hull. swap graph: 264 edges" -
+         landmarks swap-graph ${LANDMARKS}/eight.json --svg ${OUT}/swap.svg)
+cli_test(landmarks_swap_graph_learn 0 "^agrees with the coordinates: yes$" - landmarks swap-graph ${LANDMARKS}/six.json --learn)
+cli_test(landmarks_swap_graph_fig09 0 "sharing their permutation with another cell \\(Theorem 13\\): [1-9]" - landmarks swap-graph ${LANDMARKS}/fig09_equal_outside.json)
+cli_test(landmarks_swap_graph_json 0 "\"meets_hull\": true" - landmarks swap-graph ${LANDMARKS}/six.json --json)

@@ -1,0 +1,21 @@
+# End-to-end tests of the command line: wallfollow. Included from tests/CMakeLists.txt,
+# which defines cli_test(), EXPECT, FIX, EXAMPLES, FLOORPLANS and OUT.
+set(WF ${EXAMPLES}/wallfollow)
+cli_test(wallfollow_simulate 0 "LFOLLOW -> stage 7: EDGE\\+pebble, robot at edge v6-v1 at \\(0, 1\\)" -
+         wallfollow simulate ${WF}/fig03_two_reflex.json --start 3,2 --actions "INIT,RFOLLOW,JUMP,DROP,RFOLLOW,LFOLLOW")
+cli_test(wallfollow_simulate_inapplicable fail "action 3 \\(JUMP\\) is not applicable: JUMP: the robot is not at a reflex vertex" -
+         wallfollow simulate ${WF}/fig03_two_reflex.json --start 3,2 --actions "INIT,DROP,JUMP")
+cli_test(wallfollow_lying_pebble 0 "RFOLLOW -> stage 3: EDGE\\+pebble, robot at edge v6-v1 at \\(0, 2\\)" -
+         wallfollow simulate ${WF}/fig03_two_reflex.json --start 0,4 --pebble 0,2 --actions "INIT,RFOLLOW,GRAB")
+cli_test(wallfollow_bad_action fail "action 2 'JUMPP' at offset 5: unknown action" - wallfollow simulate ${WF}/fig03_two_reflex.json --actions "INIT,JUMPP")
+cli_test(wallfollow_simulate_json 0 "\"k8_vertex_count\"" - wallfollow simulate ${WF}/fig05_rooms.json --actions "INIT,DROP" --json)
+cli_test(wallfollow_count 0 "vertex count 13 \\(k8, Prop. 2\\)" - wallfollow count ${WF}/fig05_rooms.json)
+cli_test(wallfollow_count_clockwise 0 "winding number -1" - wallfollow count ${WF}/fig03_two_reflex.json --clockwise)
+cli_test(wallfollow_cut_ordering 0 "cut ordering \\(v1, v2, v3, l5, r2, v4, v5, v6, l2, r5\\)" - wallfollow cut-ordering ${WF}/fig03_two_reflex.json)
+cli_test(wallfollow_learn 0 "equal to the true ordering up to relabelling: yes" ${OUT}/wallfollow-cut-diagram.svg
+         wallfollow cut-ordering ${WF}/fig05_rooms.json --learn --svg ${OUT}/wallfollow-cut-diagram.svg)
+cli_test(wallfollow_learn_json 0 "\"equals_true_up_to_relabelling\": true" - wallfollow cut-ordering ${WF}/fig05_rooms.json --learn --sort all-pairs --json)
+cli_test(wallfollow_collinear fail "vertices 0, 1 and 2 are collinear" - wallfollow count ${FIX}/scenes/wallfollow_collinear.json)
+cli_test(wallfollow_obstacles fail "needs a simply connected environment" - wallfollow count ${EXAMPLES}/gallery.json)
+cli_test(wallfollow_start_outside fail "start \\(9, 9\\) is not in the environment" - wallfollow count ${WF}/fig03_two_reflex.json --start 9,9)
+cli_test(wallfollow_bad_sort fail "--sort: expected quick or all-pairs" - wallfollow cut-ordering ${WF}/fig03_two_reflex.json --learn --sort bubble)
