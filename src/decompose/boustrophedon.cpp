@@ -12,7 +12,8 @@
 
 namespace preimage::decompose {
 
-BoustrophedonDecomposition::BoustrophedonDecomposition(const Environment& env, double angle_deg) : angle_(angle_deg) {
+BoustrophedonDecomposition::BoustrophedonDecomposition(const Environment& env, double angle_deg)
+    : input_(&env), angle_(angle_deg) {
   // Sweep coordinates: rotate the input by -angle so the sweep runs along +x.
   const double turns = angle_deg / 90.0;
   const bool quarter = std::isfinite(turns) && turns == std::round(turns);
@@ -40,6 +41,10 @@ BoustrophedonDecomposition::BoustrophedonDecomposition(const Environment& env, d
                      " degrees: the environment rotated to sweep coordinates is invalid (" + e.what() + ")");
   }
   trap_ = std::make_unique<TrapezoidalDecomposition>(*rotated_);
+  by_xy_.resize(rotated_->num_vertices());
+  std::iota(by_xy_.begin(), by_xy_.end(), 0u);
+  std::sort(by_xy_.begin(), by_xy_.end(),
+            [&](auto a, auto b) { return geometry::lex_less_xy(rotated_->vertex(a), rotated_->vertex(b)); });
   const auto& T = trap_->cells();
   const auto& X = trap_->extensions();
   const std::uint32_t nt = static_cast<std::uint32_t>(T.size());
@@ -105,25 +110,112 @@ Point BoustrophedonDecomposition::to_input(const Point& p) const {
   return Point(cos_ * p.x() - sin_ * p.y(), sin_ * p.x() + cos_ * p.y());
 }
 
-std::vector<Point> BoustrophedonDecomposition::polygon(std::size_t c) const {
+void BoustrophedonDecomposition::vertices_on_line(double c, const ExactFT& lo, const ExactFT& hi,
+                                                  std::vector<std::uint32_t>& out) const {
+  const Environment& E = *rotated_;
+  const ExactFT& bottom = lo < hi ? lo : hi;
+  const ExactFT& top = lo < hi ? hi : lo;
+  auto it = std::lower_bound(by_xy_.begin(), by_xy_.end(), c, [&](std::uint32_t v, double x) { return E.vertex(v).x() < x; });
+  const std::size_t first = out.size();
+  for (; it != by_xy_.end() && E.vertex(*it).x() == c; ++it) {
+    const ExactFT y = E.vertex(*it).y();
+    if (bottom < y && y < top) out.push_back(*it);
+  }
+  if (hi < lo) std::reverse(out.begin() + static_cast<std::ptrdiff_t>(first), out.end());
+}
+
+CellChains BoustrophedonDecomposition::chains(std::size_t c) const {
   const auto& T = trap_->cells();
   const auto& ts = cells_[c].trapezoids;
-  std::vector<Point> floor, ceiling;
-  auto y = [&](std::uint32_t e, double x) { return CGAL::to_double(trap_->edge_y(e, x)); };
-  for (auto t : ts) {
-    floor.emplace_back(T[t].x_left, y(T[t].floor, T[t].x_left));
-    ceiling.emplace_back(T[t].x_left, y(T[t].ceiling, T[t].x_left));
+  const Environment& E = *rotated_;
+  CellChains out;
+  std::vector<std::uint32_t> between;
+  // One chain: the floor (or ceiling) edge of each trapezoid from its left side to its
+  // right side; where two trapezoids meet on a line x = c and their floors do not, the
+  // boundary runs along that line (it is a wall: free on one side only), through every
+  // environment vertex on it.
+  auto build = [&](bool floor, std::vector<ExactPoint>& pts, std::vector<std::uint32_t>& ids, std::vector<std::uint32_t>& edges) {
+    auto push = [&](const ExactPoint& p, std::uint32_t id, std::uint32_t edge) {
+      if (!pts.empty() && pts.back() == p) return;
+      pts.push_back(p), ids.push_back(id), edges.push_back(edge);
+    };
+    auto at = [&](std::uint32_t t, double x) {
+      const std::uint32_t e = floor ? T[t].floor : T[t].ceiling;
+      const std::uint32_t a = e, b = static_cast<std::uint32_t>(E.next(e));
+      if (E.vertex(a).x() == x) return std::tuple{E.exact_vertex(a), a, e};
+      if (E.vertex(b).x() == x) return std::tuple{E.exact_vertex(b), b, e};
+      return std::tuple{ExactPoint(x, trap_->edge_y(e, x)), CellChains::kNoVertex, e};
+    };
+    for (std::size_t i = 0; i < ts.size(); ++i) {
+      const auto [l, lid, le] = at(ts[i], T[ts[i]].x_left);
+      if (i > 0 && !pts.empty() && pts.back() != l) {
+        between.clear();
+        vertices_on_line(T[ts[i]].x_left, pts.back().y(), l.y(), between);
+        for (auto v : between) push(E.exact_vertex(v), v, v);
+      }
+      push(l, lid, le);
+      const auto [r, rid, re] = at(ts[i], T[ts[i]].x_right);
+      push(r, rid, re);
+    }
+  };
+  build(true, out.floor, out.floor_vertex, out.floor_edge);
+  build(false, out.ceiling, out.ceiling_vertex, out.ceiling_edge);
+  return out;
+}
+
+std::vector<ExactPoint> BoustrophedonDecomposition::outline(std::size_t c, std::vector<std::uint32_t>& ids) const {
+  const CellChains ch = chains(c);
+  const Environment& E = *rotated_;
+  std::vector<ExactPoint> out;
+  ids.clear();
+  auto push = [&](const ExactPoint& p, std::uint32_t id) {
+    if (!out.empty() && out.back() == p) return;
+    out.push_back(p), ids.push_back(id);
+  };
+  std::vector<std::uint32_t> side;
+  auto push_side = [&](const ExactPoint& from, const ExactPoint& to) {
+    side.clear();
+    vertices_on_line(CGAL::to_double(from.x()), from.y(), to.y(), side);
+    for (auto v : side) push(E.exact_vertex(v), v);
+  };
+  // Floor left to right, right side upwards, ceiling right to left, left side downwards;
+  // a side is the segment x = const between floor and ceiling, walls and extensions alike.
+  for (std::size_t i = 0; i < ch.floor.size(); ++i) push(ch.floor[i], ch.floor_vertex[i]);
+  push_side(ch.floor.back(), ch.ceiling.back());
+  for (std::size_t i = ch.ceiling.size(); i-- > 0;) push(ch.ceiling[i], ch.ceiling_vertex[i]);
+  push_side(ch.ceiling.front(), ch.floor.front());
+  if (out.size() > 1 && out.front() == out.back()) out.pop_back(), ids.pop_back();
+  // A point inside an edge (where another chain had an event) is a straight vertex of the
+  // outline: keep only the corners.
+  std::vector<ExactPoint> kept;
+  std::vector<std::uint32_t> kept_ids;
+  const std::size_t n = out.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (n > 3 && ids[i] == CellChains::kNoVertex &&
+        CGAL::collinear(out[(i + n - 1) % n], out[i], out[(i + 1) % n]))
+      continue;
+    kept.push_back(out[i]), kept_ids.push_back(ids[i]);
   }
-  floor.emplace_back(T[ts.back()].x_right, y(T[ts.back()].floor, T[ts.back()].x_right));
-  ceiling.emplace_back(T[ts.back()].x_right, y(T[ts.back()].ceiling, T[ts.back()].x_right));
+  ids = std::move(kept_ids);
+  return kept;
+}
+
+std::vector<ExactPoint> BoustrophedonDecomposition::exact_polygon(std::size_t c) const {
+  std::vector<std::uint32_t> ids;
+  return outline(c, ids);
+}
+
+std::vector<Point> BoustrophedonDecomposition::polygon(std::size_t c) const {
+  std::vector<std::uint32_t> ids;
+  const auto exact = outline(c, ids);
   std::vector<Point> out;
-  for (auto& p : floor) out.push_back(to_input(p));
-  for (auto it = ceiling.rbegin(); it != ceiling.rend(); ++it) out.push_back(to_input(*it));
-  std::vector<Point> clean;
-  for (auto& p : out)
-    if (clean.empty() || clean.back() != p) clean.push_back(p);
-  if (clean.size() > 1 && clean.front() == clean.back()) clean.pop_back();
-  return clean;
+  for (std::size_t i = 0; i < exact.size(); ++i) {
+    // Environment vertices map back to their input coordinates exactly.
+    const Point p = ids[i] != CellChains::kNoVertex ? input_vertex(ids[i]) : to_input(geometry::to_double(exact[i]));
+    if (out.empty() || out.back() != p) out.push_back(p);
+  }
+  if (out.size() > 1 && out.front() == out.back()) out.pop_back();
+  return out;
 }
 
 ExactFT BoustrophedonDecomposition::area(std::size_t c) const {

@@ -54,48 +54,94 @@ double min_disc_diameter(std::vector<Point> pts) {
 
 namespace {
 
-// y of a floor (rounded up) or ceiling (rounded down) at x: the rounded point stays in
-// the closed cell, so the path can be checked exactly.
-double inward(const TrapezoidalDecomposition& t, std::uint32_t edge, double x, bool floor) {
-  const auto iv = CGAL::to_interval(t.edge_y(edge, x));
-  return floor ? iv.second : iv.first;
-}
+// A cell's floor or ceiling as a polyline of doubles in sweep coordinates. Environment
+// vertices are exact; points inside an edge are rounded into the cell (a floor up, a
+// ceiling down), so every point lies in the closed cell and the path can be certified
+// exactly.
+struct Chain {
+  std::vector<Point> pts;
+  std::vector<std::uint32_t> vertex;  // environment vertex per point, or CellChains::kNoVertex
+  std::vector<std::uint32_t> edge;    // environment edge it lies on
+};
+
+// Where a lap at abscissa x meets a chain: after point k (the last with x_k <= x); on k
+// itself when x_k == x (at a wall on the slice line, the last of its points), else inside
+// segment k -> k+1.
+struct Foot {
+  std::size_t k;
+  bool at_point;
+  Point p;
+  std::uint32_t edge;  // environment edge it lies on
+};
+
+struct PathPoint {
+  Point p;                                        // sweep coordinates
+  std::uint32_t vertex = CellChains::kNoVertex;   // environment vertex it is, if any
+  std::uint32_t edge = CellChains::kNoVertex;     // else the environment edge it lies on, if any
+};
 
 struct Builder {
   const BoustrophedonDecomposition& b;
   const TrapezoidalPlanner& planner;  // in sweep coordinates
   double r;
-  std::vector<Point> path;            // sweep coordinates
+  std::vector<PathPoint> path;
   std::size_t laps = 0;
 
-  // Boundary-following from x0 to x1 (x0 < x1 or x0 > x1) along the floor or ceiling of
-  // the cell, through the environment vertices it passes.
-  void follow(const BoustrophedonCell& cell, double x0, double x1, bool floor) {
-    const auto& T = b.trapezoids().cells();
-    std::vector<Point> pts;
-    for (auto t : cell.trapezoids) {
-      const double xs = T[t].x_left;
-      if (xs > std::min(x0, x1) && xs < std::max(x0, x1)) {
-        const std::uint32_t e = floor ? T[t].floor : T[t].ceiling;
-        pts.emplace_back(xs, inward(b.trapezoids(), e, xs, floor));
+  void add(const Point& p, std::uint32_t vertex = CellChains::kNoVertex, std::uint32_t edge = CellChains::kNoVertex) {
+    if (path.empty() || path.back().p != p) path.push_back({p, vertex, edge});
+  }
+  void add(const Chain& c, std::size_t i) { add(c.pts[i], c.vertex[i], c.edge[i]); }
+  void add(const Chain& c, const Foot& f) {
+    if (f.at_point) add(c, f.k);
+    else add(f.p, CellChains::kNoVertex, f.edge);
+  }
+
+  Chain chain(const std::vector<ExactPoint>& pts, const std::vector<std::uint32_t>& ids, const std::vector<std::uint32_t>& edges,
+              bool floor) const {
+    Chain c;
+    c.edge = edges;
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      if (ids[i] != CellChains::kNoVertex) {
+        c.pts.push_back(b.sweep_environment().vertex(ids[i]));
+      } else {
+        const auto iy = CGAL::to_interval(pts[i].y());
+        c.pts.emplace_back(CGAL::to_double(pts[i].x()), floor ? iy.second : iy.first);
       }
+      c.vertex.push_back(ids[i]);
     }
-    if (x1 < x0) std::reverse(pts.begin(), pts.end());
-    for (auto& p : pts) add(p);
+    return c;
   }
-  void add(const Point& p) {
-    if (path.empty() || path.back() != p) path.push_back(p);
-  }
-  // Trapezoid of the cell spanning abscissa x.
+
+  // Trapezoid of the cell whose x-range holds x strictly inside (x is not an event there).
   std::uint32_t at(const BoustrophedonCell& cell, double x) const {
     const auto& T = b.trapezoids().cells();
     for (auto t : cell.trapezoids)
       if (T[t].x_left <= x && x <= T[t].x_right) return t;
     return cell.trapezoids.back();
   }
-  std::vector<double> lap_positions(const BoustrophedonCell& cell) const {
-    const auto& T = b.trapezoids().cells();
-    const double xl = T[cell.trapezoids.front()].x_left, xr = T[cell.trapezoids.back()].x_right;
+
+  Foot foot(const BoustrophedonCell& cell, const Chain& c, double x, bool floor) const {
+    auto it = std::upper_bound(c.pts.begin(), c.pts.end(), x, [](double v, const Point& p) { return v < p.x(); });
+    const std::size_t k = static_cast<std::size_t>(it - c.pts.begin()) - 1;  // x >= the chain's first abscissa
+    if (c.pts[k].x() == x) return {k, true, c.pts[k], c.edge[k]};
+    const auto& T = b.trapezoids().cells()[at(cell, x)];
+    const std::uint32_t e = floor ? T.floor : T.ceiling;
+    const auto iy = CGAL::to_interval(b.trapezoids().edge_y(e, x));
+    return {k, false, Point(x, floor ? iy.second : iy.first), e};
+  }
+
+  // Boundary following along a chain from one foot to another, through every chain point
+  // between them (walls on slice lines included).
+  void walk(const Chain& c, const Foot& from, const Foot& to) {
+    if (to.k > from.k) {
+      for (std::size_t i = from.k + 1; i <= to.k; ++i) add(c, i);
+    } else if (to.k < from.k) {
+      for (std::size_t i = from.at_point ? from.k - 1 : from.k; i > to.k; --i) add(c, i);
+    }
+    add(c, to);
+  }
+
+  std::vector<double> lap_positions(double xl, double xr) const {
     std::vector<double> xs;
     if (xr - xl <= 2 * r) {
       xs.push_back(xl + (xr - xl) / 2);
@@ -105,40 +151,87 @@ struct Builder {
     }
     return xs;
   }
-  void cover(const BoustrophedonCell& cell) {
-    const auto& T = b.trapezoids().cells();
-    const auto xs = lap_positions(cell);
-    // Enter at the first lap's floor (after a transit from wherever we are).
+
+  void cover(std::size_t index) {
+    const BoustrophedonCell& cell = b.cells()[index];
+    const CellChains ch = b.chains(index);
+    const Chain floor = chain(ch.floor, ch.floor_vertex, ch.floor_edge, true);
+    const Chain ceiling = chain(ch.ceiling, ch.ceiling_vertex, ch.ceiling_edge, false);
+    const auto xs = lap_positions(floor.pts.front().x(), floor.pts.back().x());
     bool up = true;
+    Foot prev_lo{}, prev_hi{};
     for (std::size_t k = 0; k < xs.size(); ++k) {
-      const std::uint32_t t = at(cell, xs[k]);
-      const Point lo(xs[k], inward(b.trapezoids(), T[t].floor, xs[k], true));
-      const Point hi(xs[k], inward(b.trapezoids(), T[t].ceiling, xs[k], false));
+      const Foot lo = foot(cell, floor, xs[k], true), hi = foot(cell, ceiling, xs[k], false);
       if (k == 0) {
-        transit(up ? lo : hi);
+        transit(up ? lo.p : hi.p);
+        if (up) add(floor, lo);
+        else add(ceiling, hi);
+      } else if (up) {
+        walk(floor, prev_lo, lo);  // the previous lap went down: follow the floor
       } else {
-        // The previous lap ended on the ceiling if it went up (then this one goes down):
-        // follow that same boundary to this lap's start.
-        follow(cell, xs[k - 1], xs[k], /*floor=*/up);
-        add(up ? lo : hi);
+        walk(ceiling, prev_hi, hi);
       }
-      add(up ? hi : lo);
+      if (up) add(ceiling, hi);
+      else add(floor, lo);
       ++laps;
       up = !up;
+      prev_lo = lo, prev_hi = hi;
     }
   }
+
+  // Travel to `to` through the trapezoids (waypoints only: the caller adds `to` itself,
+  // with what it knows about it).
   void transit(const Point& to) {
-    if (path.empty()) {
-      path.push_back(to);
-      return;
-    }
-    if (path.back() == to) return;
+    if (path.empty() || path.back().p == to) return;
     // Midpoints and centroids are collision-free as they are; shortening would cost O(n)
     // exact visibility tests per point, on every transit.
-    const Plan p = planner.plan(path.back(), to, false);
-    for (std::size_t i = 1; i < p.path.size(); ++i) add(p.path[i]);
+    const Plan p = planner.plan(path.back().p, to, false);
+    for (std::size_t i = 1; i + 1 < p.path.size(); ++i) add(p.path[i]);
   }
 };
+
+// Nearest point of input edge e to p, exactly, rounded to a corner of its ulp box that lies
+// in closed free space (one does unless free space is thinner than an ulp there).
+std::optional<Point> onto_edge(const Environment& env, std::size_t e, const Point& p) {
+  const ExactPoint& a = env.exact_vertex(e);
+  const ExactPoint& c = env.exact_vertex(env.next(e));
+  const auto d = c - a;
+  ExactFT t = ((geometry::to_exact(p) - a) * d) / d.squared_length();
+  t = CGAL::max(ExactFT(0), CGAL::min(ExactFT(1), t));
+  const ExactPoint on = a + t * d;
+  const auto ix = CGAL::to_interval(on.x()), iy = CGAL::to_interval(on.y());
+  for (double x : {ix.first, ix.second})
+    for (double y : {iy.first, iy.second})
+      if (geometry::locate(env, Point(x, y)).in_free_space()) return Point(x, y);
+  return std::nullopt;
+}
+
+// Input-frame point for a sweep-frame path point: environment vertices exactly; a point on
+// an environment edge becomes the exact nearest point of the same input edge, rounded into
+// free space; other points (transit waypoints) are rotated back and, if rounding left free
+// space (a waypoint in a sliver trapezoid that hugs a wall), moved onto the nearest edge
+// the same way. Quarter turns map back exactly.
+Point to_input_point(const BoustrophedonDecomposition& b, const Environment& env, const PathPoint& q) {
+  if (q.vertex != CellChains::kNoVertex) return b.input_vertex(q.vertex);
+  const Point p = b.to_input(q.p);
+  if (std::fmod(b.angle(), 90.0) == 0) return p;
+  std::optional<Point> out;
+  if (q.edge != CellChains::kNoVertex) {
+    out = onto_edge(env, b.input_vertex_id(q.edge), p);
+  } else if (geometry::locate(env, p).in_free_space()) {
+    out = p;
+  } else {
+    std::size_t nearest = 0;
+    double best = INFINITY;
+    for (std::size_t e = 0; e < env.num_vertices(); ++e) {
+      const double d = CGAL::to_double(CGAL::squared_distance(p, geometry::Kernel::Segment_2(env.vertex(e), env.vertex(env.next(e)))));
+      if (d < best) best = d, nearest = e;
+    }
+    out = onto_edge(env, nearest, p);
+  }
+  if (out) return *out;
+  throw std::logic_error("coverage: path point " + geometry::format_point(p) + " rotated back from the sweep frame is outside free space");
+}
 
 CoverageReport cover_at(const Environment& env, const CoverageOptions& o, double angle) {
   const BoustrophedonDecomposition b(env, angle);
@@ -170,8 +263,45 @@ CoverageReport cover_at(const Environment& env, const CoverageOptions& o, double
       if (!seen[*it]) stack.push_back(*it);
   }
   Builder bl{b, planner, o.radius, {}, 0};
-  if (start_sweep) bl.path.push_back(*start_sweep);
-  for (auto k : order) bl.cover(b.cells()[k]);
+  if (start_sweep) bl.add(*start_sweep);
+  for (auto k : order) bl.cover(k);
+
+  // Certified output (every segment in closed free space, exactly) — first in the sweep
+  // frame, where the path was built: a failure there is a bug.
+  const Environment& swept = b.sweep_environment();
+  for (std::size_t i = 0; i + 1 < bl.path.size(); ++i)
+    if (!geometry::visible(swept, bl.path[i].p, bl.path[i + 1].p))
+      throw std::logic_error("coverage: segment " + std::to_string(i) + " " + geometry::format_point(bl.path[i].p) + " -> " +
+                             geometry::format_point(bl.path[i + 1].p) + " leaves free space in the sweep frame");
+  // Then in the input frame. Quarter turns map back exactly; at other angles rounding can
+  // move a point hugging a wall by an ulp, and such a segment is replaced by a shortest
+  // path between its ends, which must itself pass.
+  std::vector<Point> input;
+  input.reserve(bl.path.size());
+  for (const auto& q : bl.path) input.push_back(to_input_point(b, env, q));
+  if (o.start) input.front() = *o.start;  // exactly where the robot stands
+  std::vector<Point> certified;
+  std::optional<TrapezoidalDecomposition> input_trap;
+  std::optional<TrapezoidalPlanner> input_planner;
+  std::size_t repaired = 0;
+  for (std::size_t i = 0; i < input.size(); ++i) {
+    if (i > 0 && !geometry::visible(env, certified.back(), input[i])) {
+      if (std::fmod(angle, 90.0) == 0)
+        throw std::logic_error("coverage: segment " + geometry::format_point(certified.back()) + " -> " + geometry::format_point(input[i]) +
+                               " leaves free space at a quarter-turn sweep");
+      if (!input_planner) input_trap.emplace(env), input_planner.emplace(*input_trap);
+      const Plan detour = input_planner->plan(certified.back(), input[i], true);
+      for (std::size_t j = 1; j + 1 < detour.path.size(); ++j) {
+        if (!geometry::visible(env, certified.back(), detour.path[j]))
+          throw std::logic_error("coverage: detour around a rounded segment leaves free space");
+        certified.push_back(detour.path[j]);
+      }
+      if (!geometry::visible(env, certified.back(), input[i]))
+        throw std::logic_error("coverage: detour around a rounded segment leaves free space");
+      ++repaired;
+    }
+    if (certified.empty() || certified.back() != input[i]) certified.push_back(input[i]);
+  }
 
   CoverageReport rep;
   rep.angle = angle;
@@ -179,11 +309,12 @@ CoverageReport cover_at(const Environment& env, const CoverageOptions& o, double
   rep.cells = b.cells().size();
   rep.critical_points = b.critical_slices().size();
   rep.laps = bl.laps;
-  for (auto& p : bl.path) rep.path.push_back(b.to_input(p));
+  rep.rounding_detours = repaired;
+  rep.path = std::move(certified);
   for (std::size_t i = 0; i + 1 < rep.path.size(); ++i)
     rep.length += std::sqrt(CGAL::to_double(CGAL::squared_distance(rep.path[i], rep.path[i + 1])));
-  for (std::size_t i = 1; i + 1 < bl.path.size(); ++i)
-    rep.turns += geometry::orientation(bl.path[i - 1], bl.path[i], bl.path[i + 1]) != 0;
+  for (std::size_t i = 1; i + 1 < rep.path.size(); ++i)
+    rep.turns += geometry::orientation(rep.path[i - 1], rep.path[i], rep.path[i + 1]) != 0;
   rep.diameter = min_disc_diameter(env.vertices());
   for (std::size_t e = 0; e < env.num_vertices(); ++e)
     rep.perimeter += std::sqrt(CGAL::to_double(CGAL::squared_distance(env.vertex(e), env.vertex(env.next(e)))));

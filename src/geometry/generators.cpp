@@ -185,4 +185,145 @@ Environment office(std::size_t rows, std::size_t cols, double room) {
   return Environment::make(std::move(outer), std::move(walls));
 }
 
+Environment random_rectilinear(std::size_t cols, std::size_t rows, bool holes, std::uint64_t seed) {
+  if (cols < 2 || rows < 2) throw std::invalid_argument("random_rectilinear: need at least a 2 x 2 grid");
+  std::mt19937_64 rng(seed);
+  const long W = static_cast<long>(cols), H = static_cast<long>(rows);
+  std::vector<char> in(cols * rows, 0);
+  auto cell = [&](long x, long y) -> char { return x < 0 || y < 0 || x >= W || y >= H ? 0 : in[static_cast<std::size_t>(y * W + x)]; };
+  // A 2 x 2 block whose only filled cells are diagonal would pinch the boundary at a point.
+  auto pinches = [&](long x, long y) {
+    for (long bx = x - 1; bx <= x; ++bx)
+      for (long by = y - 1; by <= y; ++by) {
+        const char a = cell(bx, by), b = cell(bx + 1, by), c = cell(bx, by + 1), d = cell(bx + 1, by + 1);
+        if ((a && d && !b && !c) || (b && c && !a && !d)) return true;
+      }
+    return false;
+  };
+  // Grow from the centre to about 70% of the grid.
+  in[static_cast<std::size_t>((H / 2) * W + W / 2)] = 1;
+  std::vector<std::pair<long, long>> frontier{{W / 2, H / 2}};
+  const std::size_t target = cols * rows * 7 / 10;
+  std::size_t filled = 1;
+  for (std::size_t attempts = 0; filled < target && attempts < 50 * cols * rows; ++attempts) {
+    const auto [fx, fy] = frontier[std::uniform_int_distribution<std::size_t>(0, frontier.size() - 1)(rng)];
+    static const long dx[4] = {1, -1, 0, 0}, dy[4] = {0, 0, 1, -1};
+    const int d = std::uniform_int_distribution<int>(0, 3)(rng);
+    const long x = fx + dx[d], y = fy + dy[d];
+    if (x < 0 || y < 0 || x >= W || y >= H || cell(x, y)) continue;
+    in[static_cast<std::size_t>(y * W + x)] = 1;
+    if (pinches(x, y)) {
+      in[static_cast<std::size_t>(y * W + x)] = 0;
+      continue;
+    }
+    frontier.emplace_back(x, y);
+    ++filled;
+  }
+  // Holes: punch some out of the inside, each a few cells grown from one whose whole 3 x 3
+  // neighbourhood is filled, never next to another hole (so no two boundaries touch).
+  if (holes) {
+    std::vector<int> hole_of(cols * rows, -1);
+    auto hole_at = [&](long x, long y) { return x < 0 || y < 0 || x >= W || y >= H ? -2 : hole_of[static_cast<std::size_t>(y * W + x)]; };
+    // x, y may join hole h: filled, and every cell around it filled or already in h.
+    auto may_join = [&](long x, long y, int h) {
+      if (!cell(x, y)) return false;
+      for (long ax = x - 1; ax <= x + 1; ++ax)
+        for (long ay = y - 1; ay <= y + 1; ++ay)
+          if (!(ax == x && ay == y) && !cell(ax, ay) && hole_at(ax, ay) != h) return false;
+      return true;
+    };
+    const std::size_t want = std::max<std::size_t>(1, cols * rows / 25);
+    for (int h = 0; h < static_cast<int>(want); ++h) {
+      for (int attempt = 0; attempt < 200; ++attempt) {
+        const long x = std::uniform_int_distribution<long>(1, W - 2)(rng), y = std::uniform_int_distribution<long>(1, H - 2)(rng);
+        if (!may_join(x, y, h)) continue;
+        std::vector<std::pair<long, long>> grown{{x, y}};
+        in[static_cast<std::size_t>(y * W + x)] = 0, hole_of[static_cast<std::size_t>(y * W + x)] = h;
+        for (int more = std::uniform_int_distribution<int>(0, 3)(rng); more > 0; --more) {
+          const auto [gx0, gy0] = grown[std::uniform_int_distribution<std::size_t>(0, grown.size() - 1)(rng)];
+          static const long ddx[4] = {1, -1, 0, 0}, ddy[4] = {0, 0, 1, -1};
+          const int d = std::uniform_int_distribution<int>(0, 3)(rng);
+          const long nx = gx0 + ddx[d], ny = gy0 + ddy[d];
+          if (!may_join(nx, ny, h)) continue;
+          in[static_cast<std::size_t>(ny * W + nx)] = 0, hole_of[static_cast<std::size_t>(ny * W + nx)] = h;
+          if (pinches(nx, ny)) {
+            in[static_cast<std::size_t>(ny * W + nx)] = 1, hole_of[static_cast<std::size_t>(ny * W + nx)] = -1;
+            continue;
+          }
+          grown.emplace_back(nx, ny);
+        }
+        break;
+      }
+    }
+  }
+  // Gaps not connected to the outside are holes; without holes they are filled (a gap is
+  // enclosed by filled cells, so filling it cannot pinch).
+  {
+    std::vector<char> outside(cols * rows, 0);
+    std::vector<std::pair<long, long>> stack;
+    for (long x = 0; x < W; ++x) stack.emplace_back(x, 0), stack.emplace_back(x, H - 1);
+    for (long y = 0; y < H; ++y) stack.emplace_back(0, y), stack.emplace_back(W - 1, y);
+    while (!stack.empty()) {
+      auto [x, y] = stack.back();
+      stack.pop_back();
+      if (x < 0 || y < 0 || x >= W || y >= H) continue;
+      const std::size_t i = static_cast<std::size_t>(y * W + x);
+      if (in[i] || outside[i]) continue;
+      outside[i] = 1;
+      stack.emplace_back(x + 1, y), stack.emplace_back(x - 1, y), stack.emplace_back(x, y + 1), stack.emplace_back(x, y - 1);
+    }
+    if (!holes)
+      for (std::size_t i = 0; i < in.size(); ++i)
+        if (!outside[i]) in[i] = 1;
+  }
+  // Grid lines at random integer offsets: many equal coordinates, exact arithmetic.
+  std::vector<double> gx(cols + 1, 0), gy(rows + 1, 0);
+  std::uniform_int_distribution<int> width(1, 4);
+  for (std::size_t i = 1; i <= cols; ++i) gx[i] = gx[i - 1] + width(rng);
+  for (std::size_t i = 1; i <= rows; ++i) gy[i] = gy[i - 1] + width(rng);
+  // Boundary edges with the filled cell on their left, as a successor map on grid points.
+  auto id = [&](long x, long y) { return static_cast<std::size_t>(y * (W + 1) + x); };
+  std::vector<std::size_t> succ((cols + 1) * (rows + 1), SIZE_MAX);
+  for (long y = 0; y < H; ++y)
+    for (long x = 0; x < W; ++x) {
+      if (!cell(x, y)) continue;
+      if (!cell(x, y - 1)) succ[id(x, y)] = id(x + 1, y);          // bottom, going right
+      if (!cell(x + 1, y)) succ[id(x + 1, y)] = id(x + 1, y + 1);  // right, going up
+      if (!cell(x, y + 1)) succ[id(x + 1, y + 1)] = id(x, y + 1);  // top, going left
+      if (!cell(x - 1, y)) succ[id(x, y + 1)] = id(x, y);          // left, going down
+    }
+  std::bernoulli_distribution keep_straight(0.3);
+  std::vector<Ring> loops;
+  std::vector<double> areas;
+  for (std::size_t start = 0; start < succ.size(); ++start) {
+    if (succ[start] == SIZE_MAX) continue;
+    std::vector<std::size_t> loop;
+    for (std::size_t v = start; succ[v] != SIZE_MAX;) {
+      loop.push_back(v);
+      const std::size_t w = succ[v];
+      succ[v] = SIZE_MAX;
+      v = w;
+    }
+    Ring ring;
+    const std::size_t n = loop.size();
+    auto pt = [&](std::size_t v) { return Point(gx[v % (cols + 1)], gy[v / (cols + 1)]); };
+    for (std::size_t i = 0; i < n; ++i) {
+      const Point a = pt(loop[(i + n - 1) % n]), b = pt(loop[i]), c = pt(loop[(i + 1) % n]);
+      if (orientation(a, b, c) != 0 || keep_straight(rng)) ring.push_back(b);
+    }
+    double twice = 0;
+    for (std::size_t i = 0; i < ring.size(); ++i)
+      twice += ring[i].x() * ring[(i + 1) % ring.size()].y() - ring[(i + 1) % ring.size()].x() * ring[i].y();
+    loops.push_back(std::move(ring));
+    areas.push_back(twice);
+  }
+  // The outer boundary is the one counter-clockwise loop (filled cells on the left, and a
+  // polyomino without pinches has one outer boundary); the clockwise ones bound the holes.
+  const auto outer = static_cast<std::size_t>(std::max_element(areas.begin(), areas.end()) - areas.begin());
+  std::vector<Ring> hole_rings;
+  for (std::size_t i = 0; i < loops.size(); ++i)
+    if (i != outer) hole_rings.push_back(std::move(loops[i]));
+  return Environment::make(std::move(loops[outer]), std::move(hole_rings));
+}
+
 }  // namespace preimage::geometry::generators

@@ -30,6 +30,21 @@ struct BoustrophedonCell {
   std::uint32_t left_slice, right_slice;  // Reeb graph edge: critical slice at each end
 };
 
+/// The floor and ceiling of a cell, exact, in sweep coordinates, both left to right.
+/// Abscissae never decrease along a chain; where an edge lies on a slice line (a vertical
+/// wall in sweep coordinates) the chain has several points on that line, bottom to top or
+/// top to bottom as the boundary runs, so every environment vertex on the floor or ceiling
+/// is on its chain.
+struct CellChains {
+  std::vector<ExactPoint> floor, ceiling;
+  /// Per point: the environment vertex it is, or kNoVertex for a point inside an edge.
+  std::vector<std::uint32_t> floor_vertex, ceiling_vertex;
+  /// Per point: the environment edge it lies on (for a vertex, the floor or ceiling edge
+  /// of the trapezoid it was met from).
+  std::vector<std::uint32_t> floor_edge, ceiling_edge;
+  static constexpr std::uint32_t kNoVertex = UINT32_MAX;
+};
+
 class BoustrophedonDecomposition {
  public:
   /// Sweep along +x rotated by `angle_deg` (counter-clockwise). Angles that are multiples
@@ -44,10 +59,22 @@ class BoustrophedonDecomposition {
   const std::vector<CriticalSlice>& critical_slices() const { return slices_; }
   double angle() const { return angle_; }
 
-  /// Cell outline, counter-clockwise, in the input's coordinates (double rounding).
+  /// Floor and ceiling chains of a cell (sweep coordinates, exact).
+  CellChains chains(std::size_t cell) const;
+  /// Cell outline, counter-clockwise, exact, in sweep coordinates: the floor chain, the
+  /// right side, the ceiling chain backwards, the left side; every environment vertex on the
+  /// cell's boundary is a vertex of it (points inside edges appear only at the corners).
+  std::vector<ExactPoint> exact_polygon(std::size_t cell) const;
+  /// exact_polygon mapped to the input's coordinates and rounded to doubles (exact for
+  /// environment vertices at every angle, and for every point at quarter turns).
   std::vector<Point> polygon(std::size_t cell) const;
-  /// Exact area in sweep coordinates.
+  /// Exact area in sweep coordinates: the sum of the cell's trapezoids, which equals the
+  /// area of exact_polygon.
   ExactFT area(std::size_t cell) const;
+  /// The input vertex a vertex of the swept environment came from, exact at every angle
+  /// (edge e of the swept environment comes from the input edge that starts there).
+  std::size_t input_vertex_id(std::size_t v) const { return input_->ring_begin(rotated_->ring_of(v)) + rotated_->input_index(v); }
+  Point input_vertex(std::size_t v) const { return input_->vertex(input_vertex_id(v)); }
   /// Point of sweep coordinates mapped back to input coordinates, and the reverse.
   Point to_input(const Point& p) const;
   Point to_sweep(const Point& p) const;
@@ -55,8 +82,16 @@ class BoustrophedonDecomposition {
   std::vector<std::vector<std::uint32_t>> adjacency() const;
 
  private:
+  // Environment vertices on the line x = c strictly between lo and hi, ordered from lo
+  // towards hi (lo > hi walks downwards).
+  void vertices_on_line(double c, const ExactFT& lo, const ExactFT& hi, std::vector<std::uint32_t>& out) const;
+  // exact_polygon with, per point, its environment vertex or CellChains::kNoVertex.
+  std::vector<ExactPoint> outline(std::size_t cell, std::vector<std::uint32_t>& ids) const;
+
+  const Environment* input_;
   double angle_;
   double cos_ = 1, sin_ = 0;
+  std::vector<std::uint32_t> by_xy_;  // swept vertices in lexicographic (x, y) order
   std::unique_ptr<Environment> rotated_;
   std::unique_ptr<TrapezoidalDecomposition> trap_;
   std::vector<BoustrophedonCell> cells_;

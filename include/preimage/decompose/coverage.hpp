@@ -22,10 +22,13 @@ struct CoverageOptions {
 };
 
 struct CoverageReport {
-  // Input coordinates. For sweep angles that are multiples of 90 degrees every segment is
-  // exactly collision-free; at other angles it is so in the rotated (sweep) frame, and
-  // rotating back rounds each point to the nearest doubles.
+  // Input coordinates; every segment is certified in closed free space with exact
+  // predicates before it is returned. At angles that are not quarter turns the path is
+  // built in the rotated (sweep) frame; a point rounded out of free space on the way back
+  // is moved a few ulps in, and a segment that rounding made graze a wall is replaced by a
+  // shortest path between its ends (counted in rounding_detours).
   std::vector<Point> path;
+  std::size_t rounding_detours = 0;
   double angle = 0;         // sweep direction used
   double length = 0;
   std::size_t laps = 0, turns = 0, cells = 0, critical_points = 0;

@@ -28,4 +28,12 @@ Ring spiral(double turns, double corridor = 1.0, std::size_t samples_per_turn = 
 /// obstacles, door gaps, and collinear vertices on every long wall.
 Environment office(std::size_t rows, std::size_t cols, double room = 4.0);
 
+/// Random rectilinear environment: a random polyomino grown cell by cell on a cols x rows
+/// grid (never two cells touching only at a corner), its bounded gaps as holes when
+/// `holes` is true (otherwise they are filled), columns and rows of random integer widths,
+/// and a random share of the collinear grid points kept as straight vertices. Every
+/// degeneracy of a real floor plan is there: equal x and y everywhere, vertical and
+/// horizontal edges, several vertices on one vertical line, collinear runs.
+Environment random_rectilinear(std::size_t cols, std::size_t rows, bool holes, std::uint64_t seed);
+
 }  // namespace preimage::geometry::generators
