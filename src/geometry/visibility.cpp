@@ -321,4 +321,177 @@ VisibilityPolygon VisibilityIndex::compute(const Point& q) const {
   return out;
 }
 
+// ---------------------------------------------------------------- walks along a line
+// A straight walk along the line from a through b, through the triangles it crosses. Every
+// vertex of the triangulation is an environment vertex, so the walk meets three situations:
+//   - it crosses the interior of a triangle edge: a diagonal is crossed, a boundary edge
+//     ends the walk (the line would leave free space);
+//   - it passes through a vertex w: it may go on only if the direction a -> b lies in the
+//     closed free wedge at w (the fan of triangles around w), possibly along an edge;
+//   - (segment walks) b lies in the closed triangle it is in: b is reached.
+// Every test is an orientation or dot-product sign on a, b and environment vertices (a
+// direction at a vertex w on the line is that of a -> b), so every decision is exact.
+// The walk starts at a (start == kNone) or at vertex `start` on the line; it calls
+// on_vertex(w) for every vertex it passes through after the start. Returns true when b is
+// reached (segment walks), false when the line leaves free space.
+template <class OnVertex>
+bool VisibilityIndex::walk(const Point& a, const Point& b, std::uint32_t start, bool to_b, OnVertex&& on_vertex) const {
+  const auto& P = env_->vertices();
+  const auto& T = tri_.triangles();
+
+  auto inside = [&](std::uint32_t t) {  // b in the closed triangle t
+    if (!to_b) return false;
+    const Triangle& tr = T[t];
+    for (int i = 0; i < 3; ++i)
+      if (orientation(P[tr.v[i]], P[tr.v[(i + 1) % 3]], b) < 0) return false;
+    return true;
+  };
+  // Is b between w and x on the line (so reached before x)?
+  auto within = [&](const Point& w, const Point& x) { return to_b && CGAL::collinear_are_ordered_along_line(w, b, x); };
+
+  enum class Step { Reached, Blocked, Walk, Pivot };
+  std::uint32_t t = kNone, pivot = kNone;
+  int entry = -1;
+  // Enter the neighbour of u across edge slot `s` (the line crosses that edge's interior).
+  auto cross = [&](std::uint32_t u, int s) -> Step {
+    const std::uint32_t nb = T[u].nbr[s];
+    if (nb == kNone) return Step::Blocked;
+    const std::uint32_t x = T[u].v[s];
+    int j = 0;
+    while (T[nb].v[(j + 1) % 3] != x) ++j;  // in nb the shared edge runs the other way
+    t = nb, entry = j;
+    return Step::Walk;
+  };
+  // Leave vertex w (on the line) in direction a -> b: the fan triangle of w whose closed
+  // wedge holds it. For x off the line, orientation(w, x, w + (b - a)) = -orientation(a, b, x).
+  auto turn_at = [&](std::uint32_t w) -> Step {
+    const Point& W = P[w];
+    auto [u, s] = tri_.boundary_slot(w);  // triangle with edge (w, next(w)) at slot s
+    while (true) {
+      const Triangle& tr = T[u];
+      const int sa = (s + 1) % 3, sb = (s + 2) % 3;
+      const std::uint32_t x = tr.v[sa], y = tr.v[sb];  // counter-clockwise around w: x then y
+      const int ox = -orientation(a, b, P[x]), oy = -orientation(a, b, P[y]);
+      for (std::uint32_t e : {x, y}) {
+        if ((e == x ? ox : oy) == 0 && dot_sign(W, P[e], a, b) > 0) {  // along edge w -> e
+          if (within(W, P[e])) return Step::Reached;
+          on_vertex(e);
+          pivot = e;
+          return Step::Pivot;
+        }
+      }
+      if (ox > 0 && oy < 0) {  // strictly inside the wedge: through triangle u
+        if (inside(u)) return Step::Reached;
+        return cross(u, sa);  // edge (x, y) is slot sa
+      }
+      if (tr.nbr[sb] == kNone) return Step::Blocked;  // last triangle of the fan: outside the free wedge
+      const std::uint32_t nu = tr.nbr[sb];
+      int k = 0;
+      while (T[nu].v[k] != w) ++k;
+      u = nu, s = k;
+    }
+  };
+
+  Step step = Step::Blocked;
+  if (start != kNone) {
+    step = turn_at(start);
+  } else {
+    const Located where = locate_triangle(a);
+    if (!where.loc.in_free_space()) return false;
+    if (to_b && a == b) return true;
+    const Triangle& t0 = T[where.tri];
+    switch (where.loc.kind) {
+      case Location::Kind::AtVertex:
+        step = turn_at(static_cast<std::uint32_t>(where.loc.index));
+        break;
+      case Location::Kind::OnEdge:
+      case Location::Kind::Interior: {
+        if (where.slot >= 0) {  // a inside edge `slot` of t0: a boundary edge or a diagonal
+          const int s = where.slot;
+          const std::uint32_t u0 = t0.v[s], u1 = t0.v[(s + 1) % 3];
+          const int o = orientation(P[u0], P[u1], b);
+          if (o == 0) {  // along the edge's line, towards one of its ends
+            const std::uint32_t toward = dot_sign(a, P[u1], a, b) > 0 ? u1 : u0;
+            if (within(a, P[toward])) return true;
+            on_vertex(toward);
+            step = turn_at(toward);
+          } else if (o > 0) {
+            t = where.tri, entry = s, step = Step::Walk;
+          } else {
+            if (t0.nbr[s] == kNone) return false;  // behind a boundary edge
+            const std::uint32_t u = t0.nbr[s];
+            int j = 0;
+            while (T[u].v[(j + 1) % 3] != u0) ++j;
+            t = u, entry = j, step = Step::Walk;
+          }
+          break;
+        }
+        // a strictly inside t0: leave through the edge or vertex the line meets.
+        if (inside(where.tri)) return true;
+        for (int i = 0; i < 3; ++i) {
+          const std::uint32_t vi = t0.v[i], vj = t0.v[(i + 1) % 3];
+          const int oi = orientation(a, b, P[vi]);
+          if (oi == 0 && dot_sign(a, P[vi], a, b) > 0) {
+            on_vertex(vi);
+            pivot = vi, step = Step::Pivot;
+            break;
+          }
+          if (oi < 0 && orientation(a, b, P[vj]) > 0) {
+            step = cross(where.tri, i);
+            break;
+          }
+        }
+        break;
+      }
+      default:
+        return false;
+    }
+  }
+
+  for (std::size_t guard = 0; guard <= 4 * T.size() + 8; ++guard) {
+    if (step == Step::Reached) return true;
+    if (step == Step::Blocked) return false;
+    if (step == Step::Pivot) {
+      step = turn_at(pivot);
+      continue;
+    }
+    // Walk: in t, entered across slot `entry` (its interior).
+    const Triangle& tr = T[t];
+    if (inside(t)) return true;
+    const std::uint32_t x = tr.v[entry], c = tr.v[(entry + 2) % 3];
+    const int oc = orientation(a, b, P[c]);
+    if (oc == 0) {  // through the far vertex (b is beyond it: not inside t)
+      on_vertex(c);
+      pivot = c, step = Step::Pivot;
+      continue;
+    }
+    // Exit through the edge joining c to whichever end of the entry edge lies across the line.
+    step = oc == orientation(a, b, P[x]) ? cross(t, (entry + 1) % 3) : cross(t, (entry + 2) % 3);
+  }
+  throw std::logic_error("visibility: the walk from " + format_point(a) + " towards " + format_point(b) + " did not end");
+}
+
+bool VisibilityIndex::visible(const Point& p, const Point& q) const {
+  return walk(p, q, kNone, true, [](std::uint32_t) {});
+}
+
+std::vector<std::uint32_t> VisibilityIndex::visible_vertices(const Point& q) const {
+  const VisibilityPolygon vis = compute(q);
+  std::vector<std::uint32_t> out;
+  for (const auto& v : vis.vertices)
+    if (v.kind == VisibilityVertex::Kind::EnvironmentVertex) out.push_back(v.vertex);
+  // Vertices the expansion does not list: those lying on a ray from q through a listed
+  // vertex c, beyond c (on a gap edge, or at the tip of a needle that V(q) regularises
+  // away). Walk each such ray exactly from c.
+  const std::size_t listed = out.size();
+  for (std::size_t i = 0; i < listed; ++i) {
+    const std::uint32_t c = out[i];
+    if (env_->vertex(c) == q) continue;
+    walk(q, env_->vertex(c), c, false, [&](std::uint32_t w) { out.push_back(w); });
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
 }  // namespace preimage::geometry

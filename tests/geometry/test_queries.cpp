@@ -114,3 +114,36 @@ TEST(TwoPointVisibility, AgreesWithVisibilityPolygonMembership) {
     EXPECT_GT(hidden, 50);
   }
 }
+
+// The triangulation walk answers as the O(n) edge scan on every pair of query points of
+// all kinds (interior, inside edges, at vertices), on degenerate inputs too: integer-
+// snapped environments (segments through vertices, along edges), rectilinear plans with
+// collinear runs, offices and combs.
+TEST(TwoPointVisibility, TriangulationWalkAgreesWithEdgeScan) {
+  std::vector<Environment> envs;
+  for (std::uint64_t seed : {1u, 2u, 3u, 4u}) envs.push_back(preimage::testing::snapped_random_environment(40 + 4 * seed, seed % 3, seed, 40.0));
+  for (std::uint64_t seed : {5u, 6u}) envs.push_back(generators::random_rectilinear(9, 8, true, seed));
+  envs.push_back(generators::office(2, 2));
+  envs.push_back(Environment::make(generators::comb(5), {}));
+  std::size_t seen = 0, hidden = 0, through_vertices = 0;
+  for (std::size_t k = 0; k < envs.size(); ++k) {
+    const Environment& env = envs[k];
+    VisibilityIndex index(env);
+    auto qs = preimage::testing::random_queries(env, 30, 15, 25, 10 + k);
+    // Segments between vertices run along edges and through other vertices: keep many.
+    for (std::size_t v = 0; v < env.num_vertices(); v += 3) qs.push_back({env.vertex(v), {Location::Kind::AtVertex, v}});
+    for (auto& p : qs)
+      for (auto& t : qs) {
+        const bool want = visible(env, p.p, t.p);
+        ASSERT_EQ(index.visible(p.p, t.p), want) << "environment " << k << ": " << format_point(p.p) << " -> " << format_point(t.p);
+        (want ? seen : hidden)++;
+        through_vertices += want && p.loc.kind == Location::Kind::AtVertex && t.loc.kind == Location::Kind::AtVertex;
+      }
+    // Points outside free space see nothing.
+    const auto box = env.bbox();
+    EXPECT_FALSE(index.visible(Point(box.xmin() - 1, box.ymin() - 1), qs.front().p));
+  }
+  EXPECT_GT(seen, 1000u);
+  EXPECT_GT(hidden, 1000u);
+  EXPECT_GT(through_vertices, 200u);
+}

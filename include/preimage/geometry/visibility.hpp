@@ -63,9 +63,20 @@ class VisibilityIndex {
   /// outside free space.
   VisibilityPolygon compute(const Point& q) const;
 
+  /// Does the closed segment pq lie in closed free space (grazing the boundary allowed)?
+  /// The same answer as geometry::visible, by a walk through the triangles the segment
+  /// crosses: O(k) orientation tests for k triangles, no V(p) built. False when p or q is
+  /// outside free space.
+  bool visible(const Point& p, const Point& q) const;
+  /// Environment vertices visible from q (q in closed free space), ascending: every
+  /// vertex w with visible(q, w), needles and grazed vertices included.
+  std::vector<std::uint32_t> visible_vertices(const Point& q) const;
+
  private:
   struct Located { Location loc; std::uint32_t tri; int slot; };
   Located locate_triangle(const Point& q) const;
+  template <class OnVertex>
+  bool walk(const Point& a, const Point& b, std::uint32_t start, bool to_b, OnVertex&& on_vertex) const;
 
   const Environment* env_;
   Triangulation tri_;
