@@ -11,6 +11,7 @@
 
 #include <unistd.h>
 
+#include <charconv>
 #include <chrono>
 #include <fstream>
 #include <iostream>
@@ -106,15 +107,12 @@ std::vector<std::uint32_t> parse_ids(const std::string& text) {
   std::stringstream ss(text);
   std::string tok;
   while (std::getline(ss, tok, ',')) {
-    std::size_t used = 0;
-    unsigned long v = 0;
-    try {
-      v = std::stoul(tok, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != tok.size()) throw InputError("--from: expected region ids like 0,3, got '" + text + "'");
-    out.push_back(static_cast<std::uint32_t>(v));
+    // Digits only: no sign (stoul would wrap "-1"), nothing past 32 bits.
+    std::uint32_t v = 0;
+    const auto [ptr, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), v);
+    if (tok.empty() || ec != std::errc() || ptr != tok.data() + tok.size())
+      throw InputError("--from: expected region ids like 0,3, got '" + text + "'");
+    out.push_back(v);
   }
   return out;
 }

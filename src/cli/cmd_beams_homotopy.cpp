@@ -133,8 +133,9 @@ void run_tree(const BeamArrangement& A, const LoopBasis& L, const ClassArgs& a, 
     // The schema of the general case, with its one class.
     json c = {{"winding", v}};
     if (!winding_only) c["word"] = w.format(L.names()), c["length"] = w.length();
+    const bool listed = a.limit > 0;
     json j = {{"basis", basis_json(A, L)}, {"ends", ends_name(ends)}, {"sequences", T.count().str()}, {"count", 1},
-              {"listed", 1}, {"truncated", false}, {winding_only ? "windings" : "classes", json::array({c})}};
+              {"listed", listed ? 1 : 0}, {"truncated", !listed}, {winding_only ? "windings" : "classes", listed ? json::array({c}) : json::array()}};
     if (!a.svg.empty()) beams::basis_figure(A, L).save(a.svg);
     return print_json(j);
   }
@@ -142,6 +143,10 @@ void run_tree(const BeamArrangement& A, const LoopBasis& L, const ClassArgs& a, 
   if (!a.svg.empty()) {
     beams::basis_figure(A, L).save(a.svg);
     std::cout << "wrote " << a.svg << "\n";
+  }
+  if (a.limit == 0) {
+    std::cout << "(listed 0 of 1; raise --limit)\n";
+    return;
   }
   if (!winding_only) std::cout << "homotopy class: " << w.format(L.names()) << "\n";
   std::cout << "winding numbers: " << tuple_string(v) << "\n";
@@ -232,7 +237,7 @@ void add_class_options(CLI::App* c, ClassArgs& a) {
   c->add_option("--end", a.end, "the path ends at X,Y (default: back at --start)")->needs(start);
   c->add_flag("--open", a.open, "start and end anywhere: one group per (start, end) region pair")->excludes(start);
   add_count(c, "--limit", a.limit, 0, 1000000, "list at most this many");
-  // A state is about 50 bytes with its hash-set entry and group element: 2^27 is ~6 GiB.
+  // A state takes at least 48 bytes (two state vectors and a hash-set node): 2^27 of them need over 6 GiB.
   add_count(c, "--max-states", a.max_states, 1, std::int64_t(1) << 27, "give up beyond this many (start, region, class) states");
   c->add_flag("--json", a.as_json, "JSON output");
   c->add_option("--svg", a.svg, "draw the regions, the basis beams and their loops (Fig. 16)");
@@ -240,8 +245,11 @@ void add_class_options(CLI::App* c, ClassArgs& a) {
 
 // --basis tree renames the word along the scene's own beams, which gives one class per
 // word whatever the ends: --open's grouping by region pair needs the general method.
-void check_basis(const ClassArgs& a) {
+// --max-states bounds the general method; the tree's renaming keeps no states.
+void check_basis(const ClassArgs& a, const CLI::Option* max_states) {
   if (a.basis == "tree" && a.open) throw CLI::ValidationError("--open", "needs --basis imaginary (--basis tree gives one class per word)");
+  if (a.basis == "tree" && max_states->count() > 0)
+    throw CLI::ValidationError("--max-states", "only with --basis imaginary (--basis tree keeps no states)");
 }
 
 }  // namespace
@@ -254,8 +262,8 @@ void add_beams_homotopy_commands(CLI::App* beams_cmd) {
                 "imaginary (default: the scene's imaginary_beams, else one vertical beam per obstacle; any sufficient beams) "
                 "or tree (the scene's own disjoint, distinguishable, directed beams)")
       ->check(CLI::IsMember({"imaginary", "tree"}));
-  h->callback([] {
-    check_basis(ha);
+  h->callback([h] {
+    check_basis(ha, h->get_option("--max-states"));
     run_classes(ha, false);
   });
 
@@ -266,8 +274,8 @@ void add_beams_homotopy_commands(CLI::App* beams_cmd) {
                 "tree (counters over directed, distinguishable beams; the default when they reach every obstacle and "
                 "without --open) or imaginary")
       ->check(CLI::IsMember({"imaginary", "tree"}));
-  w->callback([] {
-    check_basis(wa);
+  w->callback([w] {
+    check_basis(wa, w->get_option("--max-states"));
     run_classes(wa, true);
   });
 }

@@ -43,6 +43,9 @@ cli_test(beams_filter_inconsistent 0 "inconsistent at observation 2 \\(token a'\
 cli_test(beams_filter_unknown_label fail "token 4 'x' at offset 6: unknown beam label 'x'" - beams filter ${BEAMS}/fig01_six_beams.json --word "c b a x")
 cli_test(beams_filter_undirected_prime fail "beam label 'b' is undirected" - beams filter ${BEAMS}/fig03b_crossing.json --word "b'")
 cli_test(beams_filter_bad_region fail "initial region 9 does not exist" - beams filter ${BEAMS}/fig01_six_beams.json --word c --from 9)
+# Region ids are unsigned 32-bit: "-1" and 2^32 once wrapped to ids that exist.
+cli_test(beams_filter_from_negative fail "--from: expected region ids like 0,3, got '-1'" - beams filter ${BEAMS}/fig01_six_beams.json --word c --from -1)
+cli_test(beams_filter_from_past_32_bits fail "--from: expected region ids like 0,3, got '0,4294967296'" - beams filter ${BEAMS}/fig01_six_beams.json --word c --from 0,4294967296)
 cli_test(beams_filter_point_on_beam fail "initial point \\(4, 0.5\\) is not strictly inside a region" - beams filter ${BEAMS}/fig01_six_beams.json --word c --at 4,0.5)
 # Issue 25: the empty word is an observation sequence (no observation yet).
 cli_test_empty_word(beams_filter_empty_word 0 "possible regions after 0 observations: r0 r1 r2 \\(3 of 3\\)" beams filter ${BEAMS}/fig01_six_beams.json)
@@ -155,6 +158,9 @@ cli_test(beams_homotopy_bad_basis fail "--basis: x not in \\{imaginary,tree\\}" 
 cli_test(beams_homotopy_end_needs_start fail "--end requires --start" - beams homotopy ${BEAMS}/fig01_six_beams.json --word c --end 6,5)
 cli_test(beams_homotopy_open_not_with_start fail "--start excludes --open" - beams homotopy ${BEAMS}/fig01_six_beams.json --word c --open --start 6,5)
 cli_test(beams_winding_open_not_with_tree fail "--open: needs --basis imaginary" - beams winding ${BEAMS}/fig13_perfect.json --word b1 --open --basis tree)
+cli_test(beams_winding_max_states_not_with_tree fail "--max-states: only with --basis imaginary" -
+         beams winding ${BEAMS}/fig13_perfect.json --word b1 --basis tree --max-states 10)
+cli_test(beams_winding_tree_limit_zero 0 "^\\(listed 0 of 1. raise --limit\\)$" - beams winding ${BEAMS}/fig13_perfect.json --word b1 --limit 0)
 cli_test(beams_homotopy_limit_negative fail "--limit: expected an integer from 0 to 1000000, got -1" - beams homotopy ${BEAMS}/fig01_six_beams.json --word c --limit -1)
 cli_test(beams_homotopy_max_states_zero fail "--max-states: expected an integer from 1 to 134217728, got 0" -
          beams homotopy ${BEAMS}/fig01_six_beams.json --word c --max-states 0)
