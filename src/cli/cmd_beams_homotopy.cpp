@@ -255,29 +255,25 @@ void check_basis(const ClassArgs& a, const CLI::Option* max_states) {
 }  // namespace
 
 void add_beams_homotopy_commands(CLI::App* beams_cmd) {
-  auto* h = beams_cmd->add_subcommand("homotopy", "the possible paths up to homotopy, as reduced words of F_n (paper section 5)");
-  static ClassArgs ha;
-  add_class_options(h, ha);
-  h->add_option("--basis", ha.basis,
-                "imaginary (default: the scene's imaginary_beams, else one vertical beam per obstacle; any sufficient beams) "
-                "or tree (the scene's own disjoint, distinguishable, directed beams)")
-      ->check(CLI::IsMember({"imaginary", "tree"}));
-  h->callback([h] {
-    check_basis(ha, h->get_option("--max-states"));
-    run_classes(ha, false);
-  });
-
-  auto* w = beams_cmd->add_subcommand("winding", "the possible winding numbers about each obstacle (paper section 6)");
-  static ClassArgs wa;
-  add_class_options(w, wa);
-  w->add_option("--basis", wa.basis,
-                "tree (counters over directed, distinguishable beams; the default when they reach every obstacle and "
-                "without --open) or imaginary")
-      ->check(CLI::IsMember({"imaginary", "tree"}));
-  w->callback([w] {
-    check_basis(wa, w->get_option("--max-states"));
-    run_classes(wa, true);
-  });
+  // homotopy and winding share their options and differ in the group the classes live in.
+  auto add = [beams_cmd](const char* name, const char* help, ClassArgs& a, const char* basis_help, bool winding_only) {
+    auto* c = beams_cmd->add_subcommand(name, help);
+    add_class_options(c, a);
+    c->add_option("--basis", a.basis, basis_help)->check(CLI::IsMember({"imaginary", "tree"}));
+    c->callback([c, &a, winding_only] {
+      check_basis(a, c->get_option("--max-states"));
+      run_classes(a, winding_only);
+    });
+  };
+  static ClassArgs ha, wa;
+  add("homotopy", "the possible paths up to homotopy, as reduced words of F_n (paper section 5)", ha,
+      "imaginary (default: the scene's imaginary_beams, else one vertical beam per obstacle; any sufficient beams) "
+      "or tree (the scene's own disjoint, distinguishable, directed beams)",
+      false);
+  add("winding", "the possible winding numbers about each obstacle (paper section 6)", wa,
+      "tree (counters over directed, distinguishable beams; the default when they reach every obstacle and "
+      "without --open) or imaginary",
+      true);
 }
 
 }  // namespace preimage::cli
