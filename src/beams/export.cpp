@@ -92,7 +92,10 @@ std::string graph_dot(const BeamArrangement& A, bool merged) {
   if (merged) {
     // Fig. 7(b): one arrow per region pair, labelled with the observations it carries.
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::string>> pairs;
-    for (auto [b, e] : parallel_runs(A.edges())) pairs[{A.edges()[b].from, A.edges()[b].to}].push_back(A.alphabet().format(A.edges()[b].symbol));
+    for (auto [b, e] : parallel_runs(A.edges())) {
+      const Crossing& c = A.edges()[b];
+      pairs[{c.from, c.to}].push_back(A.alphabet().format(c.symbol));
+    }
     for (auto& [k, labels] : pairs) {
       std::string l;
       for (auto& s : labels) l += (l.empty() ? "" : ", ") + s;

@@ -57,12 +57,11 @@ std::vector<filter::ProductFilter::Assignment> initial_assignments(const std::ve
 std::uint64_t count_initial_assignments(std::size_t m, std::size_t n, bool distinguishable, bool together) {
   constexpr std::uint64_t kMax = UINT64_MAX;
   if (m == 0 || n == 0) return 0;
-  if (together || m == 1) return together ? m : 1;
-  // c * f, or kMax when it does not fit (both factors are at least 1).
-  auto times = [&](std::uint64_t c, std::uint64_t f) { return c > kMax / f ? kMax : c * f; };
+  if (together) return m;
+  if (m == 1) return 1;
   std::uint64_t c = 1;
   if (distinguishable) {
-    for (std::size_t b = 0; b < n && c != kMax; ++b) c = times(c, m);  // m >= 2: at most 64 rounds
+    for (std::size_t b = 0; b < n && c != kMax; ++b) c = c > kMax / m ? kMax : c * m;  // m >= 2: at most 64 rounds
     return c;
   }
   // C(m + n - 1, m - 1) = C(n + m - 1, n) as C(n + i, i) for i = 1..m-1 (each exact, and

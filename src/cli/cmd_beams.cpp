@@ -75,9 +75,10 @@ void run_graph(const std::string& file, bool as_json, bool dot, bool merged, con
     return;
   }
   const auto& E = A.edges();
-  std::cout << "G: " << A.num_regions() << " regions, " << A.beams().size() << " beams (" << A.alphabet().num_labels()
-            << (A.alphabet().num_labels() == 1 ? " label), " : " labels), ") << A.num_crossings() << " beam crossings, " << A.num_pieces() << " beam pieces, " << E.size()
-            << " edges (" << A.graph().num_transitions() << " distinct (from, observation, to))\n";
+  const std::size_t labels = A.alphabet().num_labels();
+  std::cout << "G: " << A.num_regions() << " regions, " << A.beams().size() << " beams (" << labels << (labels == 1 ? " label), " : " labels), ")
+            << A.num_crossings() << " beam crossings, " << A.num_pieces() << " beam pieces, " << E.size() << " edges ("
+            << A.graph().num_transitions() << " distinct (from, observation, to))\n";
   // Edges are sorted by (from, symbol, to): one line per region.
   auto e = E.begin();
   for (std::uint32_t r = 0; r < A.num_regions(); ++r) {
@@ -175,10 +176,12 @@ void run_bodies(const BeamArrangement& A, const FilterArgs& a, const std::vector
   // memory.
   const double budget = double(a.max_mb) * (1 << 20), per = 4.0 * double(n);
   const std::uint64_t init = beams::count_initial_assignments(R0.size(), n, a.distinguishable, a.together);
-  if (double(init) * per > budget)
-    throw InputError("--bodies " + std::to_string(n) + ": the initial I-state holds " +
-                     (init == UINT64_MAX ? "more than 1.8e19 " + kind : std::to_string(init) + " " + kind + " (" + bytes_text(double(init) * per) + ")") +
-                     " of " + std::to_string(n) + " bodies, more than --max-mb " + std::to_string(a.max_mb) + " allows");
+  if (double(init) * per > budget) {
+    const std::string size = init == UINT64_MAX ? "more than 1.8e19 " + kind
+                                                : std::to_string(init) + " " + kind + " (" + bytes_text(double(init) * per) + ")";
+    throw InputError("--bodies " + std::to_string(n) + ": the initial I-state holds " + size + " of " + std::to_string(n) +
+                     " bodies, more than --max-mb " + std::to_string(a.max_mb) + " allows");
+  }
   filter::ProductFilter F(A.graph(), n, a.distinguishable, beams::initial_assignments(R0, n, a.distinguishable, a.together));
   // Largest number of transitions one region has for each symbol: with at most
   // min(n, regions) distinct positions moving per assignment (all n when the bodies are
@@ -466,7 +469,8 @@ void add_beams_commands(CLI::App& app) {
   lm->add_flag("--indistinguishable", l_indist, "crossing model: both beams of a pair share one label (Fig. 10)");
   lm->add_option("-o,--output", l_out, "output scene file")->required();
   lm->callback([] {
-    if (l_indist && l_model == "north") throw CLI::ValidationError("--indistinguishable", "only with --model crossing (north beams are one per landmark)");
+    if (l_indist && l_model == "north")
+      throw CLI::ValidationError("--indistinguishable", "only with --model crossing (north beams are one per landmark)");
     scene::Scene s = beams::with_landmark_beams(scene::load_scene(l_file),
                                                 l_model == "north" ? beams::LandmarkModel::North : beams::LandmarkModel::Crossing,
                                                 !l_undirected, !l_indist);

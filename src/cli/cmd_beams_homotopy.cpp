@@ -89,7 +89,8 @@ beams::PathEnds make_ends(const ClassArgs& a) {
   if (ends.mode == beams::PathEnds::Mode::Fixed)
     throw InputError("--word: no region sequence from the region of --start ends in the region of " +
                      std::string(ends.end ? "--end" : "--start (a loop)"));
-  throw InputError("--word: no region sequence returns to its start region, so no loop explains the word (try --open, or --start and --end)");
+  throw InputError(
+      "--word: no region sequence returns to its start region, so no loop explains the word (try --open, or --start and --end)");
 }
 
 const char* ends_text(const beams::PathEnds& e) {
@@ -134,8 +135,9 @@ void run_tree(const BeamArrangement& A, const LoopBasis& L, const ClassArgs& a, 
     json c = {{"winding", v}};
     if (!winding_only) c["word"] = w.format(L.names()), c["length"] = w.length();
     const bool listed = a.limit > 0;
-    json j = {{"basis", basis_json(A, L)}, {"ends", ends_name(ends)}, {"sequences", T.count().str()}, {"count", 1},
-              {"listed", listed ? 1 : 0}, {"truncated", !listed}, {winding_only ? "windings" : "classes", listed ? json::array({c}) : json::array()}};
+    json j = {{"basis", basis_json(A, L)}, {"ends", ends_name(ends)}, {"sequences", T.count().str()},
+              {"count", 1}, {"listed", listed ? 1 : 0}, {"truncated", !listed},
+              {winding_only ? "windings" : "classes", listed ? json::array({c}) : json::array()}};
     if (!a.svg.empty()) beams::basis_figure(A, L).save(a.svg);
     return print_json(j);
   }
