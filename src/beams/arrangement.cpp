@@ -654,10 +654,13 @@ void ArrangementBuilder::regions_and_graph() {
   std::sort(edges.begin(), edges.end(), [](const Crossing& a, const Crossing& b) {
     return std::tie(a.from, a.symbol, a.to, a.half_edge) < std::tie(b.from, b.symbol, b.to, b.half_edge);
   });
-  edges.erase(std::unique(edges.begin(), edges.end(),
-                          [](const Crossing& a, const Crossing& b) { return a.from == b.from && a.symbol == b.symbol && a.to == b.to; }),
-              edges.end());
-  for (auto& e : edges) tr.push_back({e.from, e.symbol, e.to});
+  // The multigraph keeps every piece; the transition relation keeps one transition per
+  // (from, symbol, to), or region sequences would be counted once per parallel piece.
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    const Crossing& e = edges[i];
+    if (i == 0 || e.from != edges[i - 1].from || e.symbol != edges[i - 1].symbol || e.to != edges[i - 1].to)
+      tr.push_back({e.from, e.symbol, e.to});
+  }
   A.edges_ = std::move(edges);
   A.graph_ = filter::TransitionSystem(A.regions_.size(), A.alphabet_.num_symbols(), std::move(tr));
 }
@@ -711,6 +714,12 @@ const Crossing* BeamArrangement::find_edge(std::uint32_t from, Symbol y, std::ui
     return std::tie(c.from, c.symbol, c.to) < k;
   });
   return it != edges_.end() && it->from == from && it->symbol == y && it->to == to ? &*it : nullptr;
+}
+
+BeamArrangement::Piece BeamArrangement::piece(std::uint32_t h) const {
+  const std::uint32_t beam = half_edges_[h].beam;
+  if (beam == kNone) throw std::invalid_argument("BeamArrangement::piece: half-edge " + std::to_string(h) + " is not on a beam");
+  return {beam, ((h & ~1u) - beam_he_[beam]) / 2};
 }
 
 std::optional<std::uint32_t> BeamArrangement::locate(const ExactPoint& p) const {

@@ -17,37 +17,92 @@ json pt(const ExactPoint& p) {
 }
 }  // namespace
 
-json graph_json(const BeamArrangement& A) {
+std::string piece_name(const BeamArrangement& A, std::uint32_t h) {
+  const auto p = A.piece(h);
+  // Even half-edges run from -> to with the region entered on their left: the positive
+  // crossing (right to left), which tells the two crossings of an undirected piece apart.
+  return "beam " + std::to_string(p.beam) + " piece " + std::to_string(p.index) + (h % 2 == 0 ? ", right to left" : ", left to right");
+}
+
+namespace {
+// Runs of edges with the same (from, symbol, to): [begin, end) index pairs.
+std::vector<std::pair<std::size_t, std::size_t>> parallel_runs(const std::vector<Crossing>& E) {
+  std::vector<std::pair<std::size_t, std::size_t>> runs;
+  for (std::size_t i = 0; i < E.size(); ++i)
+    if (i == 0 || E[i].from != E[i - 1].from || E[i].symbol != E[i - 1].symbol || E[i].to != E[i - 1].to)
+      runs.push_back({i, i + 1});
+    else
+      runs.back().second = i + 1;
+  return runs;
+}
+
+json piece_json(const BeamArrangement& A, std::uint32_t h) {
+  const auto p = A.piece(h);
+  return {{"beam", p.beam}, {"piece", p.index}, {"positive", h % 2 == 0}};
+}
+}  // namespace
+
+json graph_json(const BeamArrangement& A, bool merged) {
   json j;
   j["regions"] = json::array();
   for (std::uint32_t r = 0; r < A.num_regions(); ++r)
     j["regions"].push_back({{"id", r}, {"sample", pt(A.regions()[r].sample)}, {"holes", A.regions()[r].cycles.size() - 1}});
   j["beams"] = json::array();
-  for (std::size_t i = 0; i < A.beams().size(); ++i) {
+  for (std::uint32_t i = 0; i < A.beams().size(); ++i) {
     const auto& b = A.beams()[i];
+    const auto [first, last] = A.beam_pieces(i);
     j["beams"].push_back({{"index", i}, {"label", A.alphabet().name(b.label)}, {"directed", b.directed},
-                          {"from", pt(b.from)}, {"to", pt(b.to)}});
+                          {"from", pt(b.from)}, {"to", pt(b.to)}, {"pieces", (last - first) / 2}});
   }
+  const auto& E = A.edges();
+  const auto runs = parallel_runs(E);
+  j["merged"] = merged;
   j["edges"] = json::array();
-  for (const auto& e : A.edges())
-    j["edges"].push_back({{"from", e.from}, {"to", e.to}, {"observation", A.alphabet().format(e.symbol)},
-                          {"beam", A.half_edges()[e.half_edge].beam}});
+  if (merged) {
+    for (auto [b, e] : runs) {
+      json pieces = json::array();
+      for (std::size_t i = b; i < e; ++i) pieces.push_back(piece_json(A, E[i].half_edge));
+      j["edges"].push_back({{"from", E[b].from}, {"to", E[b].to}, {"observation", A.alphabet().format(E[b].symbol)},
+                            {"pieces", pieces}});
+    }
+  } else {
+    for (const auto& e : E) {
+      json x = {{"from", e.from}, {"to", e.to}, {"observation", A.alphabet().format(e.symbol)}};
+      x.update(piece_json(A, e.half_edge));
+      j["edges"].push_back(x);
+    }
+  }
   j["counts"] = {{"regions", A.num_regions()}, {"beams", A.beams().size()}, {"labels", A.alphabet().num_labels()},
-                 {"beam_crossings", A.num_crossings()}, {"edges", A.edges().size()}};
+                 {"beam_crossings", A.num_crossings()}, {"beam_pieces", A.num_pieces()}, {"edges", E.size()},
+                 {"merged_edges", runs.size()}};
   return j;
 }
 
-std::string graph_dot(const BeamArrangement& A) {
-  std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::string>> merged;
-  for (const auto& e : A.edges()) merged[{e.from, e.to}].push_back(A.alphabet().format(e.symbol));
-  std::string out = "digraph G {\n  rankdir=LR;\n  node [shape=circle];\n";
-  for (std::uint32_t r = 0; r < A.num_regions(); ++r) out += "  r" + std::to_string(r) + ";\n";
-  for (auto& [k, labels] : merged) {
-    std::string l;
-    for (auto& s : labels) l += (l.empty() ? "" : ", ") + s;
+std::string graph_dot(const BeamArrangement& A, bool merged) {
+  auto quote = [](const std::string& l) {
     std::string esc;
     for (char c : l) esc += c == '"' ? std::string("\\\"") : std::string(1, c);
-    out += "  r" + std::to_string(k.first) + " -> r" + std::to_string(k.second) + " [label=\"" + esc + "\"];\n";
+    return "\"" + esc + "\"";
+  };
+  std::string out = "digraph G {\n  rankdir=LR;\n  node [shape=circle];\n";
+  for (std::uint32_t r = 0; r < A.num_regions(); ++r) out += "  r" + std::to_string(r) + ";\n";
+  auto arrow = [&](std::uint32_t from, std::uint32_t to, const std::string& label) {
+    out += "  r" + std::to_string(from) + " -> r" + std::to_string(to) + " [label=" + quote(label) + "];\n";
+  };
+  if (merged) {
+    // Fig. 7(b): one arrow per region pair, labelled with the observations it carries.
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::string>> pairs;
+    for (auto [b, e] : parallel_runs(A.edges())) {
+      const Crossing& c = A.edges()[b];
+      pairs[{c.from, c.to}].push_back(A.alphabet().format(c.symbol));
+    }
+    for (auto& [k, labels] : pairs) {
+      std::string l;
+      for (auto& s : labels) l += (l.empty() ? "" : ", ") + s;
+      arrow(k.first, k.second, l);
+    }
+  } else {
+    for (const auto& e : A.edges()) arrow(e.from, e.to, A.alphabet().format(e.symbol) + " (" + piece_name(A, e.half_edge) + ")");
   }
   return out + "}\n";
 }

@@ -92,7 +92,8 @@ Trace trace_path(const BeamArrangement& A, std::span<const ExactPoint> path) {
 }
 
 // ---------------------------------------------------------------- simulation
-Simulation simulate(const BeamArrangement& A, std::uint64_t seed, std::size_t steps) {
+Simulation simulate(const BeamArrangement& A, std::uint64_t seed, std::size_t steps,
+                    const std::function<void(std::size_t)>& progress) {
   std::mt19937_64 rng(seed);
   const CGAL::Bbox_2 box = A.environment().bbox();
   std::uniform_real_distribution<double> ux(box.xmin(), box.xmax()), uy(box.ymin(), box.ymax());
@@ -118,6 +119,7 @@ Simulation simulate(const BeamArrangement& A, std::uint64_t seed, std::size_t st
         sim.trace.word.insert(sim.trace.word.end(), t.word.begin(), t.word.end());
         sim.trace.regions.insert(sim.trace.regions.end(), t.regions.begin() + 1, t.regions.end());
         sim.trace.crossings.insert(sim.trace.crossings.end(), t.crossings.begin(), t.crossings.end());
+        if (progress) progress(k + 1);
         break;
       } catch (const InputError&) {
       }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <preimage/beams/region_filter.hpp>
 #include <preimage/error.hpp>
+#include <preimage/filter/trellis.hpp>
 
 #include <algorithm>
 #include <map>
@@ -25,6 +26,54 @@ std::vector<std::uint32_t> initial_regions(const BeamArrangement& A, const std::
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
+}
+
+std::vector<filter::ProductFilter::Assignment> initial_assignments(const std::vector<std::uint32_t>& R0, std::size_t n,
+                                                                   bool distinguishable, bool together) {
+  using Assignment = filter::ProductFilter::Assignment;
+  std::vector<Assignment> out;
+  if (R0.empty() || n == 0) return out;
+  if (together) {
+    for (auto r : R0) out.push_back(Assignment(n, r));
+    return out;
+  }
+  if (distinguishable) return filter::ProductFilter::all_assignments(R0, n);
+  // Non-decreasing index tuples: the next one raises the last index that can rise and
+  // levels everything after it (balls and urns, Fig. 12).
+  const std::size_t m = R0.size();
+  std::vector<std::size_t> idx(n, 0);
+  for (;;) {
+    Assignment a(n);
+    for (std::size_t b = 0; b < n; ++b) a[b] = R0[idx[b]];
+    out.push_back(std::move(a));
+    std::size_t i = n;
+    while (i > 0 && idx[i - 1] == m - 1) --i;
+    if (i == 0) return out;
+    const std::size_t v = idx[i - 1] + 1;
+    std::fill(idx.begin() + static_cast<std::ptrdiff_t>(i - 1), idx.end(), v);
+  }
+}
+
+std::uint64_t count_initial_assignments(std::size_t m, std::size_t n, bool distinguishable, bool together) {
+  constexpr std::uint64_t kMax = UINT64_MAX;
+  if (m == 0 || n == 0) return 0;
+  if (together) return m;
+  if (m == 1) return 1;
+  std::uint64_t c = 1;
+  if (distinguishable) {
+    for (std::size_t b = 0; b < n && c != kMax; ++b) c = c > kMax / m ? kMax : c * m;  // m >= 2: at most 64 rounds
+    return c;
+  }
+  // C(m + n - 1, m - 1) = C(n + m - 1, n) as C(n + i, i) for i = 1..m-1 (each exact, and
+  // increasing, so the first one past 2^64 ends the count); the smaller of the two
+  // binomial parameters sets the number of rounds.
+  const std::size_t k = std::min(m - 1, n), top = n + m - 1 - k;
+  for (std::size_t i = 1; i <= k; ++i) {
+    const filter::BigCount next = filter::BigCount(c) * (top + i) / i;
+    if (next > kMax) return kMax;
+    c = static_cast<std::uint64_t>(next);
+  }
+  return c;
 }
 
 RegionFilter::RegionFilter(const BeamArrangement& A, const std::vector<std::uint32_t>& initial, FilterMode mode,

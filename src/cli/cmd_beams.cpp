@@ -9,6 +9,10 @@
 #include <preimage/error.hpp>
 #include <preimage/filter/trellis.hpp>
 
+#include <unistd.h>
+
+#include <charconv>
+#include <chrono>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -32,21 +36,59 @@ std::vector<geometry::Point> to_double(const std::vector<geometry::ExactPoint>& 
   return out;
 }
 
+// A status line on stderr for runs that take more than a second, redrawn at most twice
+// a second and erased at the end; only when stderr is a terminal, so pipes and logs
+// stay clean. Ctrl-C interrupts as usual (nothing here holds it).
+class Progress {
+ public:
+  // Shows "<what>: <done> of <total> <unit>".
+  Progress(std::string what, std::string unit) : what_(std::move(what)), unit_(std::move(unit)), tty_(isatty(STDERR_FILENO) == 1) {}
+  Progress(const Progress&) = delete;
+  Progress& operator=(const Progress&) = delete;
+  ~Progress() {
+    if (shown_) std::cerr << "\r\033[K" << std::flush;
+  }
+  void operator()(std::size_t done, std::size_t total) {
+    if (!tty_) return;
+    const auto now = Clock::now();
+    if (now - start_ < std::chrono::seconds(1) || now - last_ < std::chrono::milliseconds(500)) return;
+    last_ = now;
+    shown_ = true;
+    std::cerr << "\r\033[K" << what_ << ": " << done << " of " << total << " " << unit_ << std::flush;
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  std::string what_, unit_;
+  bool tty_, shown_ = false;
+  Clock::time_point start_ = Clock::now(), last_{};
+};
+
 // ---------------------------------------------------------------- graph
-void run_graph(const std::string& file, bool as_json, bool dot, const std::string& svg) {
+void run_graph(const std::string& file, bool as_json, bool dot, bool merged, const std::string& svg) {
   const scene::Scene s = scene::load_scene(file);
   const BeamArrangement A = BeamArrangement::build(s);
   if (!svg.empty()) beams::arrangement_figure(A).save(svg);
-  if (as_json) return print_json(beams::graph_json(A));
+  if (as_json) return print_json(beams::graph_json(A, merged));
   if (dot) {
-    std::cout << beams::graph_dot(A);
+    std::cout << beams::graph_dot(A, merged);
     return;
   }
-  std::cout << "G: " << A.num_regions() << " regions, " << A.beams().size() << " beams (" << A.alphabet().num_labels()
-            << " labels), " << A.num_crossings() << " beam crossings, " << A.edges().size() << " edges\n";
+  const auto& E = A.edges();
+  const std::size_t labels = A.alphabet().num_labels();
+  std::cout << "G: " << A.num_regions() << " regions, " << A.beams().size() << " beams (" << labels << (labels == 1 ? " label), " : " labels), ")
+            << A.num_crossings() << " beam crossings, " << A.num_pieces() << " beam pieces, " << E.size() << " edges ("
+            << A.graph().num_transitions() << " distinct (from, observation, to))\n";
+  // Edges are sorted by (from, symbol, to): one line per region.
+  auto e = E.begin();
   for (std::uint32_t r = 0; r < A.num_regions(); ++r) {
     std::cout << "  r" << r << " at " << geometry::format_point(geometry::to_double(A.regions()[r].sample)) << ":";
-    for (auto& t : A.graph().out(r)) std::cout << " -" << A.alphabet().format(t.symbol) << "-> r" << t.to;
+    for (; e != E.end() && e->from == r; ++e) {
+      const bool repeat = e != E.begin() && e[-1].from == r && e[-1].symbol == e->symbol && e[-1].to == e->to;
+      if (merged && repeat) continue;
+      std::cout << " -" << A.alphabet().format(e->symbol) << "-> r" << e->to;
+      if (!merged) std::cout << " (" << beams::piece_name(A, e->half_edge) << ")";
+    }
     std::cout << "\n";
   }
   if (!svg.empty()) std::cout << "wrote " << svg << "\n";
@@ -56,7 +98,8 @@ void run_graph(const std::string& file, bool as_json, bool dot, const std::strin
 struct FilterArgs {
   std::string file, word, stream, svg, from;
   std::vector<std::string> at;
-  std::size_t bodies = 1, limit = 10, cache_mb = 64;
+  std::size_t bodies = 1, limit = 10, cache_mb = 64, max_mb = 1024;
+  bool has_word = false, several = false;  // --word given (possibly empty); --bodies given
   bool distinguishable = false, together = false, sequences = false, sample = false, cached = false, as_json = false;
 };
 
@@ -65,25 +108,28 @@ std::vector<std::uint32_t> parse_ids(const std::string& text) {
   std::stringstream ss(text);
   std::string tok;
   while (std::getline(ss, tok, ',')) {
-    std::size_t used = 0;
-    unsigned long v = 0;
-    try {
-      v = std::stoul(tok, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != tok.size()) throw InputError("--from: expected region ids like 0,3, got '" + text + "'");
-    out.push_back(static_cast<std::uint32_t>(v));
+    // Digits only: no sign (stoul would wrap "-1"), nothing past 32 bits.
+    std::uint32_t v = 0;
+    const auto [ptr, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), v);
+    if (tok.empty() || ec != std::errc() || ptr != tok.data() + tok.size())
+      throw InputError("--from: expected region ids like 0,3, got '" + text + "'");
+    out.push_back(v);
   }
   return out;
 }
 
 // Calls `fn` for each observation of --word, or of --stream as it is read. A bad token
-// ends the stream with an error after everything before it was delivered.
+// ends the stream with an error after everything before it was delivered. A long --word
+// shows progress on a terminal (a stream's lines are their own progress).
 template <class Fn>
 void for_each_observation(const BeamArrangement& A, const FilterArgs& a, Fn fn) {
-  if (!a.word.empty()) {
-    for (auto y : A.alphabet().parse_word(a.word)) fn(y);
+  if (a.has_word) {
+    const auto word = A.alphabet().parse_word(a.word);
+    Progress progress("beams filter", "observations");
+    for (std::size_t i = 0; i < word.size(); ++i) {
+      fn(word[i]);
+      progress(i + 1, word.size());
+    }
     return;
   }
   std::ifstream f;
@@ -98,16 +144,53 @@ void for_each_observation(const BeamArrangement& A, const FilterArgs& a, Fn fn) 
   while (r.next(y)) fn(y);
 }
 
+// One JSON Lines record per observation of a stream (--stream --json), flushed.
+void print_json_line(const json& j) { std::cout << j.dump() << std::endl; }
+
+// "2.1 GiB": a byte count for messages about memory bounds.
+std::string bytes_text(double b) {
+  const char* unit[] = {"B", "KiB", "MiB", "GiB", "TiB", "PiB", "EiB"};
+  int u = 0;
+  while (b >= 1024 && u < 6) b /= 1024, ++u;
+  std::ostringstream s;
+  s.precision(b < 10 ? 2 : 3);
+  s << b << " " << unit[u];
+  return s.str();
+}
+
+// "{r0: 2, r3: 1}": a multiset of regions (a sorted tuple) as bodies per region (Fig. 12).
+std::vector<std::pair<std::uint32_t, std::size_t>> bodies_per_region(const filter::ProductFilter::Assignment& t) {
+  std::vector<std::pair<std::uint32_t, std::size_t>> out;
+  for (auto r : t)
+    if (!out.empty() && out.back().first == r) ++out.back().second;
+    else out.push_back({r, 1});
+  return out;
+}
+
 void run_bodies(const BeamArrangement& A, const FilterArgs& a, const std::vector<std::uint32_t>& R0) {
-  std::vector<filter::ProductFilter::Assignment> init;
-  // Every body in one of R_0 (all of them in the same region with --together).
   const std::size_t n = a.bodies;
-  if (a.together) {
-    for (auto r : R0) init.push_back(filter::ProductFilter::Assignment(n, r));
-  } else {
-    init = filter::ProductFilter::all_assignments(R0, n);
+  const std::string kind = a.distinguishable ? "tuples" : "multisets";
+  // The product filter's I-state is a set of assignments of n region ids (4 bytes each);
+  // a step builds the next one beside it. Both are bounded by --max-mb before they are
+  // built, so a huge --bodies is refused with the size it implies instead of exhausting
+  // memory.
+  const double budget = double(a.max_mb) * (1 << 20), per = 4.0 * double(n);
+  const std::uint64_t init = beams::count_initial_assignments(R0.size(), n, a.distinguishable, a.together);
+  if (double(init) * per > budget) {
+    const std::string size = init == UINT64_MAX ? "more than 1.8e19 " + kind
+                                                : std::to_string(init) + " " + kind + " (" + bytes_text(double(init) * per) + ")";
+    throw InputError("--bodies " + std::to_string(n) + ": the initial I-state holds " + size + " of " + std::to_string(n) +
+                     " bodies, more than --max-mb " + std::to_string(a.max_mb) + " allows");
   }
-  filter::ProductFilter F(A.graph(), n, a.distinguishable, init);
+  filter::ProductFilter F(A.graph(), n, a.distinguishable, beams::initial_assignments(R0, n, a.distinguishable, a.together));
+  // Largest number of transitions one region has for each symbol: with at most
+  // min(n, regions) distinct positions moving per assignment (all n when the bodies are
+  // distinguishable), a step makes at most size * positions * fan-out candidates.
+  std::vector<std::size_t> fan_out(A.alphabet().num_symbols(), 0);
+  for (std::uint32_t r = 0; r < A.num_regions(); ++r)
+    for (beams::Symbol y = 0; y < fan_out.size(); ++y) fan_out[y] = std::max(fan_out[y], A.graph().out(r, y).size());
+  const double positions = double(a.distinguishable ? n : std::min<std::size_t>(n, A.num_regions()));
+
   std::optional<filter::Dfa> fig11;
   filter::State fig11_state = 0;
   if (n == 2 && a.together) try {
@@ -119,50 +202,87 @@ void run_bodies(const BeamArrangement& A, const FilterArgs& a, const std::vector
   std::vector<beams::Symbol> word;
   std::size_t k = 0;
   bool ok = true;
-  const bool live = !a.stream.empty() && !a.as_json;
+  const bool live = !a.has_word;
   for_each_observation(A, a, [&](beams::Symbol y) {
     word.push_back(y);
     if (!ok) return;
+    const double candidates = double(F.size()) * positions * double(fan_out[y]);
+    if ((double(F.size()) + candidates) * per > budget)
+      throw InputError("observation " + std::to_string(word.size()) + " (token " + A.alphabet().format(y) + "): the next I-state of " +
+                       std::to_string(n) + " bodies may hold up to " + std::to_string(std::uint64_t(candidates)) + " " + kind + " (" +
+                       bytes_text((double(F.size()) + candidates) * per) + " with the current one), more than --max-mb " +
+                       std::to_string(a.max_mb) + " allows");
     if (fig11) fig11_state = fig11->step(fig11_state, y);
     if (!F.step(y)) {
       ok = false;
       k = word.size() - 1;
     }
-    if (live) std::cout << word.size() << " " << A.alphabet().format(y) << ": " << F.size() << " possible assignments" << std::endl;
+    if (live && a.as_json)
+      print_json_line({{"observation", word.size()}, {"token", A.alphabet().format(y)}, {"count", F.size()}});
+    else if (live)
+      std::cout << word.size() << " " << A.alphabet().format(y) << ": " << F.size() << " possible assignments" << std::endl;
   });
   const auto as = F.assignments();
+  const std::size_t listed = std::min(as.size(), a.limit);
+  if (!a.svg.empty()) {
+    // The regions some body may be in.
+    beams::FigureOptions o;
+    std::vector<char> any(A.num_regions(), 0);
+    for (auto& t : as)
+      for (auto r : t) any[r] = 1;
+    for (std::uint32_t r = 0; r < A.num_regions(); ++r)
+      if (any[r]) o.highlight.push_back(r);
+    beams::arrangement_figure(A, o).save(a.svg);
+  }
   if (a.as_json) {
-    json j = {{"bodies", n}, {"distinguishable", a.distinguishable}, {"observations", word.size()}, {"consistent", ok},
-              {"assignments", as}};
+    json list = json::array();
+    for (std::size_t i = 0; i < listed; ++i) {
+      if (a.distinguishable) {
+        list.push_back(as[i]);
+      } else {
+        json m = json::array();
+        for (auto [r, c] : bodies_per_region(as[i])) m.push_back({r, c});
+        list.push_back(m);
+      }
+    }
+    json j = {{"bodies", n},         {"distinguishable", a.distinguishable}, {"observations", word.size()},
+              {"consistent", ok},    {"count", as.size()},                   {"listed", listed},
+              {"truncated", listed < as.size()}, {a.distinguishable ? "assignments" : "multisets", list}};
     if (!ok) j["inconsistent_at"] = k + 1;
     if (fig11) j["fig11_filter"] = fig11_state == filter::kNoState ? "none" : fig11->names[fig11_state];
-    return print_json(j);
+    return live ? print_json_line(j) : print_json(j);
   }
   if (!ok) {
     std::cout << "inconsistent at observation " << k + 1 << " (token " << A.alphabet().format(word[k]) << "): no assignment of "
               << n << " bodies explains the word\n";
-    return;
+  } else {
+    std::cout << n << (a.distinguishable ? " distinguishable" : " indistinguishable") << " bodies after " << word.size()
+              << " observations: " << as.size() << " possible "
+              << (a.distinguishable ? "assignments (region of each body)" : "multisets (bodies per region)") << "\n";
+    for (std::size_t i = 0; i < listed; ++i) {
+      if (a.distinguishable) {
+        std::cout << "  (";
+        for (std::size_t b = 0; b < n; ++b) std::cout << (b ? ", " : "") << "r" << as[i][b];
+        std::cout << ")\n";
+      } else {
+        std::cout << "  {";
+        bool first = true;
+        for (auto [r, c] : bodies_per_region(as[i])) std::cout << (first ? "" : ", ") << "r" << r << ": " << c, first = false;
+        std::cout << "}\n";
+      }
+    }
+    if (as.size() > listed) std::cout << "  ... " << as.size() - listed << " more (--limit)\n";
+    if (fig11) {
+      auto reading = beams::together_reading(A, as);
+      std::cout << "Fig. 11 filter (" << fig11->size() << " I-states): "
+                << (fig11_state == filter::kNoState ? "none" : fig11->names[fig11_state]) << "; the product filter says "
+                << (reading ? *reading : "mixed") << "\n";
+    }
   }
-  std::cout << n << (a.distinguishable ? " distinguishable" : " indistinguishable") << " bodies after " << word.size()
-            << " observations: " << as.size() << " possible " << (a.distinguishable ? "assignments" : "multisets (bodies per region)")
-            << "\n";
-  for (std::size_t i = 0; i < std::min<std::size_t>(as.size(), a.limit); ++i) {
-    std::cout << "  (";
-    for (std::size_t b = 0; b < n; ++b) std::cout << (b ? ", " : "") << "r" << as[i][b];
-    std::cout << ")\n";
-  }
-  if (as.size() > a.limit) std::cout << "  ... " << as.size() - a.limit << " more (--limit)\n";
-  if (fig11) {
-    auto reading = beams::together_reading(A, as);
-    std::cout << "Fig. 11 filter (" << fig11->size() << " I-states): "
-              << (fig11_state == filter::kNoState ? "none" : fig11->names[fig11_state])
-              << "; the product filter says " << (reading ? *reading : "mixed") << "\n";
-  }
+  if (!a.svg.empty()) std::cout << "wrote " << a.svg << "\n";
 }
 
 void run_filter(const FilterArgs& a) {
-  if (a.word.empty() == a.stream.empty()) throw InputError("give exactly one of --word and --stream");
-  if (a.bodies == 0) throw InputError("--bodies: at least 1");
   const scene::Scene s = scene::load_scene(a.file);
   const BeamArrangement A = BeamArrangement::build(s);
   std::vector<geometry::ExactPoint> pts;
@@ -172,24 +292,23 @@ void run_filter(const FilterArgs& a) {
   if (R0all.empty())
     for (std::uint32_t r = 0; r < A.num_regions(); ++r) R0all.push_back(r);
 
-  if (a.bodies > 1) return run_bodies(A, a, R0all);
+  if (a.several) return run_bodies(A, a, R0all);
   std::vector<beams::Symbol> word;
 
   beams::RegionFilter F(A, R0, a.cached ? beams::FilterMode::Cached : beams::FilterMode::Plain, a.cache_mb << 20);
   std::size_t bad = 0;  // 1-based observation that emptied the I-state
-  auto feed = [&](beams::Symbol y) {
+  // Streaming: one line (or JSON Lines record) per observation, flushed, so the filter
+  // runs on a live feed.
+  const bool live = !a.has_word;
+  for_each_observation(A, a, [&](beams::Symbol y) {
     word.push_back(y);
     if (!bad && !F.step(y)) bad = word.size();
-  };
-  // Streaming: one line per observation, flushed, so the filter runs on a live feed.
-  const bool live = !a.stream.empty() && !a.as_json;
-  for_each_observation(A, a, [&](beams::Symbol y) {
-    feed(y);
-    if (live) {
-      const auto rs = F.regions();
-      std::cout << word.size() << " " << A.alphabet().format(y) << ": " << rs.size() << " possible: " << region_list(rs)
-                << std::endl;
-    }
+    if (!live) return;
+    const auto rs = F.regions();
+    if (a.as_json)
+      print_json_line({{"observation", word.size()}, {"token", A.alphabet().format(y)}, {"regions", rs}});
+    else
+      std::cout << word.size() << " " << A.alphabet().format(y) << ": " << rs.size() << " possible: " << region_list(rs) << std::endl;
   });
   const auto R = F.regions();
   json j;
@@ -207,19 +326,27 @@ void run_filter(const FilterArgs& a) {
   std::vector<geometry::Point> path;
   if (!bad && (a.sequences || a.sample)) {
     const filter::Trellis T(A.graph(), R0, word);
+    // Listing holds (k+1) region ids per sequence: bound it like the other I-states.
+    const double list_bytes = 4.0 * double(word.size() + 1) * double(a.limit);
+    if (list_bytes > double(std::size_t(1) << 30))
+      throw InputError("--limit " + std::to_string(a.limit) + ": listing that many sequences of " + std::to_string(word.size() + 1) +
+                       " regions needs " + bytes_text(list_bytes) + ", more than 1 GiB");
     bool cut = false;
-    const auto seqs = T.enumerate(a.limit, &cut);
+    const auto seqs = T.enumerate(std::max<std::size_t>(a.limit, a.sample ? 1 : 0), &cut);
+    const std::size_t listed = std::min(seqs.size(), a.limit);
+    cut = cut || listed < seqs.size();
     const std::string count = T.count().str();
     if (a.sample && !seqs.empty()) path = to_double(beams::sample_path(A, seqs.front(), word));
     if (a.as_json) {
-      j["sequences"] = {{"count", count}, {"listed", seqs}, {"truncated", cut}};
+      j["sequences"] = {{"count", count}, {"listed", std::vector<std::vector<std::uint32_t>>(seqs.begin(), seqs.begin() + listed)},
+                        {"truncated", cut}};
       json stages = json::array();
       for (std::size_t i = 0; i <= T.length(); ++i) stages.push_back(T.stage(i));
       j["sequences"]["stages"] = stages;
       if (!path.empty()) j["sample_path"] = points_json(path);
     } else {
       std::cout << "possible region sequences: " << count << "\n";
-      for (auto& sq : seqs) std::cout << "  " << region_list(sq) << "\n";
+      for (std::size_t i = 0; i < listed; ++i) std::cout << "  " << region_list(seqs[i]) << "\n";
       if (cut) std::cout << "  ... more (--limit " << a.limit << ")\n";
       std::cout << "possible start regions: " << region_list(T.stage(0)) << "\n";
       if (!path.empty()) std::cout << "sample path for the first sequence: " << path.size() << " points\n";
@@ -233,14 +360,15 @@ void run_filter(const FilterArgs& a) {
     beams::arrangement_figure(A, o).save(a.svg);
     if (!a.as_json) std::cout << "wrote " << a.svg << "\n";
   }
-  if (a.as_json) print_json(j);
+  if (a.as_json) live ? print_json_line(j) : print_json(j);
 }
 
 // ---------------------------------------------------------------- simulate
 void run_simulate(const std::string& file, std::uint64_t seed, std::size_t steps, bool as_json, const std::string& svg) {
   const scene::Scene s = scene::load_scene(file);
   const BeamArrangement A = BeamArrangement::build(s);
-  const beams::Simulation sim = beams::simulate(A, seed, steps);
+  Progress progress("beams simulate", "path segments");
+  const beams::Simulation sim = beams::simulate(A, seed, steps, [&](std::size_t k) { progress(k, steps); });
   const auto& w = sim.trace.word;
   beams::RegionFilter F(A);
   for (auto y : w) F.step(y);
@@ -278,33 +406,46 @@ void add_beams_commands(CLI::App& app) {
   auto* beams_cmd = app.add_subcommand("beams", "sensor beams: regions, region filter, possible paths (beams paper)");
   beams_cmd->require_subcommand(1);
 
-  auto* g = beams_cmd->add_subcommand("graph", "regions of free space cut by the beams, and the crossing graph G");
+  auto* g = beams_cmd->add_subcommand("graph", "regions of free space cut by the beams, and the crossing multigraph G");
   static std::string g_file, g_svg;
-  static bool g_json = false, g_dot = false;
+  static bool g_json = false, g_dot = false, g_merged = false;
   g->add_option("scene", g_file, "scene file (JSON)")->required();
   auto* gj = g->add_flag("--json", g_json, "G as JSON");
   g->add_flag("--dot", g_dot, "G as Graphviz DOT")->excludes(gj);
+  g->add_flag("--merged", g_merged,
+              "merge parallel edges: one per (from, observation, to) listing its beam pieces (text, JSON), "
+              "one arrow per region pair with a list of labels (DOT, Fig. 7(b))");
   g->add_option("--svg", g_svg, "draw regions and beams to this SVG file");
-  g->callback([] { run_graph(g_file, g_json, g_dot, g_svg); });
+  g->callback([] { run_graph(g_file, g_json, g_dot, g_merged, g_svg); });
 
   auto* f = beams_cmd->add_subcommand("filter", "possible regions (and region sequences) after a sensor word");
   static FilterArgs fa;
   f->add_option("scene", fa.file, "scene file (JSON)")->required();
-  f->add_option("--word", fa.word, "sensor word: \"c b a' b\" or the one-character stream \"cba'b\"");
-  f->add_option("--stream", fa.stream, "read the word from a file, or - for stdin, observation by observation");
+  auto* word = f->add_option("--word", fa.word, "sensor word: \"c b a' b\" or the one-character stream \"cba'b\" (\"\": no observation)");
+  auto* stream = f->add_option("--stream", fa.stream, "read the word from a file, or - for stdin, observation by observation")
+                     ->excludes(word);
   f->add_option("--from", fa.from, "initial regions R_0 as ids, e.g. 0,3 (default: all)");
   f->add_option("--at", fa.at, "initial region containing point X,Y (repeatable)");
-  f->add_option("--bodies", fa.bodies, "number of bodies (observations are anonymous)");
-  f->add_flag("--distinguishable", fa.distinguishable, "with --bodies: track tuples (product filter) instead of counts");
-  f->add_flag("--together", fa.together, "with --bodies: all bodies start in the same region");
-  f->add_flag("--sequences", fa.sequences, "count and list the possible region sequences");
-  f->add_option("--limit", fa.limit, "list at most this many sequences or assignments (default 10)");
-  f->add_flag("--sample-path", fa.sample, "a sample path for the first possible sequence");
-  f->add_flag("--cached", fa.cached, "compile the filter lazily into a subset automaton");
-  f->add_option("--cache-mb", fa.cache_mb, "memory bound of the cached mode in MiB (default 64)");
-  f->add_flag("--json", fa.as_json, "JSON output");
+  auto* bodies = add_count(f, "--bodies", fa.bodies, 1, 1000000000,
+                           "number of bodies, observed anonymously: the product filter of 4.2");
+  f->add_flag("--distinguishable", fa.distinguishable, "track tuples (which body is where) instead of bodies per region")->needs(bodies);
+  f->add_flag("--together", fa.together, "all bodies start in the same region")->needs(bodies);
+  add_count(f, "--max-mb", fa.max_mb, 1, 1048576, "memory bound of the several-body I-state in MiB")->needs(bodies);
+  auto* seqs = f->add_flag("--sequences", fa.sequences, "count and list the possible region sequences (one body)")->excludes(bodies);
+  auto* limit = add_count(f, "--limit", fa.limit, 0, 1000000, "list at most this many sequences or assignments");
+  auto* sample = f->add_flag("--sample-path", fa.sample, "a sample path for the first possible sequence (one body)")->excludes(bodies);
+  auto* cached = f->add_flag("--cached", fa.cached, "compile the filter lazily into a subset automaton (one body)")->excludes(bodies);
+  add_count(f, "--cache-mb", fa.cache_mb, 1, 1048576, "memory bound of the cached mode in MiB")->needs(cached);
+  f->add_flag("--json", fa.as_json, "JSON output (JSON Lines with --stream: one record per observation, then the summary)");
   f->add_option("--svg", fa.svg, "draw the final possible regions (and the sample path)");
-  f->callback([] { run_filter(fa); });
+  f->callback([word, stream, bodies, seqs, limit, sample] {
+    if (word->count() == 0 && stream->count() == 0) throw CLI::RequiredError("--word or --stream");
+    if (limit->count() > 0 && seqs->count() == 0 && sample->count() == 0 && bodies->count() == 0)
+      throw CLI::ValidationError("--limit", "needs --sequences, --sample-path or --bodies (it bounds their lists)");
+    fa.has_word = word->count() > 0;
+    fa.several = bodies->count() > 0;
+    run_filter(fa);
+  });
 
   auto* sm = beams_cmd->add_subcommand("simulate", "a random body path: its true word and regions, and the filter's answer");
   static std::string s_file, s_svg;
@@ -312,8 +453,8 @@ void add_beams_commands(CLI::App& app) {
   static std::size_t s_steps = 20;
   static bool s_json = false;
   sm->add_option("scene", s_file, "scene file (JSON)")->required();
-  sm->add_option("--seed", s_seed, "random seed (default 1)");
-  sm->add_option("--steps", s_steps, "path segments (default 20)");
+  add_count(sm, "--seed", s_seed, 0, INT64_MAX, "random seed");
+  add_count(sm, "--steps", s_steps, 0, 1000000, "path segments");
   sm->add_flag("--json", s_json, "JSON output");
   sm->add_option("--svg", s_svg, "draw the path and the final possible regions");
   sm->callback([] { run_simulate(s_file, s_seed, s_steps, s_json, s_svg); });
@@ -322,12 +463,14 @@ void add_beams_commands(CLI::App& app) {
   static std::string l_file, l_out, l_model = "crossing";
   static bool l_undirected = false, l_indist = false;
   lm->add_option("scene", l_file, "scene with landmarks and no environment")->required();
-  lm->add_option("--model", l_model, "crossing (pairs of landmarks aligned, Fig. 6a) or north (landmark due south, Fig. 6b)");
+  lm->add_option("--model", l_model, "crossing (pairs of landmarks aligned, Fig. 6a) or north (landmark due south, Fig. 6b)")
+      ->check(CLI::IsMember({"crossing", "north"}));
   lm->add_flag("--undirected", l_undirected, "beams do not report the crossing direction");
   lm->add_flag("--indistinguishable", l_indist, "crossing model: both beams of a pair share one label (Fig. 10)");
   lm->add_option("-o,--output", l_out, "output scene file")->required();
   lm->callback([] {
-    if (l_model != "crossing" && l_model != "north") throw InputError("--model: expected crossing or north, got '" + l_model + "'");
+    if (l_indist && l_model == "north")
+      throw CLI::ValidationError("--indistinguishable", "only with --model crossing (north beams are one per landmark)");
     scene::Scene s = beams::with_landmark_beams(scene::load_scene(l_file),
                                                 l_model == "north" ? beams::LandmarkModel::North : beams::LandmarkModel::Crossing,
                                                 !l_undirected, !l_indist);

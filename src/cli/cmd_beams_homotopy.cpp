@@ -63,22 +63,34 @@ void print_basis(const BeamArrangement& A, const LoopBasis& L) {
 LoopBasis make_basis(const BeamArrangement& A, const scene::Scene& s, const std::string& basis, bool for_winding) {
   if (basis == "tree") return LoopBasis::tree(A, s, for_winding);
   if (basis == "imaginary") return s.imaginary_beams.empty() ? LoopBasis::imaginary(A, s) : LoopBasis::user(A, s);
-  throw InputError("--basis: expected imaginary or tree, got '" + basis + "'");
+  throw std::logic_error("make_basis: unknown basis '" + basis + "'");  // --basis is checked at parse time
 }
 
+// --open, --start and --end exclude and need each other at parse time (usage errors).
 beams::PathEnds make_ends(const ClassArgs& a) {
   beams::PathEnds ends;
   if (!a.start.empty()) {
-    if (a.open) throw InputError("--open: not with --start (a fixed start closes the path)");
     ends.mode = beams::PathEnds::Mode::Fixed;
     ends.start = geometry::to_exact(parse_point(a.start, "--start"));
     if (!a.end.empty()) ends.end = geometry::to_exact(parse_point(a.end, "--end"));
-  } else if (!a.end.empty()) {
-    throw InputError("--end: needs --start");
   } else if (a.open) {
     ends.mode = beams::PathEnds::Mode::Open;
   }
   return ends;
+}
+
+// No class at all is not an answer but an impossible input: say why, exit 1 (the same
+// for text and JSON, and nothing on stdout).
+[[noreturn]] void no_class(const BeamArrangement& A, const std::vector<beams::Symbol>& word, std::size_t inconsistent_at,
+                           const beams::PathEnds& ends) {
+  if (inconsistent_at > 0)
+    throw InputError("--word: no path explains the word (inconsistent at observation " + std::to_string(inconsistent_at) +
+                     ", token " + A.alphabet().format(word[inconsistent_at - 1]) + ")");
+  if (ends.mode == beams::PathEnds::Mode::Fixed)
+    throw InputError("--word: no region sequence from the region of --start ends in the region of " +
+                     std::string(ends.end ? "--end" : "--start (a loop)"));
+  throw InputError(
+      "--word: no region sequence returns to its start region, so no loop explains the word (try --open, or --start and --end)");
 }
 
 const char* ends_text(const beams::PathEnds& e) {
@@ -103,7 +115,6 @@ std::string where_text(std::uint32_t s, std::uint32_t r) {
 // Tree basis: the word by renaming (Props. 5.1, 5.3), closed by the return path.
 void run_tree(const BeamArrangement& A, const LoopBasis& L, const ClassArgs& a, const beams::PathEnds& ends,
               const std::vector<beams::Symbol>& word, bool winding_only) {
-  if (ends.mode == beams::PathEnds::Mode::Open) throw InputError("--open: needs --basis imaginary");
   beams::BasisWordFilter F(L);
   for (auto y : word) F.step(y);
   beams::FreeWord w = F.word();
@@ -117,13 +128,16 @@ void run_tree(const BeamArrangement& A, const LoopBasis& L, const ClassArgs& a, 
     R0.push_back(*r);
   }
   const filter::Trellis T(A.graph(), R0, word);
+  if (!T.consistent()) no_class(A, word, T.inconsistent_at(), ends);
   const auto v = L.winding(w);
   if (a.as_json) {
     // The schema of the general case, with its one class.
     json c = {{"winding", v}};
     if (!winding_only) c["word"] = w.format(L.names()), c["length"] = w.length();
-    json j = {{"basis", basis_json(A, L)}, {"ends", ends_name(ends)}, {"consistent", T.consistent()}, {"count", 1},
-              {"listed", 1}, {"truncated", false}, {winding_only ? "windings" : "classes", json::array({c})}};
+    const bool listed = a.limit > 0;
+    json j = {{"basis", basis_json(A, L)}, {"ends", ends_name(ends)}, {"sequences", T.count().str()},
+              {"count", 1}, {"listed", listed ? 1 : 0}, {"truncated", !listed},
+              {winding_only ? "windings" : "classes", listed ? json::array({c}) : json::array()}};
     if (!a.svg.empty()) beams::basis_figure(A, L).save(a.svg);
     return print_json(j);
   }
@@ -132,7 +146,10 @@ void run_tree(const BeamArrangement& A, const LoopBasis& L, const ClassArgs& a, 
     beams::basis_figure(A, L).save(a.svg);
     std::cout << "wrote " << a.svg << "\n";
   }
-  if (!T.consistent()) std::cout << "note: no path explains the word (inconsistent at observation " << T.inconsistent_at() << ")\n";
+  if (a.limit == 0) {
+    std::cout << "(listed 0 of 1; raise --limit)\n";
+    return;
+  }
   if (!winding_only) std::cout << "homotopy class: " << w.format(L.names()) << "\n";
   std::cout << "winding numbers: " << tuple_string(v) << "\n";
 }
@@ -146,7 +163,7 @@ void run_classes(const ClassArgs& a, bool winding_only) {
   if (basis.empty()) {
     // Winding numbers need only directed, distinguishable beams reaching every obstacle (6.3).
     basis = "imaginary";
-    if (winding_only && s.imaginary_beams.empty()) {
+    if (winding_only && s.imaginary_beams.empty() && ends.mode != beams::PathEnds::Mode::Open) {
       try {
         (void)LoopBasis::tree(A, s, true);
         basis = "tree";
@@ -164,11 +181,10 @@ void run_classes(const ClassArgs& a, bool winding_only) {
   std::vector<std::string> lines;
   std::size_t count = 0;
   std::string sequences;
-  bool consistent = true;
   std::size_t inconsistent_at = 0, peak = 0;
   if (winding_only) {
     const beams::WindingSet W(G, ends, word, a.max_states);
-    consistent = W.consistent(), inconsistent_at = W.inconsistent_at(), sequences = W.sequences(), peak = W.peak_states();
+    inconsistent_at = W.inconsistent_at(), sequences = W.sequences(), peak = W.peak_states();
     count = W.classes().size();
     for (std::size_t i = 0; i < count && i < a.limit; ++i) {
       const auto& c = W.classes()[i];
@@ -182,7 +198,7 @@ void run_classes(const ClassArgs& a, bool winding_only) {
     }
   } else {
     const beams::HomotopySet H(G, ends, word, a.max_states);
-    consistent = H.consistent(), inconsistent_at = H.inconsistent_at(), sequences = H.sequences(), peak = H.peak_states();
+    inconsistent_at = H.inconsistent_at(), sequences = H.sequences(), peak = H.peak_states();
     count = H.classes().size();
     for (std::size_t i = 0; i < count && i < a.limit; ++i) {
       const auto& c = H.classes()[i];
@@ -195,27 +211,21 @@ void run_classes(const ClassArgs& a, bool winding_only) {
       lines.push_back(where_text(c.start_region, c.end_region) + w.format(L.names()) + "   winding " + tuple_string(v));
     }
   }
+  if (count == 0) no_class(A, word, inconsistent_at, ends);
   const bool truncated = count > a.limit;
   if (a.as_json) {
-    json j = {{"basis", basis_json(A, L)}, {"ends", ends_name(ends)}, {"consistent", consistent}, {"sequences", sequences},
-              {"count", count}, {"listed", classes.size()}, {"truncated", truncated}, {"peak_states", peak},
+    json j = {{"basis", basis_json(A, L)}, {"ends", ends_name(ends)}, {"sequences", sequences}, {"count", count},
+              {"listed", classes.size()}, {"truncated", truncated}, {"peak_states", peak},
               {winding_only ? "windings" : "classes", classes}};
-    if (!consistent) j["inconsistent_at"] = inconsistent_at;
     if (!a.svg.empty()) beams::basis_figure(A, L).save(a.svg);
     return print_json(j);
   }
   print_basis(A, L);
   std::cout << "paths: " << ends_text(ends) << "\n";
-  if (!consistent) {
-    std::cout << "no path explains the word: inconsistent at observation " << inconsistent_at << "\n";
-  } else {
-    std::cout << "region sequences: " << sequences << "; " << (winding_only ? "winding vectors: " : "homotopy classes: ") << count
-              << "\n";
-    for (auto& l : lines) std::cout << "  " << l << "\n";
-    if (truncated) std::cout << "(listed " << a.limit << " of " << count << "; raise --limit)\n";
-    if (count == 0 && ends.mode == beams::PathEnds::Mode::Closed)
-      std::cout << "no region sequence returns to its start region: not a loop (try --open, or --start and --end)\n";
-  }
+  std::cout << "region sequences: " << sequences << "; " << (winding_only ? "winding vectors: " : "homotopy classes: ") << count
+            << "\n";
+  for (auto& l : lines) std::cout << "  " << l << "\n";
+  if (truncated) std::cout << "(listed " << a.limit << " of " << count << "; raise --limit)\n";
   if (!a.svg.empty()) {
     beams::basis_figure(A, L).save(a.svg);
     std::cout << "wrote " << a.svg << "\n";
@@ -224,33 +234,48 @@ void run_classes(const ClassArgs& a, bool winding_only) {
 
 void add_class_options(CLI::App* c, ClassArgs& a) {
   c->add_option("scene", a.file, "scene file (JSON)")->required();
-  c->add_option("--word", a.word, "sensor word: \"a b' c\" or the one-character stream \"ab'c\"")->required();
-  c->add_option("--start", a.start, "the path starts at X,Y (the basepoint of a loop)");
-  c->add_option("--end", a.end, "with --start: the path ends at X,Y (default: back at --start)");
-  c->add_flag("--open", a.open, "start and end anywhere: one group per (start, end) region pair");
-  c->add_option("--limit", a.limit, "list at most this many (default 20)");
-  c->add_option("--max-states", a.max_states, "give up beyond this many (start, region, class) states (default 4194304)");
+  c->add_option("--word", a.word, "sensor word: \"a b' c\" or the one-character stream \"ab'c\" (\"\": no observation)")->required();
+  auto* start = c->add_option("--start", a.start, "the path starts at X,Y (the basepoint of a loop)");
+  c->add_option("--end", a.end, "the path ends at X,Y (default: back at --start)")->needs(start);
+  c->add_flag("--open", a.open, "start and end anywhere: one group per (start, end) region pair")->excludes(start);
+  add_count(c, "--limit", a.limit, 0, 1000000, "list at most this many");
+  // A state takes at least 48 bytes (two state vectors and a hash-set node): 2^27 of them need over 6 GiB.
+  add_count(c, "--max-states", a.max_states, 1, std::int64_t(1) << 27, "give up beyond this many (start, region, class) states");
   c->add_flag("--json", a.as_json, "JSON output");
   c->add_option("--svg", a.svg, "draw the regions, the basis beams and their loops (Fig. 16)");
+}
+
+// --basis tree renames the word along the scene's own beams, which gives one class per
+// word whatever the ends: --open's grouping by region pair needs the general method.
+// --max-states bounds the general method; the tree's renaming keeps no states.
+void check_basis(const ClassArgs& a, const CLI::Option* max_states) {
+  if (a.basis == "tree" && a.open) throw CLI::ValidationError("--open", "needs --basis imaginary (--basis tree gives one class per word)");
+  if (a.basis == "tree" && max_states->count() > 0)
+    throw CLI::ValidationError("--max-states", "only with --basis imaginary (--basis tree keeps no states)");
 }
 
 }  // namespace
 
 void add_beams_homotopy_commands(CLI::App* beams_cmd) {
-  auto* h = beams_cmd->add_subcommand("homotopy", "the possible paths up to homotopy, as reduced words of F_n (paper section 5)");
-  static ClassArgs ha;
-  add_class_options(h, ha);
-  h->add_option("--basis", ha.basis,
-                "imaginary (default: the scene's imaginary_beams, else one vertical beam per obstacle; any sufficient beams) "
-                "or tree (the scene's own disjoint, distinguishable, directed beams)");
-  h->callback([] { run_classes(ha, false); });
-
-  auto* w = beams_cmd->add_subcommand("winding", "the possible winding numbers about each obstacle (paper section 6)");
-  static ClassArgs wa;
-  add_class_options(w, wa);
-  w->add_option("--basis", wa.basis,
-                "tree (counters over directed, distinguishable beams; the default when they reach every obstacle) or imaginary");
-  w->callback([] { run_classes(wa, true); });
+  // homotopy and winding share their options and differ in the group the classes live in.
+  auto add = [beams_cmd](const char* name, const char* help, ClassArgs& a, const char* basis_help, bool winding_only) {
+    auto* c = beams_cmd->add_subcommand(name, help);
+    add_class_options(c, a);
+    c->add_option("--basis", a.basis, basis_help)->check(CLI::IsMember({"imaginary", "tree"}));
+    c->callback([c, &a, winding_only] {
+      check_basis(a, c->get_option("--max-states"));
+      run_classes(a, winding_only);
+    });
+  };
+  static ClassArgs ha, wa;
+  add("homotopy", "the possible paths up to homotopy, as reduced words of F_n (paper section 5)", ha,
+      "imaginary (default: the scene's imaginary_beams, else one vertical beam per obstacle; any sufficient beams) "
+      "or tree (the scene's own disjoint, distinguishable, directed beams)",
+      false);
+  add("winding", "the possible winding numbers about each obstacle (paper section 6)", wa,
+      "tree (counters over directed, distinguishable beams; the default when they reach every obstacle and "
+      "without --open) or imaginary",
+      true);
 }
 
 }  // namespace preimage::cli

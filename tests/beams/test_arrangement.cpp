@@ -8,7 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <map>
 #include <set>
+#include <tuple>
 
 using namespace preimage;
 using beams::BeamArrangement;
@@ -40,13 +43,19 @@ void expect_matches_cgal(const BeamArrangement& A, const std::string& what) {
 TEST(BeamArrangement, PaperFigures) {
   const auto f1 = BeamArrangement::build(beams::fig1_scene());
   EXPECT_EQ(f1.num_regions(), 3u);  // Fig. 3(a): three regions
-  EXPECT_EQ(f1.edges().size(), 11u);
+  // Six pieces, two crossings each; the undirected self-loop f gives (r1, f, r1) twice.
+  EXPECT_EQ(f1.edges().size(), 12u);
+  EXPECT_EQ(f1.graph().num_transitions(), 11u);
   // f joins an obstacle to the wall inside one region: a self-loop (4.1).
   const auto f = *f1.alphabet().find("f");
   EXPECT_NE(f1.find_edge(1, beams::Alphabet::positive(f), 1), nullptr);
   const auto f3 = BeamArrangement::build(beams::fig3b_scene());
   EXPECT_EQ(f3.num_regions(), 8u);  // Fig. 3(b): "There are 8 regions"
   EXPECT_EQ(f3.num_crossings(), 3u);
+  // 5 beams cut 3 times (each cut splits two beams): 11 pieces, 22 edges of the multigraph.
+  EXPECT_EQ(f3.num_pieces(), 11u);
+  EXPECT_EQ(f3.edges().size(), 22u);
+  EXPECT_EQ(f3.graph().num_transitions(), 20u);
   const auto f11 = BeamArrangement::build(beams::fig11_scene());
   EXPECT_EQ(f11.num_regions(), 3u);
   for (auto* A : {&f1, &f3, &f11}) expect_matches_cgal(*A, "figure");
@@ -142,8 +151,76 @@ TEST(BeamArrangement, ExportsJsonAndDot) {
   const auto A = BeamArrangement::build(beams::fig3b_scene());
   const auto j = beams::graph_json(A);
   EXPECT_EQ(j["counts"]["regions"], 8);
-  EXPECT_EQ(j["edges"].size(), A.edges().size());
+  EXPECT_EQ(j["edges"].size(), 22u);
+  EXPECT_EQ(j["counts"]["merged_edges"], 20);
+  EXPECT_EQ(beams::graph_json(A, true)["edges"].size(), 20u);
   const std::string dot = beams::graph_dot(A);
-  EXPECT_NE(dot.find("r0 -> r1 [label=\"a\"]"), std::string::npos) << dot;
+  EXPECT_NE(dot.find("r0 -> r1 [label=\"a (beam 0 piece 0, right to left)\"]"), std::string::npos) << dot;
+  EXPECT_EQ(std::count(dot.begin(), dot.end(), '>'), 22);
+  EXPECT_NE(beams::graph_dot(A, true).find("r0 -> r1 [label=\"a\"]"), std::string::npos);
   EXPECT_NE(beams::arrangement_figure(A).str().find("fill-rule=\"evenodd\""), std::string::npos);
+}
+
+// G is a multigraph (4.1): the printed graph once merged the two pieces of a label that
+// join the same two regions, so an obstacle with two beams labelled c showed 2 edges
+// instead of 4 and its JSON named one beam only (issue 32).
+TEST(BeamArrangement, TwoPiecesWithOneLabelAreFourEdges) {
+  const auto A = BeamArrangement::build(scene::load_scene(std::string(PREIMAGE_FIXTURES) + "/scenes/beams_two_pieces_one_label.json"));
+  ASSERT_EQ(A.num_regions(), 2u);
+  EXPECT_EQ(A.edges().size(), 4u);
+  EXPECT_EQ(A.graph().num_transitions(), 2u);
+  const auto j = beams::graph_json(A);
+  std::set<std::pair<int, std::string>> crossings;  // (beam, r0->r1 or r1->r0)
+  for (const auto& e : j["edges"]) {
+    EXPECT_EQ(e["piece"], 0);
+    crossings.insert({e["beam"].get<int>(), std::to_string(e["from"].get<int>()) + "->" + std::to_string(e["to"].get<int>())});
+    // Beam 0 runs up at x = 5 (its left is r0), beam 1 runs down (its left is r1).
+    EXPECT_EQ(e["positive"], e["to"] == (e["beam"] == 0 ? 0 : 1)) << e.dump();
+  }
+  EXPECT_EQ(crossings.size(), 4u) << j["edges"].dump();
+  const auto m = beams::graph_json(A, true);
+  ASSERT_EQ(m["edges"].size(), 2u);
+  for (const auto& e : m["edges"]) EXPECT_EQ(e["pieces"].size(), 2u);
+}
+
+// Every beam piece gives exactly two edges, each naming its piece; pieces chain along
+// their beam from `from` to `to`; the transition relation is the set of distinct
+// (from, symbol, to). Against counts from first principles on random scenes with
+// shared labels: a beam with c crossings has c + 1 pieces.
+TEST(BeamArrangement, MultigraphHasTwoEdgesPerBeamPiece) {
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    const auto s = preimage::testing::random_beam_scene(16 + 3 * seed, seed % 3, 4 + 2 * seed, seed, 3, 0.4);
+    const auto A = BeamArrangement::build(s);
+    const auto& H = A.half_edges();
+    EXPECT_EQ(A.num_pieces(), A.beams().size() + 2 * A.num_crossings()) << "seed " << seed;
+    EXPECT_EQ(A.edges().size(), 2 * A.num_pieces()) << "seed " << seed;
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> per_piece;
+    std::set<std::tuple<std::uint32_t, beams::Symbol, std::uint32_t>> distinct;
+    for (const auto& e : A.edges()) {
+      const auto p = A.piece(e.half_edge);
+      ++per_piece[{p.beam, p.index}];
+      distinct.insert({e.from, e.symbol, e.to});
+      EXPECT_EQ(A.region_of(e.half_edge), e.to);
+      EXPECT_EQ(A.region_of(BeamArrangement::twin(e.half_edge)), e.from);
+      EXPECT_EQ(H[e.half_edge].beam, p.beam);
+      if (A.beams()[p.beam].directed) {
+        EXPECT_EQ(e.symbol == beams::Alphabet::positive(A.beams()[p.beam].label), e.half_edge % 2 == 0);
+      }
+    }
+    EXPECT_EQ(per_piece.size(), A.num_pieces());
+    for (auto& [piece, n] : per_piece) EXPECT_EQ(n, 2) << "beam " << piece.first << " piece " << piece.second;
+    EXPECT_EQ(A.graph().num_transitions(), distinct.size());
+    for (std::uint32_t b = 0; b < A.beams().size(); ++b) {
+      const auto [first, last] = A.beam_pieces(b);
+      EXPECT_EQ(A.vertices()[H[first].origin], A.beams()[b].from);
+      EXPECT_EQ(A.vertices()[H[last - 2].target], A.beams()[b].to);
+      for (std::uint32_t h = first; h < last; h += 2) {
+        EXPECT_EQ(A.piece(h).index, (h - first) / 2);
+        EXPECT_EQ(A.piece(h + 1).index, (h - first) / 2);
+        if (h + 2 < last) {
+          EXPECT_EQ(H[h].target, H[h + 2].origin);
+        }
+      }
+    }
+  }
 }

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <random>
+#include <set>
 
 using namespace preimage;
 using beams::BeamArrangement;
@@ -390,4 +391,78 @@ TEST(HomotopySet, StateBoundIsAnInputError) {
   const beams::HomotopySet all(G, {}, sim.trace.word);
   ASSERT_GE(all.peak_states(), 2u);
   EXPECT_THROW(beams::HomotopySet(G, {}, sim.trace.word, all.peak_states() - 1), InputError);
+}
+
+// ---------------------------------------------------------------- errata of the paper
+// Proposition 5.2 ("sufficient beams: the same region sequence means homotopic paths")
+// is false as stated when two pieces with one label join the same two regions: loops
+// crossing either piece out and either piece back all read "c c" and visit r0 r1 r0,
+// yet wind 0, +1 or -1 times around the obstacle. Checked here on real paths (their
+// traced words and exact winding numbers), and the class set lists all three per start
+// region, as does the paper's enumeration once it walks every piece (issue 32).
+TEST(Errata, Proposition52FailsForTwoPiecesWithOneLabel) {
+  const auto s = scene::load_scene(fixture("beams_two_pieces_one_label.json"));
+  const auto A = BeamArrangement::build(s);
+  ASSERT_EQ(A.num_regions(), 2u);
+  beams::require_sufficient(A);  // both regions are simply connected
+  const auto word = A.alphabet().parse_word("c c");
+  std::set<std::int64_t> windings;
+  for (const auto& out : A.edges())
+    for (const auto& back : A.edges()) {
+      if (out.from != 0 || out.to != 1 || back.from != 1 || back.to != 0) continue;
+      auto loop = beams::crossing_path(A, out.half_edge);
+      const auto second = beams::crossing_path(A, back.half_edge);
+      loop.insert(loop.end(), second.begin() + 1, second.end());
+      const auto t = beams::trace_path(A, loop);
+      ASSERT_EQ(t.word, word);
+      ASSERT_EQ(t.regions, (std::vector<std::uint32_t>{0, 1, 0}));
+      windings.insert(geometric_winding(A, loop)[0]);
+    }
+  EXPECT_EQ(windings, (std::set<std::int64_t>{-1, 0, 1})) << "one region sequence, three homotopy classes";
+
+  const auto L = LoopBasis::imaginary(A, s);
+  const beams::GraphEmbedding G(A, L);
+  const beams::HomotopySet H(G, {}, word);
+  EXPECT_EQ(H.sequences(), "2");  // r0 r1 r0 and r1 r0 r1
+  ASSERT_EQ(H.classes().size(), 6u);
+  for (std::uint32_t r : {0u, 1u}) {
+    std::set<std::int64_t> w;
+    for (const auto& c : H.classes())
+      if (c.start_region == r) w.insert(L.winding(H.store().word(c.element))[0]);
+    EXPECT_EQ(w, (std::set<std::int64_t>{-1, 0, 1})) << "start region r" << r;
+  }
+  const auto ref = beams::homotopy_by_enumeration(G, {}, word, 1000);
+  ASSERT_TRUE(ref);
+  EXPECT_EQ(ref->size(), 6u);
+}
+
+// Section 6.2's example: the sensor word (7) has letter counts (a, b, c, d) =
+// (5, -3, 4, -2), not the stated (5, -3, 4, 1). On the tree the text describes (a around
+// all four obstacles, b around o1 o2, c around o4, d around o1) the corrected winding
+// numbers are (0, 2, 5, 9), not (3, 2, 5, 9); with d = 1 the correction would give the
+// paper's vector, so the text's tree is the one reconstructed in the fixture.
+TEST(Errata, Equation7CountsDMinusTwo) {
+  const auto s = scene::load_scene(fixture("beams_eq7_tree.json"));
+  const auto A = BeamArrangement::build(s);
+  const auto L = LoopBasis::tree(A, s);
+  ASSERT_EQ(L.names(), (std::vector<std::string>{"a", "b", "c", "d"}));
+  EXPECT_EQ(L.encloses(0), (std::vector<std::uint32_t>{0, 1, 2, 3}));  // "wraps ... around o3, ... o1, o2, and o4"
+  EXPECT_EQ(L.encloses(1), (std::vector<std::uint32_t>{0, 1}));        // "-3 times around o1 and o2"
+  EXPECT_EQ(L.encloses(2), (std::vector<std::uint32_t>{3}));
+  EXPECT_EQ(L.encloses(3), (std::vector<std::uint32_t>{0}));
+  beams::BasisWordFilter F(L);
+  for (auto y : A.alphabet().parse_word("aabcbd'cbdbd'ab'b'a'cb'acaab'b'b'b'd'")) F.step(y);
+  EXPECT_EQ(F.exponents(), (std::vector<std::int64_t>{5, -3, 4, -2}));
+  EXPECT_EQ(F.winding(), (std::vector<std::int64_t>{0, 2, 5, 9}));
+  const std::int64_t paper_counts[] = {5, -3, 4, 1};
+  EXPECT_EQ(L.winding(paper_counts), (std::vector<std::int64_t>{3, 2, 5, 9}));
+  // The tree basis loops wind exactly as the correction says (Fig. 16).
+  const auto loops = L.loops();
+  for (std::uint32_t g = 0; g < L.rank(); ++g) {
+    const auto v = geometric_winding(A, loops[g]);
+    for (std::uint32_t o = 0; o < A.num_obstacles(); ++o) {
+      const bool inside = std::count(L.encloses(g).begin(), L.encloses(g).end(), o) > 0;
+      EXPECT_EQ(v[o], inside ? L.sign(g) : 0) << "generator " << L.names()[g] << ", obstacle o" << o + 1;
+    }
+  }
 }

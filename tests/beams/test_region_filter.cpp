@@ -10,7 +10,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <numeric>
 #include <random>
+#include <set>
 #include <sstream>
 
 using namespace preimage;
@@ -189,4 +192,58 @@ TEST(Regressions, PathCollinearWithABeamLineButApartIsNotATouch) {
   EXPECT_EQ(beams::trace_path(A, path).word, w);
   const geometry::ExactPoint apart[] = {geometry::to_exact(geometry::Point(6, 5)), geometry::to_exact(geometry::Point(6, 3))};
   EXPECT_TRUE(beams::trace_path(A, apart).word.empty());
+}
+
+// The initial I-state of several bodies against brute force: the multisets are the
+// distinct sorted tuples of the full product, enumerated directly, and the counts
+// (used to refuse an I-state too large to build) are exact, saturating past 2^64.
+TEST(MultiBody, InitialAssignmentsAgainstTheFullProduct) {
+  for (std::size_t m = 1; m <= 4; ++m)
+    for (std::size_t n = 1; n <= 5; ++n) {
+      std::vector<std::uint32_t> R0;
+      for (std::uint32_t r = 0; r < m; ++r) R0.push_back(2 * r + 1);
+      const auto tuples = beams::initial_assignments(R0, n, true, false);
+      EXPECT_EQ(tuples, filter::ProductFilter::all_assignments(R0, n));
+      std::set<filter::ProductFilter::Assignment> sorted;
+      for (auto t : tuples) std::sort(t.begin(), t.end()), sorted.insert(t);
+      const auto multisets = beams::initial_assignments(R0, n, false, false);
+      EXPECT_EQ(std::set(multisets.begin(), multisets.end()), sorted) << m << " regions, " << n << " bodies";
+      EXPECT_EQ(multisets.size(), sorted.size());
+      EXPECT_EQ(beams::count_initial_assignments(m, n, true, false), tuples.size());
+      EXPECT_EQ(beams::count_initial_assignments(m, n, false, false), multisets.size());
+      const auto together = beams::initial_assignments(R0, n, false, true);
+      EXPECT_EQ(together.size(), m);
+      EXPECT_EQ(beams::count_initial_assignments(m, n, true, true), m);
+      for (const auto& t : together) EXPECT_EQ(std::set(t.begin(), t.end()).size(), 1u);
+    }
+  EXPECT_EQ(beams::count_initial_assignments(3, 1000000, false, false), 500001500001u);  // C(1000002, 2)
+  EXPECT_EQ(beams::count_initial_assignments(3, 1000000, true, false), UINT64_MAX);     // 3^1000000
+  EXPECT_EQ(beams::count_initial_assignments(2, 64, true, false), UINT64_MAX);          // 2^64 does not fit
+  EXPECT_EQ(beams::count_initial_assignments(2, 63, true, false), std::uint64_t(1) << 63);
+  EXPECT_EQ(beams::count_initial_assignments(1, 1000000000, true, false), 1u);
+  EXPECT_EQ(beams::count_initial_assignments(100, 100, false, false), UINT64_MAX);  // C(199, 99) ~ 4.5e58
+}
+
+// Fig. 12's caption says "2^3 = 9" region assignments of two bodies in three regions: it
+// is 3^2 = 9 (m^n for m regions and n bodies, as 4.2's text says), against
+// C(3+2-1, 2) = 6 multisets.
+TEST(MultiBody, Fig12CaptionIsThreeSquaredNotTwoCubed) {
+  const auto A = BeamArrangement::build(beams::fig11_scene());
+  ASSERT_EQ(A.num_regions(), 3u);
+  const std::vector<std::uint32_t> all{0, 1, 2};
+  EXPECT_EQ(filter::ProductFilter(A.graph(), 2, true, beams::initial_assignments(all, 2, true, false)).size(), 9u);
+  EXPECT_EQ(filter::ProductFilter(A.graph(), 2, false, beams::initial_assignments(all, 2, false, false)).size(), 6u);
+  // Three bodies in two regions would be 2^3 = 8, not 9.
+  EXPECT_EQ(beams::count_initial_assignments(2, 3, true, false), 8u);
+}
+
+TEST(Simulate, ReportsProgressOncePerSegment) {
+  const auto A = BeamArrangement::build(beams::fig3b_scene());
+  std::vector<std::size_t> seen;
+  const auto sim = beams::simulate(A, 4, 30, [&](std::size_t k) { seen.push_back(k); });
+  ASSERT_EQ(sim.path.size(), 31u);
+  std::vector<std::size_t> want(30);
+  std::iota(want.begin(), want.end(), std::size_t(1));
+  EXPECT_EQ(seen, want);
+  EXPECT_EQ(beams::simulate(A, 4, 30).trace.word, sim.trace.word);  // the callback changes nothing
 }

@@ -47,7 +47,9 @@ struct HalfEdge {
 };
 
 /// A crossing of G: from region `from` into region `to` across beam piece `half_edge`
-/// (a half-edge whose face is `to`), observing `symbol`.
+/// (a half-edge whose face is `to`), observing `symbol`. G is a multigraph (4.1): every
+/// beam piece gives two crossings, one per direction, even where another piece with
+/// the same label joins the same two regions.
 struct Crossing {
   std::uint32_t from, to;
   Symbol symbol;
@@ -100,11 +102,22 @@ class BeamArrangement {
   const std::vector<Region>& regions() const { return regions_; }
   std::size_t num_crossings() const { return crossings_; }  // beam-beam crossing points
 
-  /// G as a transition system over regions, and its edges with witnesses (sorted by
-  /// (from, symbol, to); one witness per G edge).
+  /// G's transition relation over regions: one transition per distinct (from, symbol,
+  /// to), which is all a region filter or a region sequence can tell apart.
   const filter::TransitionSystem& graph() const { return graph_; }
+  /// The multigraph G itself: one edge per beam piece and direction (2 per piece),
+  /// sorted by (from, symbol, to, half_edge).
   const std::vector<Crossing>& edges() const { return edges_; }
+  /// The first edge from -> to observing y (the lowest half-edge), or nullptr.
   const Crossing* find_edge(std::uint32_t from, Symbol y, std::uint32_t to) const;
+  /// Number of beam pieces: maximal parts of beams between crossings and ends.
+  std::size_t num_pieces() const { return beam_he_.empty() ? 0 : (beam_he_.back() - beam_he_.front()) / 2; }
+  /// Which piece half-edge h (of a beam) is: its beam and its index along the beam,
+  /// counted from 0 at the beam's `from` end.
+  struct Piece {
+    std::uint32_t beam, index;
+  };
+  Piece piece(std::uint32_t h) const;
 
   /// Region strictly containing p, or nullopt if p is on a beam, on the boundary or
   /// outside free space. O(edges).

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
-// G and the regions out of the library: JSON, Graphviz DOT (parallel edges merged
-// into one arrow with a list of labels, as in the paper's Fig. 7(b)), and SVG.
+// G and the regions out of the library: JSON, Graphviz DOT and SVG. G is listed as the
+// multigraph of the paper (4.1), one edge per beam piece and direction, each naming its
+// piece; the merged view lists one edge per (from, observation, to) with the pieces
+// behind it (JSON), or one arrow per region pair with a list of labels (DOT, as in the
+// paper's Fig. 7(b)).
 #pragma once
 #include <preimage/beams/arrangement.hpp>
 #include <preimage/beams/homotopy.hpp>
@@ -13,8 +16,13 @@
 
 namespace preimage::beams {
 
-nlohmann::json graph_json(const BeamArrangement& arrangement);
-std::string graph_dot(const BeamArrangement& arrangement);
+/// "beam 3 piece 1, right to left": the beam piece of half-edge h (see
+/// BeamArrangement::piece) and the side it is crossed from, relative to the beam's
+/// from -> to (right to left is the positive crossing).
+std::string piece_name(const BeamArrangement& arrangement, std::uint32_t half_edge);
+
+nlohmann::json graph_json(const BeamArrangement& arrangement, bool merged = false);
+std::string graph_dot(const BeamArrangement& arrangement, bool merged = false);
 
 /// Region boundary cycles as double polylines (for drawing).
 std::vector<std::vector<geometry::Point>> region_rings(const BeamArrangement& arrangement, std::uint32_t region);

@@ -8,6 +8,7 @@
 #include <preimage/beams/arrangement.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -29,8 +30,11 @@ struct Simulation {
   std::vector<ExactPoint> path;
   Trace trace;
 };
-/// A random body path of `steps` segments in free space (seeded, reproducible).
-Simulation simulate(const BeamArrangement& arrangement, std::uint64_t seed, std::size_t steps);
+/// A random body path of `steps` segments in free space (seeded, reproducible). It stops
+/// early (fewer segments) if 10,000 random segments in a row leave no admissible one.
+/// `progress`, if given, is called with the number of segments made after each one.
+Simulation simulate(const BeamArrangement& arrangement, std::uint64_t seed, std::size_t steps,
+                    const std::function<void(std::size_t)>& progress = {});
 
 /// A path inside region r between two points strictly inside it (exact): the straight
 /// segment if it stays inside, otherwise through the region's vertical slab cells.

@@ -9,6 +9,7 @@
 #include <preimage/filter/subset_automaton.hpp>
 #include <preimage/filter/subset_filter.hpp>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,6 +20,16 @@ namespace preimage::beams {
 /// all regions if both are empty. InputError names the bad id or point.
 std::vector<std::uint32_t> initial_regions(const BeamArrangement& arrangement, const std::vector<std::uint32_t>& ids,
                                            const std::vector<ExactPoint>& points);
+
+/// The initial I-state of several bodies (4.2) in the regions `R0` (sorted, distinct):
+/// every tuple (distinguishable bodies, |R0|^n of them), every multiset as a sorted
+/// tuple (indistinguishable, C(|R0|+n-1, n), enumerated directly rather than by sorting
+/// |R0|^n tuples), or with `together` all bodies in one region of R0 (|R0|).
+std::vector<filter::ProductFilter::Assignment> initial_assignments(const std::vector<std::uint32_t>& R0, std::size_t bodies,
+                                                                   bool distinguishable, bool together);
+/// How many assignments initial_assignments returns for |R0| = `regions`, saturating at
+/// UINT64_MAX (so a caller can refuse an I-state too large to build before building it).
+std::uint64_t count_initial_assignments(std::size_t regions, std::size_t bodies, bool distinguishable, bool together);
 
 enum class FilterMode { Plain, Cached };
 
