@@ -181,16 +181,3 @@ cli_test(beams_erratum_prop52_around_other_way 0 "^  r0: o1'   winding \\(-1\\)$
 cli_test(beams_erratum_prop52_trivial 0 "^  r0: 1   winding \\(0\\)$" - beams homotopy ${TWO_PIECES} --word "c c")
 
 # ---------------------------------------------------------------- landmarks
-set(LANDMARKS ${EXAMPLES}/landmarks)
-cli_test(landmarks_order_type 0 "^convex hull, counter-clockwise: 1 2 5 8 6 4$" - landmarks order-type ${LANDMARKS}/eight.json)
-cli_test(landmarks_order_type_json 0 "\"3,7\": \\[" - landmarks order-type ${LANDMARKS}/eight.json --json)
-cli_test(landmarks_count_six 0 "^16 distinct order types among 5000 random sets of 6 landmarks \\(up to relabelling and reflection" -
-         landmarks count-order-types 6 --samples 5000 --mirror)
-cli_test(landmarks_collinear fail "\\$\\.landmarks\\[1\\] \\('b'\\), \\$\\.landmarks\\[3\\] \\('d'\\) and \\$\\.landmarks\\[4\\] \\('e'\\) are collinear" -
-         landmarks order-type ${FIX}/scenes/landmarks_collinear.json)
-cli_test(landmarks_hull_learn 0 "agrees with the coordinates: yes" - landmarks hull ${LANDMARKS}/eight.json --learn --start 4.5,2.3)
-cli_test(landmarks_order_type_learn 0 "Strategy 1 for all 28 pairs\\). agrees with the coordinates: yes" - landmarks order-type ${LANDMARKS}/eight.json --learn)
-cli_test(landmarks_start_on_line fail "robot start \\(2, 2\\) lies on the line through landmarks" - landmarks hull ${LANDMARKS}/eight.json --learn --start 2,2)
-cli_test(landmarks_count_bad_n fail "N: expected 3 to 1000 landmarks, got 2" - landmarks count-order-types 2)
-cli_test(landmarks_patrol 0 "^patrol route around 3 7, counter-clockwise: 1 2 8 4$" - landmarks patrol ${LANDMARKS}/eight.json --watch 3,7)
-cli_test(landmarks_patrol_learn 0 "Strategy 6\\). agrees with the coordinates: yes" - landmarks patrol ${LANDMARKS}/eight.json --watch 3,7 --learn)

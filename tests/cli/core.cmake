@@ -7,8 +7,6 @@ cli_test(validate_example 0 "ok: .*gallery.json: 20 vertices .* 3 obstacles" - v
 cli_test(validate_names_equal_x 0 "not in general position: .* have equal x-coordinates" - validate ${FIX}/scenes/stacked_vertical_vertices.json)
 cli_test(visibility_huge_coordinates fail "^preimage: \\$\\.environment\\.boundary\\[0\\]\\[0\\]: coordinate .* outside the supported range" -
          visibility ${FIX}/scenes/huge_coordinates.json --from 5,5)
-cli_test(landmarks_subnormal_coordinates fail "\\$\\.landmarks\\[1\\]\\.at\\[0\\]: coordinate is subnormal" -
-         landmarks swap-graph ${FIX}/scenes/subnormal_landmarks.json)
 cli_test(validate_json 0 "\"obstacles\": 3" - validate ${EXAMPLES}/gallery.json --json)
 cli_test(validate_self_intersecting fail "^preimage: \\$\\.environment\\.boundary: edges 1 and 3 intersect near \\(1, 1\\)$" -
          validate ${FIX}/scenes/self_intersecting.json)
