@@ -170,53 +170,81 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> polar_pairs(std::size_t n, 
   return out;
 }
 
+std::vector<std::pair<std::uint32_t, std::uint32_t>> meeting_polar_lines(std::size_t n, const Chirotope& chi, const Reading& g) {
+  const auto polar = polar_pairs(n, chi, g);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> out;
+  for (auto [i, j] : polar) {
+    const bool met = std::any_of(polar.begin(), polar.end(), [&](const auto& o) {
+      const auto [k, l] = o;
+      if (std::minmax(i, j) == std::minmax(k, l)) return false;
+      if (k == i || k == j || l == i || l == j) return true;  // both swap lines start at the shared landmark
+      // Lines ij and kl cross outside both segments iff k, l lie on one side of line ij
+      // and i, j on one side of line kl (Lemmas 11-12); parallel lines pass too, which
+      // only keeps more lines.
+      return chi(i, j, k) == chi(i, j, l) && chi(k, l, i) == chi(k, l, j);
+    });
+    if (met) out.emplace_back(i, j);
+  }
+  return out;
+}
+
 std::optional<std::string> unrealizable_reason(std::size_t n, const Chirotope& chi, std::span<const std::uint32_t> hull,
-                                               const Reading& g) {
-  // Lemma 3: inside the hull its landmarks keep their counter-clockwise order.
+                                               const Reading& g, const std::vector<std::string>& labels) {
+  // Lemma 3: inside the hull its landmarks keep their counter-clockwise order, and a cell
+  // meeting the hull meets its interior.
   Reading sub;
   const auto on_hull = hull_flags(n, hull);
   for (auto k : g)
     if (on_hull[k]) sub.push_back(k);
   if (normalized(sub) != normalized(Reading(hull.begin(), hull.end())))
     return std::string("the hull landmarks are out of their counter-clockwise order (Lemma 3)");
-  if (n <= 3) return std::nullopt;
-  const auto polar = polar_pairs(n, chi, g);
-  if (polar.size() < 2) return "it has " + std::to_string(polar.size()) + " polar pair(s); a realizable one has two or more (Lemma 10)";
-  // Lemma 10: each polar line meets another on swap-line sections of both: they share a
-  // landmark (both swap lines start there), or by Lemmas 11-12 (lines not parallel,
-  // section 8.1) each pair of landmarks lies on one side of the other's line.
-  for (auto [i, j] : polar) {
-    const bool met = std::any_of(polar.begin(), polar.end(), [&](const auto& o) {
-      const auto [k, l] = o;
-      if (std::minmax(i, j) == std::minmax(k, l)) return false;
-      if (k == i || k == j || l == i || l == j) return true;
-      return chi(i, j, k) == chi(i, j, l) && chi(k, l, i) == chi(k, l, j);
-    });
-    if (!met)
-      return "its polar line through " + std::to_string(i) + " and " + std::to_string(j) +
-             " meets no other polar line on their swap lines (Lemma 10, by Lemmas 11-12)";
+  if (n <= 3) return std::nullopt;  // then the hull order is the whole reading: the inside cell reads it
+  // Lemma 10 as it holds: the boundary of any cell has at least two swap lines, all on
+  // polar lines (Lemma 9), and where it turns from one line to the next the two meet on
+  // their swap lines (at a crossing, or at the landmark both start from). So some two
+  // polar lines meet. (The paper asks it of every polar line; that is false: a polar
+  // line need not bound the cell. docs/landmarks.md gives the counterexample.)
+  if (meeting_polar_lines(n, chi, g).size() < 2) {
+    const auto polar = polar_pairs(n, chi, g);
+    std::string list;
+    for (std::size_t q = 0; q < polar.size() && q < 8; ++q)
+      list += (q ? ", " : "") + name(polar[q].first, labels) + "-" + name(polar[q].second, labels);
+    if (polar.size() > 8) list += ", ...";
+    if (polar.size() < 2)
+      return "it has " + std::string(polar.empty() ? "no polar line" : "one polar line (" + list + ")") +
+             "; a cell's boundary lies on at least two (Lemmas 9-10)";
+    return "no two of its " + std::to_string(polar.size()) + " polar lines (" + list +
+           ") meet on their swap lines, as two lines of a cell's boundary do (Lemmas 9-12)";
   }
   return std::nullopt;
 }
 
-NavigationResult navigate(RobotInterface& robot, const Chirotope& chi, std::span<const std::uint32_t> hull, const Reading& goal) {
+NavigationResult navigate(RobotInterface& robot, const Chirotope& chi, std::span<const std::uint32_t> hull, const Reading& goal,
+                          const std::vector<std::string>& labels) {
   const std::size_t n = robot.num_landmarks();
   const Reading g = normalized(goal);
   NavigationResult res;
   res.polar = polar_pairs(n, chi, g);
-  if (auto why = unrealizable_reason(n, chi, hull, g)) {
+  if (auto why = unrealizable_reason(n, chi, hull, g, labels)) {
     res.reason = *why;
     return res;
   }
   auto reading_g = [&] { return robot.lcd().size() == n && normalized(robot.lcd()) == g; };
-  if (reading_g()) return res.reached = true, res;
-  // Cells touching the hull boundary: one tour of its edges.
-  robot.track(hull.back());
+  // The search concludes only on what the robot reads: every motion below runs along the
+  // hull boundary or inside the hull, so a reading on the way is that of a cell meeting
+  // the hull (Theorem 14 makes it the only cell reading g). A robot not at a landmark may
+  // be outside the hull, where g could be read in another cell: it first moves in.
+  if (robot.lcd().size() == n) robot.track(hull.back());
+  // Cells meeting the hull boundary: one tour of its edges.
+  if (robot.track(hull.back(), StopRule::reads({g})).halted) return res.reached = true, res;
   for (auto h : hull)
     if (robot.track(h, StopRule::reads({g})).halted) return res.reached = true, res;
-  // Cells inside: along the swap lines of the polar pairs that enter the hull.
+  // A cell inside the hull that misses its boundary is bounded by pieces of swap lines of
+  // interior landmarks inside the hull, on polar lines that meet another (Lemma 9, as in
+  // unrealizable_reason). The robot reads both sides of each such piece when it tracks
+  // the whole part of that swap line inside the hull.
   const auto on_hull = hull_flags(n, hull);
-  for (auto [p, q] : res.polar)
+  for (auto [p, q] : meeting_polar_lines(n, chi, g))
     for (auto [i, j] : {std::pair{p, q}, std::pair{q, p}}) {
       if (on_hull[i]) continue;
       ++res.swap_lines_searched;
@@ -231,8 +259,8 @@ NavigationResult navigate(RobotInterface& robot, const Chirotope& chi, std::span
       if (!reading_g()) throw std::logic_error("navigate: stepped off a swap line into the wrong cell");
       return res.reached = true, res;
     }
-  res.reason = "no cell meeting the hull reads it (searched the hull boundary and " + std::to_string(res.swap_lines_searched) +
-               " swap lines of its polar pairs)";
+  res.reason = "no cell meeting the hull reads it (the robot searched the hull boundary and the " +
+               std::to_string(res.swap_lines_searched) + " swap lines inside the hull of its polar lines that meet another)";
   return res;
 }
 
@@ -241,17 +269,22 @@ namespace {
 using EdgeKey = std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t>;
 
 // The edges of a learned swap graph: one per pair of distinct cells, labelled by the pair
-// of landmarks whose swap line separates them.
+// of landmarks whose swap line separates them. With three landmarks a cell outside the
+// hull borders the inside cell along both swap lines of its landmark (either
+// transposition gives the same cyclic order): one edge, labelled by the least pair, as
+// in SwapCellDecomposition::swap_graph.
 struct EdgeSet {
-  std::set<EdgeKey> edges;
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::pair<std::uint32_t, std::uint32_t>> edges;
   void add(std::uint32_t a, std::uint32_t b, std::uint32_t i, std::uint32_t j) {
     if (a == b) return;
     if (a > b) std::swap(a, b);
-    edges.emplace(a, b, std::min(i, j), std::max(i, j));
+    const auto pair = std::minmax(i, j);
+    auto [it, fresh] = edges.emplace(std::pair{a, b}, pair);
+    if (!fresh) it->second = std::min(it->second, std::pair{pair.first, pair.second});
   }
   std::vector<LearnedSwapGraph::Edge> list() const {
     std::vector<LearnedSwapGraph::Edge> out;
-    for (auto [a, b, i, j] : edges) out.push_back({a, b, i, j});
+    for (const auto& [cells, pair] : edges) out.push_back({cells.first, cells.second, pair.first, pair.second});
     return out;
   }
 };
@@ -309,7 +342,7 @@ LearnedSwapGraph learn_inside_swap_graph(RobotInterface& robot, const Chirotope&
   return g;
 }
 
-LearnedSwapGraph learn_swap_graph(RobotInterface& robot, const LearnedSwapGraph& inside) {
+LearnedSwapGraph learn_swap_graph(RobotInterface& robot, const LearnedSwapGraph& inside, const std::function<void(double)>& progress) {
   const std::uint32_t n = static_cast<std::uint32_t>(robot.num_landmarks());
   struct Record {
     Reading p;
@@ -321,6 +354,7 @@ LearnedSwapGraph learn_swap_graph(RobotInterface& robot, const LearnedSwapGraph&
   for (std::uint32_t i = 0; i < n; ++i)
     for (std::uint32_t j = 0; j < n; ++j) {
       if (i == j) continue;
+      if (progress) progress(double(i * n + j) / (double(n) * n));
       robot.track(i);
       const MotionTrace tr = robot.repel(i, j, StopRule::arrive());
       // Arrangement vertices the robot passes: p_i, then one per sensor event, named by

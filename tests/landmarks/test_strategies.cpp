@@ -1,4 +1,4 @@
-// The landmark robot's strategies 2, 3 and 6-9 against the ground truth from
+// The landmark robot's strategies 2, 3, 6 and 8 against the ground truth from
 // coordinates (OrderType, SwapCellDecomposition, brute force). The strategies see only
 // RobotInterface; the simulator checks its own event bookkeeping by angular sorts.
 #include <preimage/error.hpp>
@@ -186,43 +186,8 @@ TEST(LandmarkStrategies, PatrolRouteIsTheSmallestEnclosingSet) {
   EXPECT_THROW(landmarks::patrol_route(8, truth(T), T.hull(), std::vector<std::uint32_t>{T.hull()[0]}), InputError);
 }
 
-TEST(LandmarkStrategies, Strategy7ReachesEveryCellMeetingTheHullAndRejectsTheRest) {
-  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
-    const std::size_t n = 5 + seed % 3;
-    const auto P = landmarks::random_landmarks(n, seed, 1000);
-    const auto D = landmarks::SwapCellDecomposition::of(P);
-    std::set<Reading> inside, outside;
-    for (const auto& c : D.cells()) (c.meets_hull ? inside : outside).insert(c.permutation);
-    for (const auto& p : inside) outside.erase(p);
-    std::size_t reached = 0;
-    for (const auto& g : inside) {
-      Simulator robot = checked_robot(P, seed * 100 + reached);
-      const auto tour = landmarks::learn_by_hull_tour(robot);
-      const auto r = landmarks::navigate(robot, tour.order_type.chirotope(), tour.hull, g);
-      ASSERT_TRUE(r.reached) << "seed " << seed << ": " << r.reason;
-      EXPECT_EQ(landmarks::normalized(robot.lcd()), g);
-      ++reached;
-    }
-    // Cells outside the hull only, and random permutations: reported unrealizable.
-    std::vector<Reading> bad(outside.begin(), outside.end());
-    std::mt19937_64 rng(seed);
-    for (int q = 0; q < 10; ++q) {
-      Reading g(n);
-      std::iota(g.begin(), g.end(), 0U);
-      std::shuffle(g.begin(), g.end(), rng);
-      if (!inside.count(landmarks::normalized(g))) bad.push_back(g);
-    }
-    for (const auto& g : bad) {
-      Simulator robot(P, generic_start(P, seed));
-      const auto tour = landmarks::learn_by_hull_tour(robot);
-      const auto r = landmarks::navigate(robot, tour.order_type.chirotope(), tour.hull, g);
-      EXPECT_FALSE(r.reached) << "seed " << seed;
-      EXPECT_FALSE(r.reason.empty());
-    }
-  }
-}
-
-TEST(LandmarkStrategies, Strategies8And9LearnTheSwapGraph) {
+// Strategies 7 and 9: test_navigation.cpp.
+TEST(LandmarkStrategies, Strategy8LearnsTheSwapGraphInsideTheHull) {
   for (std::uint64_t seed = 1; seed <= 14; ++seed) {
     const std::size_t n = 3 + seed % 7;
     const auto P = landmarks::random_landmarks(n, seed, 1000);
@@ -241,29 +206,5 @@ TEST(LandmarkStrategies, Strategies8And9LearnTheSwapGraph) {
       if (e.meets_hull) true_edges.insert(std::minmax(D.cells()[e.a].permutation, D.cells()[e.b].permutation));
     for (const auto& e : inside.edges) learned_edges.insert(std::minmax(inside.cells[e.a].permutation, inside.cells[e.b].permutation));
     EXPECT_EQ(learned_edges, true_edges) << "seed " << seed;
-
-    // Strategy 9: each learned cell is one true cell (same permutation, the vertices it
-    // was seen to touch among that cell's), a bijection, and the same edges.
-    const auto all = landmarks::learn_swap_graph(robot, inside);
-    ASSERT_EQ(all.cells.size(), D.cells().size()) << "seed " << seed;
-    std::vector<std::uint32_t> to_true(all.cells.size());
-    std::set<std::uint32_t> used;
-    for (std::uint32_t c = 0; c < all.cells.size(); ++c) {
-      std::vector<std::uint32_t> match;
-      for (std::uint32_t t = 0; t < D.cells().size(); ++t) {
-        if (D.cells()[t].permutation != all.cells[c].permutation) continue;
-        const auto keys = D.vertex_keys(t);
-        if (std::includes(keys.begin(), keys.end(), all.cells[c].vertex_keys.begin(), all.cells[c].vertex_keys.end()))
-          match.push_back(t);
-      }
-      ASSERT_EQ(match.size(), 1u) << "seed " << seed << " cell " << c;
-      to_true[c] = match[0];
-      used.insert(match[0]);
-    }
-    EXPECT_EQ(used.size(), D.cells().size());
-    std::set<std::pair<std::uint32_t, std::uint32_t>> te, le;
-    for (const auto& e : D.swap_graph()) te.insert(std::minmax(e.a, e.b));
-    for (const auto& e : all.edges) le.insert(std::minmax(to_true[e.a], to_true[e.b]));
-    EXPECT_EQ(le, te) << "seed " << seed;
   }
 }

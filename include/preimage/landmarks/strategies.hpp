@@ -9,6 +9,7 @@
 #include <preimage/landmarks/robot.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -66,22 +67,32 @@ PatrolPlan patrol_route(std::size_t n, const Chirotope& chi, std::span<const std
 /// Polar pairs of g (6.2): consecutive (i, j) in g such that the labels right after them
 /// start with Lambda(i, j) or Lambda(j, i).
 std::vector<std::pair<std::uint32_t, std::uint32_t>> polar_pairs(std::size_t n, const Chirotope& chi, const Reading& g);
-/// Lemmas 3 and 10 (with 11-12 and the general position of 8.1): why g cannot be read in
-/// a cell that meets the hull, or nullopt if these necessary conditions hold.
+/// The polar lines of g that meet another polar line on the swap lines of both, as far as
+/// the order type tells (they share a landmark, or by Lemmas 11-12 each pair lies on one
+/// side of the other's line; parallel lines pass too, so no line that meets another is
+/// left out). The swap lines on a cell's boundary are among them (Lemma 9; see docs).
+std::vector<std::pair<std::uint32_t, std::uint32_t>> meeting_polar_lines(std::size_t n, const Chirotope& chi, const Reading& g);
+/// Why g cannot be read in a cell meeting the hull, from the order type alone, or nullopt:
+/// Lemma 3 (hull order), and Lemma 10 in the form that holds: some two polar lines meet
+/// on their swap lines (the paper's "every polar line meets another" is false, see
+/// docs/landmarks.md). Necessary conditions only; landmarks are named by `labels`.
 std::optional<std::string> unrealizable_reason(std::size_t n, const Chirotope& chi, std::span<const std::uint32_t> hull,
-                                               const Reading& g);
+                                               const Reading& g, const std::vector<std::string>& labels = {});
 
 /// Strategy 7: navigate until the detector reads g in a cell meeting the hull, or report
-/// that g is not realizable there. The robot visits, from the hull boundary, the part
-/// inside the hull of every swap line of g's polar pairs (Lemma 9: a cell's boundary
-/// lies on them), stepping into g's cell when one side reads g.
+/// that g is not realizable there. After the fast rejections of unrealizable_reason the
+/// robot reads every cell meeting the hull that g could be: along the hull boundary, and
+/// along the part inside the hull of every swap line of an interior landmark on a polar
+/// line that meets another (Lemma 9), stepping into g's cell when one side reads g. "Not
+/// realizable" is thus concluded from readings, not from a lemma about the geometry.
 struct NavigationResult {
   bool reached = false;
   std::string reason;  // why not, when not reached
   std::vector<std::pair<std::uint32_t, std::uint32_t>> polar;
   std::size_t swap_lines_searched = 0;
 };
-NavigationResult navigate(RobotInterface& robot, const Chirotope& chi, std::span<const std::uint32_t> hull, const Reading& goal);
+NavigationResult navigate(RobotInterface& robot, const Chirotope& chi, std::span<const std::uint32_t> hull, const Reading& goal,
+                          const std::vector<std::string>& labels = {});
 
 /// A swap graph as the robot learns it: cells with their permutations, and for
 /// Strategy 9 the arrangement vertices each cell was seen to touch (keys as in
@@ -104,6 +115,8 @@ LearnedSwapGraph learn_inside_swap_graph(RobotInterface& robot, const Chirotope&
 /// Strategy 9: the whole swap graph with repel: every swap line from its landmark outwards.
 /// Cells seen on different lines merge when they read the same and share an arrangement
 /// vertex (Lemma 6), or read a permutation of a cell meeting the hull (Theorem 14).
-LearnedSwapGraph learn_swap_graph(RobotInterface& robot, const LearnedSwapGraph& inside);
+/// n(n - 1) repels with O(n^2) events each: Theta(n^4) time and memory; `progress` is
+/// told the fraction done now and then.
+LearnedSwapGraph learn_swap_graph(RobotInterface& robot, const LearnedSwapGraph& inside, const std::function<void(double)>& progress = {});
 
 }  // namespace preimage::landmarks
