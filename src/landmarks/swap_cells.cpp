@@ -3,6 +3,7 @@
 #include <preimage/union_find.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <stdexcept>
 #include <unordered_map>
@@ -22,7 +23,8 @@ struct Stop {
 
 }  // namespace
 
-SwapCellDecomposition SwapCellDecomposition::of(std::span<const geometry::Point> landmarks) {
+SwapCellDecomposition SwapCellDecomposition::of(std::span<const geometry::Point> landmarks,
+                                                const std::function<void(double)>& progress) {
   require_general_position(landmarks);
   SwapCellDecomposition D;
   const std::uint32_t n = static_cast<std::uint32_t>(landmarks.size());
@@ -52,7 +54,11 @@ SwapCellDecomposition SwapCellDecomposition::of(std::span<const geometry::Point>
     const bool k_nearer = (c == CGAL::SMALLER) == (ok > 0);
     return k_nearer ? ray_id(k, l) : ray_id(l, k);
   };
-  for (std::uint32_t i = 0; i < n; ++i)
+  for (std::uint32_t i = 0; i < n; ++i) {
+    if (progress) {  // the work left after row i shrinks as (n - i)^3
+      const double left = double(n - i) / n;
+      progress(0.6 * (1 - left * left * left));
+    }
     for (std::uint32_t j = i + 1; j < n; ++j)
       for (std::uint32_t k = i + 1; k < n; ++k)
         for (std::uint32_t l = k + 1; l < n; ++l) {
@@ -75,6 +81,7 @@ SwapCellDecomposition SwapCellDecomposition::of(std::span<const geometry::Point>
           on_ray[r].push_back({t, v});
           on_ray[s].push_back({u, v});
         }
+  }
 
   // 2. Concurrent crossings (three or more rays through one point) are one vertex: equal
   //    parameters on a ray are equal points; union them.
@@ -85,11 +92,36 @@ SwapCellDecomposition SwapCellDecomposition::of(std::span<const geometry::Point>
       if (stops[q].t == stops[q - 1].t) same.join(stops[q].vertex, stops[q - 1].vertex);
   }
 
-  // 3. A box strictly containing every vertex (interval bounding boxes are enclosures).
-  CGAL::Bbox_2 box = D.vertices_.front().p.bbox();
-  for (const auto& v : D.vertices_) box += v.p.bbox();
-  const double margin = 1.0 + 0.25 * std::max(box.xmax() - box.xmin(), box.ymax() - box.ymin());
-  const double x0 = box.xmin() - margin, x1 = box.xmax() + margin, y0 = box.ymin() - margin, y1 = box.ymax() + margin;
+  // 3. A box strictly containing every vertex. Interval bounding boxes are enclosures,
+  //    but not always finite: far crossings of nearly parallel lines, or tiny coordinates
+  //    whose products underflow, give infinite intervals (an infinite box once made GMP
+  //    raise SIGFPE). Then the exact coordinates bound the box instead.
+  if (progress) progress(0.6);
+  ExactFT x0, x1, y0, y1;
+  {
+    CGAL::Bbox_2 box = D.vertices_.front().p.bbox();
+    for (const auto& v : D.vertices_) box += v.p.bbox();
+    const double margin = 1.0 + 0.25 * std::max(box.xmax() - box.xmin(), box.ymax() - box.ymin());
+    const double b[4] = {box.xmin() - margin, box.xmax() + margin, box.ymin() - margin, box.ymax() + margin};
+    if (std::all_of(b, b + 4, [](double v) { return std::isfinite(v); })) {
+      x0 = b[0], x1 = b[1], y0 = b[2], y1 = b[3];
+    } else {
+      ExactFT lo[2], hi[2];
+      for (std::size_t q = 0; q < D.vertices_.size(); ++q) {
+        const auto& p = D.vertices_[q].p;
+        const auto bb = p.bbox();
+        for (int c = 0; c < 2; ++c) {
+          const double l = c ? bb.ymin() : bb.xmin(), h = c ? bb.ymax() : bb.xmax();
+          const ExactFT exact = c ? p.y() : p.x();
+          const ExactFT L = std::isfinite(l) ? ExactFT(l) : exact, H = std::isfinite(h) ? ExactFT(h) : exact;
+          if (q == 0 || L < lo[c]) lo[c] = L;
+          if (q == 0 || H > hi[c]) hi[c] = H;
+        }
+      }
+      const ExactFT m = 1 + CGAL::max(hi[0] - lo[0], hi[1] - lo[1]) / 4;
+      x0 = lo[0] - m, x1 = hi[0] + m, y0 = lo[1] - m, y1 = hi[1] + m;
+    }
+  }
   // Exits: each ray leaves the box once; perimeter position (side, coordinate) orders them
   // counter-clockwise from the corner (x0, y0): bottom, right, top, left.
   struct Exit {
@@ -107,10 +139,10 @@ SwapCellDecomposition SwapCellDecomposition::of(std::span<const geometry::Point>
     auto consider = [&](int s, const ExactFT& t) {
       if (!best || t < *best) best = t, side = s;
     };
-    if (d.x() > 0) consider(1, (ExactFT(x1) - o.x()) / d.x());
-    if (d.x() < 0) consider(3, (ExactFT(x0) - o.x()) / d.x());
-    if (d.y() > 0) consider(2, (ExactFT(y1) - o.y()) / d.y());
-    if (d.y() < 0) consider(0, (ExactFT(y0) - o.y()) / d.y());
+    if (d.x() > 0) consider(1, (x1 - o.x()) / d.x());
+    if (d.x() < 0) consider(3, (x0 - o.x()) / d.x());
+    if (d.y() > 0) consider(2, (y1 - o.y()) / d.y());
+    if (d.y() < 0) consider(0, (y0 - o.y()) / d.y());
     const ExactPoint X = o + d * *best;
     const ExactFT along = side == 0 ? X.x() : side == 1 ? X.y() : side == 2 ? -X.x() : -X.y();
     exit_vertex[r] = static_cast<std::uint32_t>(D.vertices_.size());
@@ -122,7 +154,7 @@ SwapCellDecomposition SwapCellDecomposition::of(std::span<const geometry::Point>
   for (int s = 0; s < 4; ++s) {
     const std::uint32_t v = static_cast<std::uint32_t>(D.vertices_.size());
     D.vertices_.push_back({corner[s], Vertex::Kind::Box, kNone});
-    const ExactFT along = s == 0 ? ExactFT(x0) : s == 1 ? ExactFT(y0) : s == 2 ? ExactFT(-x1) : ExactFT(-y1);
+    const ExactFT along = s == 0 ? x0 : s == 1 ? y0 : s == 2 ? -x1 : -y1;
     exits.push_back({s, along, v});
   }
   same.grow(D.vertices_.size());
@@ -191,6 +223,7 @@ SwapCellDecomposition SwapCellDecomposition::of(std::span<const geometry::Point>
     add_edge(a.vertex, b.vertex, kNone, EVector(dx[s], dy[s]));
   }
 
+  if (progress) progress(0.75);
   // 5. Around each vertex, outgoing half-edges counter-clockwise; next(h) is the
   //    clockwise neighbour of twin(h) at h's target (the cell on the left continues).
   const std::uint32_t H = static_cast<std::uint32_t>(D.half_edges_.size());
@@ -230,6 +263,7 @@ SwapCellDecomposition SwapCellDecomposition::of(std::span<const geometry::Point>
   for (std::uint32_t h = 0; h < H; ++h)
     D.half_edges_[h].cell = cycle[h] == outside ? kNone : (cycle[h] > outside ? cycle[h] - 1 : cycle[h]);
 
+  if (progress) progress(0.9);
   // 7. Permutations: read one cell, then transpose across rays (Lemma 6's first case).
   //    The cell left of a piece of ray (i, j) traversed forwards (direction p_j -> p_i)
   //    sees j right before i; a reading at the piece's midpoint with that tie is exact.
@@ -281,7 +315,9 @@ SwapCellDecomposition SwapCellDecomposition::of(std::span<const geometry::Point>
       if (c.permutation == r) c.meets_hull = true;
   }
 
-  // 9. The swap graph.
+  // 9. The swap graph. With three landmarks a cell outside the hull borders the inside
+  //    cell along both swap lines of its landmark (either transposition gives the same
+  //    cyclic order): one edge, labelled by the least pair.
   std::unordered_map<std::uint64_t, std::size_t> edge_of;
   for (std::uint32_t h = 0; h < H; h += 2) {
     const auto& e = D.half_edges_[h];
@@ -292,7 +328,9 @@ SwapCellDecomposition SwapCellDecomposition::of(std::span<const geometry::Point>
     auto [it, fresh] = edge_of.emplace(key, D.graph_.size());
     const auto [i, j] = std::minmax(D.rays_[e.ray].from, D.rays_[e.ray].away);
     if (fresh) D.graph_.push_back({a, b, i, j, false});
-    D.graph_[it->second].meets_hull = D.graph_[it->second].meets_hull || e.meets_hull;
+    auto& edge = D.graph_[it->second];
+    if (std::pair{i, j} < std::pair{edge.i, edge.j}) edge.i = i, edge.j = j;
+    edge.meets_hull = edge.meets_hull || e.meets_hull;
   }
 
   // Lines through each crossing vertex, for vertex keys.

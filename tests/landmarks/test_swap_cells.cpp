@@ -1,12 +1,14 @@
 // The swap cell decomposition (landmark paper, 6.1 and 7) against CGAL's Arrangement_2,
 // independent angular sorts, and Theorems 7, 13 and 14.
 #include <preimage/error.hpp>
+#include <preimage/landmarks/figures.hpp>
 #include <preimage/landmarks/swap_cells.hpp>
 #include <preimage/scene/scene.hpp>
 
 #include <gtest/gtest.h>
 #include <support/cgal_oracle.hpp>
 
+#include <limits>
 #include <map>
 #include <set>
 
@@ -33,6 +35,22 @@ void expect_permutations_read_everywhere(const SwapCellDecomposition& D, const s
     const Reading r = landmarks::normalized(landmarks::angular_reading(E, mid, std::nullopt, &left, {}));
     ASSERT_EQ(r, D.cells()[H[h].cell].permutation) << "half-edge " << h;
   }
+}
+
+// The same arrangement up to scale: cells, their permutations, hull cells and edges.
+void expect_same_decomposition(const std::vector<Point>& P, const std::vector<Point>& Q) {
+  const auto A = SwapCellDecomposition::of(P), B = SwapCellDecomposition::of(Q);
+  auto summary = [](const SwapCellDecomposition& D) {
+    std::multiset<std::pair<Reading, bool>> cells;
+    for (const auto& c : D.cells()) cells.emplace(c.permutation, c.meets_hull);
+    return std::pair{cells, D.swap_graph().size()};
+  };
+  EXPECT_EQ(summary(A), summary(B));
+  expect_permutations_read_everywhere(A, P);
+}
+
+std::vector<Point> fixture_landmarks(const std::string& name) {
+  return landmarks::landmark_set(scene::load_scene(std::string(PREIMAGE_FIXTURES) + "/scenes/" + name)).points;
 }
 
 }  // namespace
@@ -111,4 +129,33 @@ TEST(SwapCells, Fig09ExampleHasTwoOutsideCellsWithOnePermutation) {
 TEST(SwapCells, RejectsCollinearLandmarks) {
   const std::vector<Point> P{Point(0, 0), Point(1, 1), Point(2, 2), Point(5, 0)};
   EXPECT_THROW(SwapCellDecomposition::of(P), InputError);
+}
+
+// Issue 26: the clipping box was computed in doubles. At 1e308 its margin overflowed, with
+// tiny or subnormal coordinates the interval boxes of crossings were infinite, and GMP
+// raised SIGFPE converting infinity. The library takes any doubles: these decompositions
+// must equal the same shapes at ordinary scale.
+TEST(SwapCells, BoxStaysExactAt1e308AndSubnormalCoordinates) {
+  const double big = 1e308, tiny = std::numeric_limits<double>::denorm_min();
+  expect_same_decomposition({Point(0, 0), Point(big, 0), Point(0, big), Point(-big, -big)},
+                            {Point(0, 0), Point(1, 0), Point(0, 1), Point(-1, -1)});
+  expect_same_decomposition({Point(0, 0), Point(tiny, 0), Point(0, tiny), Point(1e-320, 1e-320)},
+                            {Point(0, 0), Point(1, 0), Point(0, 1), Point(2024, 2024)});
+}
+
+TEST(SwapCells, BoxStaysExactAtTheTinyScaleFixture) {
+  expect_same_decomposition(fixture_landmarks("landmarks_tiny_scale.json"), {Point(0, 0), Point(1, 0), Point(0, 1), Point(2024, 2024)});
+  expect_same_decomposition(fixture_landmarks("landmarks_scale_1e12.json"), {Point(0, 0), Point(1, 0), Point(0, 1), Point(-1, -1)});
+}
+
+TEST(SwapCells, BoxStaysExactAroundACrossingBeyondTheRangeOfDoubles) {
+  // Lines ab and cd cross near x = 4.5e331; at ordinary scale the same shape crosses at 100.
+  const auto P = fixture_landmarks("landmarks_far_crossing.json");
+  expect_same_decomposition(P, {Point(0, 0), Point(10, 0.1), Point(0, 10), Point(10, 10)});
+  // The figure clips cells and rays exactly to its frame: nothing infinite is drawn.
+  landmarks::LandmarkSet L{{"a", "b", "c", "d"}, P};
+  const std::string svg = landmarks::swap_cell_figure(L, SwapCellDecomposition::of(P)).str();
+  EXPECT_EQ(svg.find("inf"), std::string::npos);
+  EXPECT_EQ(svg.find("nan"), std::string::npos);
+  EXPECT_NE(svg.find("<polygon"), std::string::npos);
 }
