@@ -305,13 +305,16 @@ std::vector<Point> random_landmarks(std::size_t n, std::uint64_t seed, int range
   }
 }
 
-OrderTypeCount count_order_types(std::size_t n, std::size_t samples, std::uint64_t seed, bool mirror) {
+OrderTypeCount count_order_types(std::size_t n, std::size_t samples, std::uint64_t seed, bool mirror,
+                                 const std::function<void(double)>& progress) {
   if (n < 3) throw InputError("count-order-types: need N >= 3");
   std::set<std::vector<std::uint16_t>> seen;
   OrderTypeCount c;
   std::mt19937_64 seeds(seed);
-  for (; c.samples < samples; ++c.samples)
+  for (; c.samples < samples; ++c.samples) {
+    if (progress && c.samples % 64 == 0) progress(double(c.samples) / double(samples));
     seen.insert(canonical_form(OrderType::of(random_landmarks(n, seeds(), 1 << 20, &c.redrawn)), mirror).lambda);
+  }
   c.distinct = seen.size();
   return c;
 }

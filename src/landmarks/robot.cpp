@@ -66,8 +66,9 @@ StopRule StopRule::reads(std::vector<Reading> goals) {
   return {Kind::Reads, 0, 0, std::move(goals)};
 }
 
-Simulator::Simulator(std::vector<geometry::Point> landmarks, const geometry::Point& start) {
-  require_general_position(landmarks);
+Simulator::Simulator(std::vector<geometry::Point> landmarks, const geometry::Point& start, const std::vector<std::string>& labels) {
+  require_general_position(landmarks, labels);
+  order_ = OrderType::of(landmarks);
   for (auto& p : landmarks) P_.push_back(geometry::to_exact(p));
   pos_ = geometry::to_exact(start);
   for (std::size_t i = 0; i < P_.size() && !at_; ++i)
@@ -76,8 +77,9 @@ Simulator::Simulator(std::vector<geometry::Point> landmarks, const geometry::Poi
   for (std::size_t i = 0; i < P_.size() && !at_; ++i)
     for (std::size_t j = i + 1; j < P_.size(); ++j)
       if (geometry::orientation(P_[i], P_[j], pos_) == 0)
-        throw InputError("robot start " + geometry::format_point(start) + " lies on the line through landmarks " +
-                         std::to_string(i) + " and " + std::to_string(j));
+        throw InputError("robot start " + geometry::format_point(start) + " lies on the line through landmarks '" +
+                         (i < labels.size() ? labels[i] : std::to_string(i)) + "' and '" +
+                         (j < labels.size() ? labels[j] : std::to_string(j)) + "'");
   cur_ = sorted_reading(pos_, at_, nullptr, {});
   waypoints_.push_back(pos_);
 }
@@ -116,27 +118,55 @@ Reading angular_reading(std::span<const ExactPoint> P, const ExactPoint& c, std:
   return r;
 }
 
+Reading Simulator::leaving(std::uint32_t c, std::uint32_t t) const {
+  // Just after leaving p_c towards p_t: the others in their order around p_c (no two are
+  // aligned with it), and c straight behind, right after the lambda(c, t) landmarks that
+  // follow t within the half-turn (those left of p_c -> p_t). The same as an angular sort
+  // at a point of the path (set_self_check compares), in O(n).
+  const auto around = order_.around(c);
+  const std::size_t m = around.size(), r = static_cast<std::size_t>(std::find(around.begin(), around.end(), t) - around.begin());
+  const std::size_t left = order_.lambda(c, t);
+  Reading out;
+  out.reserve(m + 1);
+  for (std::size_t q = 0; q < m; ++q) {
+    out.push_back(around[(r + q) % m]);
+    if (q == left) out.push_back(c);
+  }
+  return out;
+}
+
 TrackReadings Simulator::track(std::uint32_t i) {
   if (i >= P_.size()) throw std::invalid_argument("track: no landmark " + std::to_string(i));
   if (at_ && *at_ == i) return {cur_, cur_};  // already there: nothing to do
   const ExactPoint from = at_ ? P_[*at_] : pos_;
-  ExactPoint toward = P_[i];
+  TrackReadings t;
   if (heading_error_ && at_) {
     // The departure direction, rotated by the error (a physical perturbation: the
     // rotation is rounded, every decision on the result stays exact).
     const double e = heading_error_();
-    const geometry::Point f = geometry::to_double(from), t = geometry::to_double(P_[i]);
-    const double dx = t.x() - f.x(), dy = t.y() - f.y();
-    toward = from + geometry::ExactKernel::Vector_2(dx * std::cos(e) - dy * std::sin(e), dx * std::sin(e) + dy * std::cos(e));
+    const geometry::Point f = geometry::to_double(from), p = geometry::to_double(P_[i]);
+    const double dx = p.x() - f.x(), dy = p.y() - f.y();
+    const ExactPoint toward =
+        from + geometry::ExactKernel::Vector_2(dx * std::cos(e) - dy * std::sin(e), dx * std::sin(e) + dy * std::cos(e));
+    t.after_start = sorted_reading(from, at_, &toward, cur_);
+  } else {
+    t.after_start = at_ ? leaving(*at_, i) : sorted_reading(from, std::nullopt, &P_[i], cur_);
   }
-  TrackReadings t;
-  t.after_start = sorted_reading(from, at_, &toward, cur_);
   // Just before arriving the robot is where it would be just after leaving p_i back
   // towards where it came from.
-  t.before_arrival = sorted_reading(P_[i], i, &from, cur_);
+  t.before_arrival = at_ ? leaving(i, *at_) : sorted_reading(P_[i], i, &from, cur_);
+  const auto around = order_.around(i);
+  Reading at_i(around.begin(), around.end());
+  if (self_check_) {
+    const ExactPoint& toward = P_[i];
+    if ((!heading_error_ && normalized(t.after_start) != normalized(sorted_reading(from, at_, &toward, cur_))) ||
+        normalized(t.before_arrival) != normalized(sorted_reading(P_[i], i, &from, cur_)) ||
+        normalized(at_i) != normalized(sorted_reading(P_[i], i, nullptr, t.before_arrival)))
+      throw std::logic_error("landmark simulator: a reading of track(" + std::to_string(i) + ") disagrees with an angular sort");
+  }
   pos_ = P_[i];
   at_ = i;
-  cur_ = sorted_reading(P_[i], i, nullptr, t.before_arrival);
+  cur_ = std::move(at_i);
   waypoints_.push_back(pos_);
   ++primitives_;
   return t;

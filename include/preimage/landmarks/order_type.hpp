@@ -97,6 +97,9 @@ std::vector<geometry::Point> random_landmarks(std::size_t n, std::uint64_t seed,
 struct OrderTypeCount {
   std::size_t distinct = 0, samples = 0, redrawn = 0;
 };
-OrderTypeCount count_order_types(std::size_t n, std::size_t samples, std::uint64_t seed, bool mirror);
+/// Time and memory grow as samples * n^2 (one canonical form kept per distinct type);
+/// `progress` is told the fraction done now and then.
+OrderTypeCount count_order_types(std::size_t n, std::size_t samples, std::uint64_t seed, bool mirror,
+                                 const std::function<void(double)>& progress = {});
 
 }  // namespace preimage::landmarks

@@ -97,7 +97,8 @@ class RobotInterface {
 /// (a point on no line through two landmarks) or at a landmark.
 class Simulator : public RobotInterface {
  public:
-  Simulator(std::vector<geometry::Point> landmarks, const geometry::Point& start);
+  /// InputError if the start lies on a line through two landmarks (named by `labels`).
+  Simulator(std::vector<geometry::Point> landmarks, const geometry::Point& start, const std::vector<std::string>& labels = {});
   Simulator(std::vector<geometry::Point> landmarks, std::uint32_t at_landmark);
   std::size_t num_landmarks() const override { return P_.size(); }
   Reading lcd() const override { return cur_; }
@@ -124,6 +125,8 @@ class Simulator : public RobotInterface {
     return angular_reading(P_, c, at, toward, before);
   }
   MotionTrace move(const geometry::ExactPoint& target, std::optional<std::uint32_t> target_landmark, const StopRule& stop);
+  Reading leaving(std::uint32_t c, std::uint32_t t) const;
+  OrderType order_;  // the angular order around each landmark: readings at and next to landmarks in O(n)
   std::vector<geometry::ExactPoint> P_;
   geometry::ExactPoint pos_;
   std::optional<std::uint32_t> at_;
