@@ -8,8 +8,13 @@
 // swap-graph: the swap cell decomposition and swap graph of n = 30 landmarks (870 swap
 // rays; target: under 1 s) against CGAL's Arrangement_2 of the same rays as segments
 // (the oracle of the tests) in the same run; both count the same cells.
+// strategy-1: the simulated robot learns the whole order type by Strategy 1 for every
+// pair (n = 200, 2 tracks per pair), against the same readings taken by one exact
+// angular sort per pair (what each reading cost before the simulator read the
+// precomputed orders) in the same run.
 #include <preimage/geometry/kernel.hpp>
 #include <preimage/landmarks/order_type.hpp>
+#include <preimage/landmarks/robot.hpp>
 #include <preimage/landmarks/swap_cells.hpp>
 #include <support/cgal_oracle.hpp>
 
@@ -91,11 +96,47 @@ void swap_graph_cgal(benchmark::State& state) {
   state.counters["cells"] = static_cast<double>(cells);
 }
 
+void strategy1(benchmark::State& state) {
+  const std::size_t n = static_cast<std::size_t>(state.range(0));
+  const auto P = points(n, 5);
+  const auto T = landmarks::OrderType::of(P);
+  for (auto _ : state) {
+    landmarks::Simulator robot(P, std::uint32_t{0});
+    const auto lambda = landmarks::learn_order_type(robot);
+    if (lambda[1] != T.lambda(0, 1)) throw std::logic_error("bench: Strategy 1 differs from the order type");
+    benchmark::DoNotOptimize(lambda.data());
+  }
+}
+
+void strategy1_sorting(benchmark::State& state) {
+  const std::size_t n = static_cast<std::size_t>(state.range(0));
+  const auto P = points(n, 5);
+  const auto T = landmarks::OrderType::of(P);
+  std::vector<geometry::ExactPoint> E;
+  for (const auto& p : P) E.push_back(geometry::to_exact(p));
+  std::vector<std::uint32_t> lambda(n * n);
+  for (auto _ : state) {
+    for (std::uint32_t i = 0; i < n; ++i)
+      for (std::uint32_t j = i + 1; j < n; ++j) {
+        const auto r = landmarks::angular_reading(E, E[i], i, &E[j], {});  // just after leaving p_i towards p_j
+        const auto [ij, ji] = landmarks::lemma1(r, i, j);
+        lambda[i * n + j] = static_cast<std::uint32_t>(ij.size()), lambda[j * n + i] = static_cast<std::uint32_t>(ji.size());
+      }
+    benchmark::DoNotOptimize(lambda.data());
+  }
+  for (std::uint32_t i = 0; i < n; ++i)
+    for (std::uint32_t j = 0; j < n; ++j)
+      if (i != j && lambda[i * n + j] != T.lambda(i, j)) throw std::logic_error("bench: sorted readings differ from the order type");
+}
+
 BENCHMARK(order_type)->Name("order-type/preimage")->ArgName("n")->Arg(200)->Unit(benchmark::kMillisecond);
 BENCHMARK(order_type_brute)->Name("order-type/reference")->ArgName("n")->Arg(200)->Unit(benchmark::kMillisecond);
 BENCHMARK(order_type)->Name("order-type-large/preimage")->ArgName("n")->Arg(2000)->Unit(benchmark::kMillisecond);
 BENCHMARK(canonical)->Name("canonical-form/n:10")->Unit(benchmark::kMicrosecond);
 BENCHMARK(swap_graph)->Name("swap-graph/preimage")->ArgName("n")->Arg(30)->Unit(benchmark::kMillisecond);
 BENCHMARK(swap_graph_cgal)->Name("swap-graph/reference")->ArgName("n")->Arg(30)->Unit(benchmark::kMillisecond);
+
+BENCHMARK(strategy1)->Name("strategy-1/preimage")->ArgName("n")->Arg(200)->Unit(benchmark::kMillisecond);
+BENCHMARK(strategy1_sorting)->Name("strategy-1/reference")->ArgName("n")->Arg(200)->Unit(benchmark::kMillisecond);
 
 int main(int argc, char** argv) { return preimage::bench::run_with_ratios(argc, argv); }
