@@ -121,6 +121,7 @@ std::vector<Reading> all_cyclic_permutations(std::size_t n) {
 
 struct Counts {
   std::size_t configs = 0, goals = 0, runs = 0, reached = 0, others = 0, rejected = 0, by_lemma = 0, parallel = 0, concurrent = 0;
+  std::size_t paper_rejects = 0;  // hull cells the paper's Lemma 10 rejects: a polar line that meets no other
 };
 
 // One configuration: every hull cell from `starts` starts, every other permutation once
@@ -148,6 +149,8 @@ void exhaust(const std::vector<Point>& P, std::uint64_t seed, std::size_t starts
     tours.push_back(landmarks::learn_by_hull_tour(robot));
     learned.push_back(robot);
   }
+  for (const auto& g : inside)
+    c.paper_rejects += landmarks::meeting_polar_lines(n, truth(T), g).size() < landmarks::polar_pairs(n, truth(T), g).size();
   for (const auto& g : inside)
     for (std::size_t s = 0; s < starts; ++s) {
       Simulator robot = learned[s];
@@ -202,7 +205,8 @@ TEST(LandmarkNavigation, EveryHullCellIsReachedAndEveryOtherPermutationRejected)
     }
     for (const auto& [kind, c] : {std::pair{"random", random}, std::pair{"grid", grid}}) {
       std::cout << "n = " << n << ", " << kind << ": " << c.configs << " configurations (" << c.parallel << " parallel line pairs, "
-                << c.concurrent << " concurrent crossings); " << c.goals << " hull cells, " << c.runs << " runs, " << c.reached
+                << c.concurrent << " concurrent crossings); " << c.goals << " hull cells (" << c.paper_rejects
+                << " that the paper's Lemma 10 rejects), " << c.runs << " runs, " << c.reached
                 << " reached; " << c.others << " other permutations, " << c.rejected << " rejected (" << c.by_lemma
                 << " before moving)\n";
       EXPECT_EQ(c.reached, c.runs);
