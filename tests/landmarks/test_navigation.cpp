@@ -48,6 +48,17 @@ std::vector<Point> grid_landmarks(std::size_t n, std::uint64_t seed) {
   return landmarks::random_landmarks(n, seed, static_cast<int>(n / 2));
 }
 
+// f(n, seed, P) for n in [lo, hi] and `sets` landmark sets of each size, random and
+// grid-snapped in turn.
+template <class F>
+void for_each_set(std::size_t lo, std::size_t hi, std::uint64_t sets, std::uint64_t salt, F&& f) {
+  for (std::size_t n = lo; n <= hi; ++n)
+    for (std::uint64_t seed = 1; seed <= sets; ++seed) {
+      const std::uint64_t s = seed * salt + n;
+      f(n, seed, seed % 2 ? landmarks::random_landmarks(n, s, 1000) : grid_landmarks(n, s));
+    }
+}
+
 struct Degeneracies {
   std::size_t parallel = 0, concurrent = 0;
 };
@@ -227,27 +238,25 @@ TEST(LandmarkNavigation, Lemma10AsItHoldsBoundsEveryCellOnMeetingPolarLines) {
   // paper's stronger "every polar line meets another" fails rarely: the fixture of
   // Lemma10CounterexampleGoalIsReachedFromEveryStart.)
   std::size_t cells = 0;
-  for (std::size_t n = 4; n <= 9; ++n)
-    for (std::uint64_t seed = 1; seed <= 6; ++seed) {
-      const auto P = seed % 2 ? landmarks::random_landmarks(n, seed * 31 + n, 1000) : grid_landmarks(n, seed * 31 + n);
-      const auto D = SwapCellDecomposition::of(P);
-      const OrderType T = OrderType::of(P);
-      std::vector<std::set<std::pair<std::uint32_t, std::uint32_t>>> lines(D.cells().size());
-      for (const auto& h : D.half_edges())
-        if (h.ray != SwapCellDecomposition::kNone && h.cell != SwapCellDecomposition::kNone)
-          lines[h.cell].insert(std::minmax(D.rays()[h.ray].from, D.rays()[h.ray].away));
-      for (std::uint32_t c = 0; c < D.cells().size(); ++c) {
-        const auto& g = D.cells()[c].permutation;
-        std::set<std::pair<std::uint32_t, std::uint32_t>> meeting;
-        for (auto [i, j] : landmarks::meeting_polar_lines(n, truth(T), g)) meeting.insert(std::minmax(i, j));
-        ASSERT_GE(lines[c].size(), 2u);
-        for (const auto& l : lines[c]) ASSERT_TRUE(meeting.count(l)) << "n " << n << " seed " << seed << " cell " << c;
-        if (D.cells()[c].meets_hull) {
-          EXPECT_FALSE(landmarks::unrealizable_reason(n, truth(T), T.hull(), g)) << "n " << n << " cell " << c;
-        }
-        ++cells;
+  for_each_set(4, 9, 6, 31, [&](std::size_t n, std::uint64_t seed, const std::vector<Point>& P) {
+    const auto D = SwapCellDecomposition::of(P);
+    const OrderType T = OrderType::of(P);
+    std::vector<std::set<std::pair<std::uint32_t, std::uint32_t>>> lines(D.cells().size());
+    for (const auto& h : D.half_edges())
+      if (h.ray != SwapCellDecomposition::kNone && h.cell != SwapCellDecomposition::kNone)
+        lines[h.cell].insert(std::minmax(D.rays()[h.ray].from, D.rays()[h.ray].away));
+    for (std::uint32_t c = 0; c < D.cells().size(); ++c) {
+      const auto& g = D.cells()[c].permutation;
+      std::set<std::pair<std::uint32_t, std::uint32_t>> meeting;
+      for (auto [i, j] : landmarks::meeting_polar_lines(n, truth(T), g)) meeting.insert(std::minmax(i, j));
+      ASSERT_GE(lines[c].size(), 2u);
+      for (const auto& l : lines[c]) ASSERT_TRUE(meeting.count(l)) << "n " << n << " seed " << seed << " cell " << c;
+      if (D.cells()[c].meets_hull) {
+        EXPECT_FALSE(landmarks::unrealizable_reason(n, truth(T), T.hull(), g)) << "n " << n << " cell " << c;
       }
+      ++cells;
     }
+  });
   EXPECT_GT(cells, 1000u);
 }
 
@@ -332,36 +341,34 @@ TEST(LandmarkNavigation, Strategy9LearnsOneEdgePerPairOfCellsOnTheTriangle) {
 
 TEST(LandmarkNavigation, Strategy9LearnsTheSwapGraphOnRandomAndGridSets) {
   std::size_t configs = 0;
-  for (std::size_t n = 4; n <= 8; ++n)
-    for (std::uint64_t seed = 1; seed <= 4; ++seed) {
-      const auto P = seed % 2 ? landmarks::random_landmarks(n, seed * 13 + n, 1000) : grid_landmarks(n, seed * 13 + n);
-      const auto D = SwapCellDecomposition::of(P);
-      Simulator robot(P, generic_start(P, seed, 20));
-      const auto tour = landmarks::learn_by_hull_tour(robot);
-      const auto in = landmarks::learn_inside_swap_graph(robot, tour.order_type.chirotope(), tour.hull);
-      const auto all = landmarks::learn_swap_graph(robot, in);
-      // Cells one to one (same permutation, the vertices seen among the cell's), then
-      // the same labelled edges.
-      ASSERT_EQ(all.cells.size(), D.cells().size()) << "n " << n << " seed " << seed;
-      std::vector<std::uint32_t> to_true(all.cells.size());
-      std::set<std::uint32_t> used;
-      for (std::uint32_t c = 0; c < all.cells.size(); ++c) {
-        std::vector<std::uint32_t> match;
-        for (std::uint32_t t = 0; t < D.cells().size(); ++t) {
-          if (D.cells()[t].permutation != all.cells[c].permutation) continue;
-          const auto keys = D.vertex_keys(t);
-          if (std::includes(keys.begin(), keys.end(), all.cells[c].vertex_keys.begin(), all.cells[c].vertex_keys.end())) match.push_back(t);
-        }
-        ASSERT_EQ(match.size(), 1u) << "n " << n << " seed " << seed << " cell " << c;
-        to_true[c] = match[0];
-        used.insert(match[0]);
+  for_each_set(4, 8, 4, 13, [&](std::size_t n, std::uint64_t seed, const std::vector<Point>& P) {
+    const auto D = SwapCellDecomposition::of(P);
+    Simulator robot(P, generic_start(P, seed, 20));
+    const auto tour = landmarks::learn_by_hull_tour(robot);
+    const auto in = landmarks::learn_inside_swap_graph(robot, tour.order_type.chirotope(), tour.hull);
+    const auto all = landmarks::learn_swap_graph(robot, in);
+    // Cells one to one (same permutation, the vertices seen among the cell's), then
+    // the same labelled edges.
+    ASSERT_EQ(all.cells.size(), D.cells().size()) << "n " << n << " seed " << seed;
+    std::vector<std::uint32_t> to_true(all.cells.size());
+    std::set<std::uint32_t> used;
+    for (std::uint32_t c = 0; c < all.cells.size(); ++c) {
+      std::vector<std::uint32_t> match;
+      for (std::uint32_t t = 0; t < D.cells().size(); ++t) {
+        if (D.cells()[t].permutation != all.cells[c].permutation) continue;
+        const auto keys = D.vertex_keys(t);
+        if (std::includes(keys.begin(), keys.end(), all.cells[c].vertex_keys.begin(), all.cells[c].vertex_keys.end())) match.push_back(t);
       }
-      EXPECT_EQ(used.size(), D.cells().size());
-      std::set<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t>> te, le;
-      for (const auto& e : D.swap_graph()) te.emplace(std::min(e.a, e.b), std::max(e.a, e.b), e.i, e.j);
-      for (const auto& e : all.edges) le.emplace(std::min(to_true[e.a], to_true[e.b]), std::max(to_true[e.a], to_true[e.b]), e.i, e.j);
-      EXPECT_EQ(le, te) << "n " << n << " seed " << seed;
-      ++configs;
+      ASSERT_EQ(match.size(), 1u) << "n " << n << " seed " << seed << " cell " << c;
+      to_true[c] = match[0];
+      used.insert(match[0]);
     }
+    EXPECT_EQ(used.size(), D.cells().size());
+    std::set<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t>> te, le;
+    for (const auto& e : D.swap_graph()) te.emplace(std::min(e.a, e.b), std::max(e.a, e.b), e.i, e.j);
+    for (const auto& e : all.edges) le.emplace(std::min(to_true[e.a], to_true[e.b]), std::max(to_true[e.a], to_true[e.b]), e.i, e.j);
+    EXPECT_EQ(le, te) << "n " << n << " seed " << seed;
+    ++configs;
+  });
   EXPECT_EQ(configs, 20u);
 }
