@@ -68,7 +68,9 @@ const geometry::Environment& field() {
 void coverage_preimage(benchmark::State& state) {
   std::size_t laps = 0;
   for (auto _ : state) {
-    auto rep = decompose::plan_coverage(field(), {1.0, std::nullopt, 0.0});
+    decompose::CoverageOptions o;
+    o.width = 2.0, o.angle_deg = 0.0;
+    auto rep = decompose::plan_coverage(field(), o);
     laps = rep.laps;
     benchmark::DoNotOptimize(rep);
   }

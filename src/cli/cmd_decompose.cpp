@@ -3,12 +3,16 @@
 #include "common.hpp"
 
 #include <preimage/decompose/coverage.hpp>
+#include <preimage/decompose/planner.hpp>
+#include <preimage/geometry/configuration_space.hpp>
+#include <preimage/geometry/coordinates.hpp>
 #include <preimage/decompose/figures.hpp>
 #include <preimage/error.hpp>
 #include <preimage/render/figures.hpp>
 
 #include <cmath>
 #include <iostream>
+#include <optional>
 
 namespace preimage::cli {
 
@@ -88,85 +92,124 @@ void run_decompose(const std::string& path, const std::string& method, double an
   if (!svg.empty()) std::cout << "wrote " << svg << "\n";
 }
 
-void run_plan(const std::string& path, const std::string& start_s, const std::string& goal_s, bool no_shorten,
-              bool as_json, const std::string& svg) {
+// The robot's radius: --radius, else the scene's robot.radius, else 0 (a point).
+double robot_radius(const scene::Scene& s, const std::optional<double>& flag) {
+  if (flag) return *flag;
+  return s.robot_radius.value_or(0.0);
+}
+
+void run_plan(const std::string& path, const std::string& start_s, const std::string& goal_s, const std::optional<double>& radius_flag,
+              const std::string& method, bool no_shorten, bool as_json, const std::string& svg) {
   scene::Scene s = scene::load_scene(path);
   const auto& env = s.require_environment();
   if (!start_s.empty()) s.start = parse_point(start_s, "--start");
   if (!goal_s.empty()) s.goal = parse_point(goal_s, "--goal");
   if (!s.start) throw InputError("--start: not given and the scene has no \"start\"");
   if (!s.goal) throw InputError("--goal: not given and the scene has no \"goal\"");
-  const decompose::TrapezoidalDecomposition d(env);
-  const decompose::TrapezoidalPlanner planner(d);
-  const decompose::Plan plan = planner.plan(*s.start, *s.goal, !no_shorten);
+  if (method == "shortest" && no_shorten) throw InputError("--no-shorten: applies to --method trapezoidal only");
+  const double r = robot_radius(s, radius_flag);
+  const auto plan = decompose::plan_path(env, *s.start, *s.goal, r,
+                                         method == "shortest" ? decompose::PlanMethod::Shortest : decompose::PlanMethod::Trapezoidal, !no_shorten);
   if (!svg.empty()) {
     render::SvgCanvas c(render::scene_box(s));
     render::draw_scene(c, s);
-    decompose::draw_decomposition(c, d, &planner);
-    if (plan.found) {
-      render::Style route{"none", "#d93025", 3, 1.0, ""};
-      c.polyline(plan.path, route, "planned path");
-      c.legend("planned path", route);
+    if (r > 0) render::draw_configuration_space(c, geometry::ConfigurationSpace(env, r));
+    if (method == "trapezoidal" && r == 0) {
+      const decompose::TrapezoidalDecomposition d(env);
+      const decompose::TrapezoidalPlanner planner(d);
+      decompose::draw_decomposition(c, d, &planner);
     }
+    if (plan.found) render::draw_route(c, plan.path, "planned path", "#d93025");
     c.save(svg);
   }
   if (as_json) {
-    print_json({{"found", plan.found}, {"length", plan.length}, {"cells", plan.cells}, {"path", points_json(plan.path)}});
+    json out{{"found", plan.found}, {"robot_radius", r}, {"method", method}, {"length", plan.length}, {"path", points_json(plan.path)}};
+    if (!plan.found) out["reason"] = plan.why_not;
+    if (method == "trapezoidal") out["cells_crossed"] = plan.cells_crossed, out["decomposition_cells"] = plan.decomposition_cells;
+    print_json(out);
     return;
   }
+  const std::string robot = r > 0 ? " for a robot of radius " + geometry::format_number(r) : "";
   if (!plan.found) {
-    std::cout << "no path from " << geometry::format_point(*s.start) << " to " << geometry::format_point(*s.goal) << "\n";
+    std::cout << "no path from " << geometry::format_point(*s.start) << " to " << geometry::format_point(*s.goal) << robot << ": " << plan.why_not << "\n";
   } else {
-    std::cout << "path from " << geometry::format_point(*s.start) << " to " << geometry::format_point(*s.goal) << ": "
-              << plan.path.size() << " points, length " << geometry::format_number(plan.length) << ", through "
-              << plan.cells.size() << " of " << d.cells().size() << " cells\n";
+    std::cout << "path from " << geometry::format_point(*s.start) << " to " << geometry::format_point(*s.goal) << robot << ": "
+              << plan.path.size() << " points, length " << geometry::format_number(plan.length);
+    if (method == "trapezoidal") std::cout << ", through " << plan.cells_crossed << " of " << plan.decomposition_cells << " cells";
+    std::cout << " (every segment certified)\n";
   }
   if (!svg.empty()) std::cout << "wrote " << svg << "\n";
 }
 
-void run_cover(const std::string& path, double width, const std::string& start_s, const std::string& angle_s,
-               bool as_json, const std::string& svg) {
-  scene::Scene s = scene::load_scene(path);
+struct CoverArgs {
+  std::string path, start, angle = "auto", order = "optimised", transit = "shortest", svg;
+  std::optional<double> width, radius;
+  bool json = false;
+};
+
+void run_cover(const CoverArgs& a) {
+  scene::Scene s = scene::load_scene(a.path);
   const auto& env = s.require_environment();
-  decompose::CoverageOptions o{width / 2, std::nullopt, std::nullopt};
-  if (!start_s.empty()) s.start = parse_point(start_s, "--start");
+  decompose::CoverageOptions o;
+  o.robot_radius = robot_radius(s, a.radius);
+  o.width = a.width.value_or(0.0);
+  if (!a.width && o.robot_radius == 0)
+    throw InputError("--width: not given, and without a robot radius (--radius or the scene's robot.radius) it has no default of 2r");
+  if (!a.start.empty()) s.start = parse_point(a.start, "--start");
   o.start = s.start;
-  if (angle_s != "auto") {
+  if (a.angle != "auto") {
     std::size_t used = 0;
-    double a = 0;
+    double deg = 0;
     try {
-      a = std::stod(angle_s, &used);
+      deg = std::stod(a.angle, &used);
     } catch (const std::exception&) {
       used = 0;
     }
-    if (used == 0 || used != angle_s.size() || !std::isfinite(a))
-      throw InputError("--angle: expected degrees or 'auto', got '" + angle_s + "'");
-    o.angle_deg = a;
+    if (used == 0 || used != a.angle.size() || !std::isfinite(deg))
+      throw InputError("--angle: expected degrees or 'auto', got '" + a.angle + "'");
+    o.angle_deg = deg;
   }
+  o.order = a.order == "dfs" ? decompose::CellOrder::DepthFirst : decompose::CellOrder::Optimised;
+  o.transit = a.transit == "decomposition" ? decompose::Transit::Decomposition : decompose::Transit::Shortest;
   const auto rep = decompose::plan_coverage(env, o);
-  if (!svg.empty()) {
+  const auto m = decompose::measure_coverage(env, rep);
+  if (!a.svg.empty()) {
     render::SvgCanvas c(render::scene_box(s));
     render::draw_scene(c, s);
-    const decompose::BoustrophedonDecomposition b(env, rep.angle);
-    decompose::draw_boustrophedon(c, b);
-    render::Style route{"none", "#d93025", 1.2, 0.9, ""};
-    c.polyline(rep.path, route, "coverage path");
-    c.legend("coverage path", route);
-    c.save(svg);
+    if (o.robot_radius > 0) render::draw_configuration_space(c, geometry::ConfigurationSpace(env, o.robot_radius));
+    decompose::draw_coverage(c, rep);
+    c.save(a.svg);
   }
-  if (as_json) {
-    print_json({{"width", width}, {"angle", rep.angle}, {"length", rep.length}, {"laps", rep.laps}, {"turns", rep.turns},
-                {"cells", rep.cells}, {"critical_points", rep.critical_points}, {"cell_order", rep.cell_order},
+  if (a.json) {
+    json moves = json::array();
+    for (auto mv : rep.moves) moves.push_back(mv == decompose::Move::Lap ? "lap" : mv == decompose::Move::Follow ? "follow" : "transit");
+    print_json({{"width", rep.width}, {"robot_radius", rep.robot_radius}, {"angle", rep.angle}, {"order", a.order}, {"transit", a.transit},
+                {"length", rep.length}, {"transit_length", rep.transit_length}, {"laps", rep.laps}, {"turns", rep.turns},
+                {"rotation_deg", rep.rotation_deg}, {"cells", rep.cells}, {"critical_points", rep.critical_points},
+                {"cell_order", rep.cell_order}, {"sweeps", rep.sweeps},
+                {"order_optimal", rep.order_optimal}, {"order_lower_bound", rep.order_lower_bound},
+                {"metrics", {{"covered_fraction", m.covered_fraction}, {"overlap", m.overlap}, {"efficiency", m.efficiency},
+                             {"samples", m.samples}}},
+                {"target_area", rep.target_area}, {"unreachable_area", rep.unreachable_area}, {"cspace_error", rep.cspace_error},
+                {"rounding_detours", rep.rounding_detours},
                 {"bound", {{"value", rep.bound}, {"diameter", rep.diameter}, {"perimeter", rep.perimeter},
-                           {"formula", "D^2/(2r) + 4 D (N_cp + N_ob) + 5 P_total - 4 D"}}},
-                {"path", points_json(rep.path)}});
+                           {"formula", "D^2/w + 4 D (N_cp + N_ob) + 5 P_total - 4 D"}}},
+                {"path", points_json(rep.path)}, {"moves", moves}});
     return;
   }
-  std::cout << "coverage with width " << geometry::format_number(width) << " at " << geometry::format_number(rep.angle)
-            << " degrees: length " << geometry::format_number(rep.length) << " (bound "
-            << geometry::format_number(rep.bound) << "), " << rep.laps << " laps, " << rep.turns << " turns, "
-            << rep.cells << " cells, " << rep.critical_points << " critical points\n";
-  if (!svg.empty()) std::cout << "wrote " << svg << "\n";
+  std::cout << "coverage with width " << geometry::format_number(rep.width);
+  if (rep.robot_radius > 0) std::cout << " (robot radius " << geometry::format_number(rep.robot_radius) << ")";
+  std::cout << " at " << geometry::format_number(rep.angle) << " degrees: length " << geometry::format_number(rep.length)
+            << " (transits " << geometry::format_number(rep.transit_length) << "; bound " << geometry::format_number(rep.bound) << "), "
+            << rep.laps << " laps, " << rep.turns << " turns, " << rep.cells << " cells, " << rep.critical_points << " critical points\n";
+  std::cout << "covered " << geometry::format_number(std::round(m.covered_fraction * 10000) / 100) << "% of the configuration space ("
+            << geometry::format_number(rep.target_area) << " m2), overlap " << geometry::format_number(std::round(m.overlap * 10000) / 100)
+            << "%, length / (area / width) = " << geometry::format_number(std::round(m.efficiency * 1000) / 1000);
+  if (rep.unreachable_area > 0) std::cout << "; unreachable from the start: " << geometry::format_number(rep.unreachable_area);
+  std::cout << "\n";
+  if (a.order == "optimised")
+    std::cout << "cell order: " << (rep.order_optimal ? "optimal" : "local search, lower bound " + geometry::format_number(rep.order_lower_bound)) << "\n";
+  if (!a.svg.empty()) std::cout << "wrote " << a.svg << "\n";
 }
 
 }  // namespace
@@ -187,34 +230,41 @@ void add_decompose_commands(CLI::App& app) {
     cmd->callback([=] { run_decompose(*path, *method, *angle, *json_out, *svg); });
   }
   {
-    auto* cmd = app.add_subcommand("plan", "Collision-free path through the trapezoidal decomposition");
+    auto* cmd = app.add_subcommand("plan", "Collision-free path for a point or disc robot: shortest, or through the trapezoidal decomposition");
     auto path = std::make_shared<std::string>();
     auto start = std::make_shared<std::string>(), goal = std::make_shared<std::string>();
+    auto method = std::make_shared<std::string>("shortest");
+    auto radius = std::make_shared<std::optional<double>>();
     auto no_shorten = std::make_shared<bool>(false), json_out = std::make_shared<bool>(false);
     auto svg = std::make_shared<std::string>();
     cmd->add_option("scene", *path, "Scene JSON file")->required();
     cmd->add_option("--start", *start, "Start X,Y (default: the scene's \"start\")");
     cmd->add_option("--goal", *goal, "Goal X,Y (default: the scene's \"goal\")");
-    cmd->add_flag("--no-shorten", *no_shorten, "Keep the path through extension midpoints and cell centroids");
+    cmd->add_option("--radius", *radius, "Robot radius r: the path keeps r from every obstacle (default: the scene's robot.radius, else 0)")
+        ->check(number_in(0, geometry::kMaxCoordinate));
+    cmd->add_option("--method", *method, "shortest (visibility graph) or trapezoidal (section 6.1)")
+        ->check(CLI::IsMember({"shortest", "trapezoidal"}))->capture_default_str();
+    cmd->add_flag("--no-shorten", *no_shorten, "trapezoidal: keep the path through extension midpoints and cell centroids");
     cmd->add_flag("--json", *json_out, "Machine-readable output on stdout");
-    cmd->add_option("--svg", *svg, "Draw the decomposition and the path to this SVG file");
-    cmd->callback([=] { run_plan(*path, *start, *goal, *no_shorten, *json_out, *svg); });
+    cmd->add_option("--svg", *svg, "Draw the scene, the configuration space and the path to this SVG file");
+    cmd->callback([=] { run_plan(*path, *start, *goal, *radius, *method, *no_shorten, *json_out, *svg); });
   }
   {
-    auto* cmd = app.add_subcommand("cover", "Coverage path for a tool of width W on the boustrophedon decomposition");
-    auto path = std::make_shared<std::string>();
-    auto width = std::make_shared<double>(0.0);
-    auto start = std::make_shared<std::string>();
-    auto angle = std::make_shared<std::string>("0");
-    auto json_out = std::make_shared<bool>(false);
-    auto svg = std::make_shared<std::string>();
-    cmd->add_option("scene", *path, "Scene JSON file")->required();
-    cmd->add_option("--width", *width, "Tool width w = 2r (laps are w apart)")->required();
-    cmd->add_option("--start", *start, "Start X,Y (default: the scene's \"start\", else the first cell)");
-    cmd->add_option("--angle", *angle, "Sweep direction in degrees, or 'auto' to pick the shortest path")->capture_default_str();
-    cmd->add_flag("--json", *json_out, "Machine-readable output on stdout");
-    cmd->add_option("--svg", *svg, "Draw cells, Reeb graph and the coverage path to this SVG file");
-    cmd->callback([=] { run_cover(*path, *width, *start, *angle, *json_out, *svg); });
+    auto* cmd = app.add_subcommand("cover", "Coverage path for a tool of width W (and a robot of radius r) on the boustrophedon decomposition");
+    auto a = std::make_shared<CoverArgs>();
+    cmd->add_option("scene", a->path, "Scene JSON file")->required();
+    cmd->add_option("--width", a->width, "Tool width w: laps are w apart (default: 2r)")->check(number_in(0, geometry::kMaxCoordinate, true));
+    cmd->add_option("--radius", a->radius, "Robot radius r: the path keeps r from every obstacle (default: the scene's robot.radius, else 0)")
+        ->check(number_in(0, geometry::kMaxCoordinate));
+    cmd->add_option("--start", a->start, "Start X,Y (default: the scene's \"start\", else where the first sweep begins)");
+    cmd->add_option("--angle", a->angle, "Sweep direction in degrees, or 'auto' to pick the shortest path")->capture_default_str();
+    cmd->add_option("--order", a->order, "optimised (sweeps and order by a generalised TSP) or dfs (6.2.1's depth-first walk)")
+        ->check(CLI::IsMember({"optimised", "dfs"}))->capture_default_str();
+    cmd->add_option("--transit", a->transit, "shortest (visibility graph) or decomposition (trapezoid midpoints and centroids)")
+        ->check(CLI::IsMember({"shortest", "decomposition"}))->capture_default_str();
+    cmd->add_flag("--json", a->json, "Machine-readable output on stdout");
+    cmd->add_option("--svg", a->svg, "Draw the configuration space and the coverage path to this SVG file");
+    cmd->callback([a] { run_cover(*a); });
   }
 }
 

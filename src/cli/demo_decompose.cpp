@@ -7,6 +7,8 @@
 #include <preimage/geometry/generators.hpp>
 #include <preimage/render/figures.hpp>
 
+#include <cmath>
+
 namespace preimage::cli {
 
 void demo_decompose(DemoContext& ctx) {
@@ -63,13 +65,21 @@ void demo_coverage(DemoContext& ctx) {
            std::to_string(b.critical_slices().size()) + " critical points; Euler's formula N_cells = N_cp + N_ob - 1: " +
            std::to_string(b.cells().size()) + " = " + std::to_string(b.critical_slices().size()) + " + " +
            std::to_string(env.num_holes()) + " - 1.");
-  const double width = 0.5;
-  const auto rep = decompose::plan_coverage(env, {width / 2, field.start, 0.0});
-  R.result("Coverage with a tool of width " + format_number(width) + " from " + format_point(*field.start) + ": length " +
-           format_number(rep.length) + " within the chapter's bound " + format_number(rep.bound) + ", " +
-           std::to_string(rep.laps) + " laps, " + std::to_string(rep.turns) + " turns.");
-  const auto best = decompose::plan_coverage(env, {width / 2, field.start, std::nullopt});
-  R.result("Automatic sweep direction (axes and the longest edges' directions): " + format_number(best.angle) +
+  // A robot of radius 0.25 with a tool as wide as itself.
+  decompose::CoverageOptions o;
+  o.robot_radius = 0.25, o.start = field.start, o.angle_deg = 0.0;
+  const auto rep = decompose::plan_coverage(env, o);
+  const auto m = decompose::measure_coverage(env, rep);
+  o.order = decompose::CellOrder::DepthFirst, o.transit = decompose::Transit::Decomposition;
+  const auto dfs = decompose::plan_coverage(env, o);
+  R.result("Coverage by a robot of radius 0.25 (tool width 0.5) from " + format_point(*field.start) + ", in its configuration space: length " +
+           format_number(rep.length) + " (" + format_number(rep.transit_length) + " of it transits), " + std::to_string(rep.laps) + " laps, " +
+           std::to_string(rep.turns) + " turns, " + format_number(std::round(m.covered_fraction * 1000) / 10) + "% of the configuration space covered, overlap " +
+           format_number(std::round(m.overlap * 1000) / 10) + "%; every segment certified 0.25 away from the obstacles. The chapter's depth-first walk with transits " +
+           "through the trapezoids: length " + format_number(dfs.length) + " (bound " + format_number(dfs.bound) + ").");
+  o.order = decompose::CellOrder::Optimised, o.transit = decompose::Transit::Shortest, o.angle_deg.reset();
+  const auto best = decompose::plan_coverage(env, o);
+  R.result("Automatic sweep direction (axes and the longest edges' directions, ranked by laps and cells): " + format_number(best.angle) +
            " degrees, length " + format_number(best.length) + ".");
   render::SvgCanvas c(render::scene_box(field));
   render::draw_scene(c, field);
@@ -77,10 +87,9 @@ void demo_coverage(DemoContext& ctx) {
   ctx.figure("decompose-boustrophedon.svg", c.str(), "Boustrophedon decomposition with its Reeb graph");
   render::SvgCanvas cc(render::scene_box(field));
   render::draw_scene(cc, field);
-  const render::Style route{"none", "#d93025", 1.2, 0.9, ""};
-  cc.polyline(rep.path, route);
-  cc.legend("coverage path (laps along the slice, boundary following, transits)", route);
-  ctx.figure("decompose-coverage.svg", cc.str(), "Coverage path for a tool of width 0.5");
+  render::draw_configuration_space(cc, geometry::ConfigurationSpace(env, 0.25));
+  decompose::draw_coverage(cc, rep);
+  ctx.figure("decompose-coverage.svg", cc.str(), "Coverage path of a robot of radius 0.25 in its configuration space");
 }
 
 }  // namespace preimage::cli

@@ -28,7 +28,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     // One line, naming what was wrong; usage is one --help away.
     std::cerr << "preimage: " << e.what() << " (see preimage --help)\n";
-    return e.get_exit_code() ? e.get_exit_code() : 2;
+    return 2;  // every usage error alike (CLI11's own codes run from 105 to 115)
   } catch (const preimage::InputError& e) {
     std::cerr << "preimage: " << e.what() << "\n";
     return 1;

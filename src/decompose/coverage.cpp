@@ -2,10 +2,17 @@
 #include <preimage/decompose/coverage.hpp>
 
 #include <preimage/decompose/planner.hpp>
+#include <preimage/decompose/sweep_order.hpp>
 #include <preimage/error.hpp>
+#include <preimage/geometry/configuration_space.hpp>
 #include <preimage/geometry/queries.hpp>
 
+#include "cell_sweep.hpp"
+
+#include <CGAL/Polygon_2_algorithms.h>
+
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -54,304 +61,326 @@ double min_disc_diameter(std::vector<Point> pts) {
 
 namespace {
 
-// A cell's floor or ceiling as a polyline of doubles in sweep coordinates. Environment
-// vertices are exact; points inside an edge are rounded into the cell (a floor up, a
-// ceiling down), so every point lies in the closed cell and the path can be certified
-// exactly.
-struct Chain {
-  std::vector<Point> pts;
-  std::vector<std::uint32_t> vertex;  // environment vertex per point, or CellChains::kNoVertex
-  std::vector<std::uint32_t> edge;    // environment edge it lies on
-};
+using detail::Polyline;
+using geometry::ConfigurationSpace;
+using geometry::VisibilityGraph;
+using geometry::VisibilityIndex;
 
-// Where a lap at abscissa x meets a chain: after point k (the last with x_k <= x); on k
-// itself when x_k == x (at a wall on the slice line, the last of its points), else inside
-// segment k -> k+1.
-struct Foot {
-  std::size_t k;
-  bool at_point;
-  Point p;
-  std::uint32_t edge;  // environment edge it lies on
-};
+double dist(const Point& a, const Point& b) { return std::hypot(a.x() - b.x(), a.y() - b.y()); }
 
-struct PathPoint {
-  Point p;                                        // sweep coordinates
-  std::uint32_t vertex = CellChains::kNoVertex;   // environment vertex it is, if any
-  std::uint32_t edge = CellChains::kNoVertex;     // else the environment edge it lies on, if any
-};
-
-struct Builder {
-  const BoustrophedonDecomposition& b;
-  const TrapezoidalPlanner& planner;  // in sweep coordinates
-  double r;
-  std::vector<PathPoint> path;
-  std::size_t laps = 0;
-
-  void add(const Point& p, std::uint32_t vertex = CellChains::kNoVertex, std::uint32_t edge = CellChains::kNoVertex) {
-    if (path.empty() || path.back().p != p) path.push_back({p, vertex, edge});
+// What one sweep direction costs before planning it: laps (each a turn) and cells (each
+// a transit), the way ETH's planner ranks directions by the cells' altitudes.
+double direction_score(const BoustrophedonDecomposition& b, double w) {
+  double score = 0;
+  const auto& T = b.trapezoids().cells();
+  for (const auto& c : b.cells()) {
+    const double width = T[c.trapezoids.back()].x_right - T[c.trapezoids.front()].x_left;
+    score += 1 + std::ceil(width / w);
   }
-  void add(const Chain& c, std::size_t i) { add(c.pts[i], c.vertex[i], c.edge[i]); }
-  void add(const Chain& c, const Foot& f) {
-    if (f.at_point) add(c, f.k);
-    else add(f.p, CellChains::kNoVertex, f.edge);
-  }
-
-  Chain chain(const std::vector<ExactPoint>& pts, const std::vector<std::uint32_t>& ids, const std::vector<std::uint32_t>& edges,
-              bool floor) const {
-    Chain c;
-    c.edge = edges;
-    for (std::size_t i = 0; i < pts.size(); ++i) {
-      if (ids[i] != CellChains::kNoVertex) {
-        c.pts.push_back(b.sweep_environment().vertex(ids[i]));
-      } else {
-        const auto iy = CGAL::to_interval(pts[i].y());
-        c.pts.emplace_back(CGAL::to_double(pts[i].x()), floor ? iy.second : iy.first);
-      }
-      c.vertex.push_back(ids[i]);
-    }
-    return c;
-  }
-
-  // Trapezoid of the cell whose x-range holds x strictly inside (x is not an event there).
-  std::uint32_t at(const BoustrophedonCell& cell, double x) const {
-    const auto& T = b.trapezoids().cells();
-    for (auto t : cell.trapezoids)
-      if (T[t].x_left <= x && x <= T[t].x_right) return t;
-    return cell.trapezoids.back();
-  }
-
-  Foot foot(const BoustrophedonCell& cell, const Chain& c, double x, bool floor) const {
-    auto it = std::upper_bound(c.pts.begin(), c.pts.end(), x, [](double v, const Point& p) { return v < p.x(); });
-    const std::size_t k = static_cast<std::size_t>(it - c.pts.begin()) - 1;  // x >= the chain's first abscissa
-    if (c.pts[k].x() == x) return {k, true, c.pts[k], c.edge[k]};
-    const auto& T = b.trapezoids().cells()[at(cell, x)];
-    const std::uint32_t e = floor ? T.floor : T.ceiling;
-    const auto iy = CGAL::to_interval(b.trapezoids().edge_y(e, x));
-    return {k, false, Point(x, floor ? iy.second : iy.first), e};
-  }
-
-  // Boundary following along a chain from one foot to another, through every chain point
-  // between them (walls on slice lines included).
-  void walk(const Chain& c, const Foot& from, const Foot& to) {
-    if (to.k > from.k) {
-      for (std::size_t i = from.k + 1; i <= to.k; ++i) add(c, i);
-    } else if (to.k < from.k) {
-      for (std::size_t i = from.at_point ? from.k - 1 : from.k; i > to.k; --i) add(c, i);
-    }
-    add(c, to);
-  }
-
-  std::vector<double> lap_positions(double xl, double xr) const {
-    std::vector<double> xs;
-    if (xr - xl <= 2 * r) {
-      xs.push_back(xl + (xr - xl) / 2);
-    } else {
-      for (double x = xl + r; x < xr - r; x += 2 * r) xs.push_back(x);
-      if (xs.empty() || xs.back() < xr - r) xs.push_back(xr - r);
-    }
-    return xs;
-  }
-
-  void cover(std::size_t index) {
-    const BoustrophedonCell& cell = b.cells()[index];
-    const CellChains ch = b.chains(index);
-    const Chain floor = chain(ch.floor, ch.floor_vertex, ch.floor_edge, true);
-    const Chain ceiling = chain(ch.ceiling, ch.ceiling_vertex, ch.ceiling_edge, false);
-    const auto xs = lap_positions(floor.pts.front().x(), floor.pts.back().x());
-    bool up = true;
-    Foot prev_lo{}, prev_hi{};
-    for (std::size_t k = 0; k < xs.size(); ++k) {
-      const Foot lo = foot(cell, floor, xs[k], true), hi = foot(cell, ceiling, xs[k], false);
-      if (k == 0) {
-        transit(up ? lo.p : hi.p);
-        if (up) add(floor, lo);
-        else add(ceiling, hi);
-      } else if (up) {
-        walk(floor, prev_lo, lo);  // the previous lap went down: follow the floor
-      } else {
-        walk(ceiling, prev_hi, hi);
-      }
-      if (up) add(ceiling, hi);
-      else add(floor, lo);
-      ++laps;
-      up = !up;
-      prev_lo = lo, prev_hi = hi;
-    }
-  }
-
-  // Travel to `to` through the trapezoids (waypoints only: the caller adds `to` itself,
-  // with what it knows about it).
-  void transit(const Point& to) {
-    if (path.empty() || path.back().p == to) return;
-    // Midpoints and centroids are collision-free as they are; shortening would cost O(n)
-    // exact visibility tests per point, on every transit.
-    const Plan p = planner.plan(path.back().p, to, false);
-    for (std::size_t i = 1; i + 1 < p.path.size(); ++i) add(p.path[i]);
-  }
-};
-
-// Nearest point of input edge e to p, exactly, rounded to a corner of its ulp box that lies
-// in closed free space (one does unless free space is thinner than an ulp there).
-std::optional<Point> onto_edge(const Environment& env, std::size_t e, const Point& p) {
-  const ExactPoint& a = env.exact_vertex(e);
-  const ExactPoint& c = env.exact_vertex(env.next(e));
-  const auto d = c - a;
-  ExactFT t = ((geometry::to_exact(p) - a) * d) / d.squared_length();
-  t = CGAL::max(ExactFT(0), CGAL::min(ExactFT(1), t));
-  const ExactPoint on = a + t * d;
-  const auto ix = CGAL::to_interval(on.x()), iy = CGAL::to_interval(on.y());
-  for (double x : {ix.first, ix.second})
-    for (double y : {iy.first, iy.second})
-      if (geometry::locate(env, Point(x, y)).in_free_space()) return Point(x, y);
-  return std::nullopt;
+  return score;
 }
 
-// Input-frame point for a sweep-frame path point: environment vertices exactly; a point on
-// an environment edge becomes the exact nearest point of the same input edge, rounded into
-// free space; other points (transit waypoints) are rotated back and, if rounding left free
-// space (a waypoint in a sliver trapezoid that hugs a wall), moved onto the nearest edge
-// the same way. Quarter turns map back exactly.
-Point to_input_point(const BoustrophedonDecomposition& b, const Environment& env, const PathPoint& q) {
-  if (q.vertex != CellChains::kNoVertex) return b.input_vertex(q.vertex);
-  const Point p = b.to_input(q.p);
-  if (std::fmod(b.angle(), 90.0) == 0) return p;
-  std::optional<Point> out;
-  if (q.edge != CellChains::kNoVertex) {
-    out = onto_edge(env, b.input_vertex_id(q.edge), p);
-  } else if (geometry::locate(env, p).in_free_space()) {
-    out = p;
-  } else {
-    std::size_t nearest = 0;
-    double best = INFINITY;
-    for (std::size_t e = 0; e < env.num_vertices(); ++e) {
-      const double d = CGAL::to_double(CGAL::squared_distance(p, geometry::Kernel::Segment_2(env.vertex(e), env.vertex(env.next(e)))));
-      if (d < best) best = d, nearest = e;
-    }
-    out = onto_edge(env, nearest, p);
-  }
-  if (out) return *out;
-  throw std::logic_error("coverage: path point " + geometry::format_point(p) + " rotated back from the sweep frame is outside free space");
-}
+struct Planning {
+  const Environment& env;        // the workspace
+  const ConfigurationSpace& cs;
+  const Environment& E;          // the component covered
+  const VisibilityIndex& index;  // of E
+  const VisibilityGraph& graph;  // of E
+  const CoverageOptions& o;
+  double w;
+  std::optional<Point> start;    // in E (the entry point when the start lies in the band)
+};
 
-CoverageReport cover_at(const Environment& env, const CoverageOptions& o, double angle) {
-  const BoustrophedonDecomposition b(env, angle);
-  const TrapezoidalPlanner planner(b.trapezoids());
-  // Start cell: the one holding the start point (in sweep coordinates), else cell 0.
-  std::uint32_t first = 0;
-  std::optional<Point> start_sweep;
-  if (o.start) {
-    const Point q = b.to_sweep(*o.start);
-    auto t = planner.locator().locate(q);
-    if (!t) throw InputError("start " + geometry::format_point(*o.start) + " is not in free space");
-    for (std::uint32_t k = 0; k < b.cells().size(); ++k)
-      for (auto tt : b.cells()[k].trapezoids)
-        if (tt == *t) first = k;
-    start_sweep = q;
-  }
-  // Depth-first order over the adjacency graph (6.2.1), neighbours left to right.
-  const auto adj = b.adjacency();
-  std::vector<std::uint32_t> order;
-  std::vector<char> seen(b.cells().size(), 0);
-  std::vector<std::uint32_t> stack{first};
-  while (!stack.empty()) {
-    const std::uint32_t k = stack.back();
-    stack.pop_back();
-    if (seen[k]) continue;
-    seen[k] = 1;
-    order.push_back(k);
-    for (auto it = adj[k].rbegin(); it != adj[k].rend(); ++it)
-      if (!seen[*it]) stack.push_back(*it);
-  }
-  Builder bl{b, planner, o.radius, {}, 0};
-  if (start_sweep) bl.add(*start_sweep);
-  for (auto k : order) bl.cover(k);
-
-  // Certified output (every segment in closed free space, exactly) — first in the sweep
-  // frame, where the path was built: a failure there is a bug.
-  const Environment& swept = b.sweep_environment();
-  for (std::size_t i = 0; i + 1 < bl.path.size(); ++i)
-    if (!geometry::visible(swept, bl.path[i].p, bl.path[i + 1].p))
-      throw std::logic_error("coverage: segment " + std::to_string(i) + " " + geometry::format_point(bl.path[i].p) + " -> " +
-                             geometry::format_point(bl.path[i + 1].p) + " leaves free space in the sweep frame");
-  // Then in the input frame. Quarter turns map back exactly; at other angles rounding can
-  // move a point hugging a wall by an ulp, and such a segment is replaced by a shortest
-  // path between its ends, which must itself pass.
-  std::vector<Point> input;
-  input.reserve(bl.path.size());
-  for (const auto& q : bl.path) input.push_back(to_input_point(b, env, q));
-  if (o.start) input.front() = *o.start;  // exactly where the robot stands
-  std::vector<Point> certified;
-  std::optional<TrapezoidalDecomposition> input_trap;
-  std::optional<TrapezoidalPlanner> input_planner;
-  std::size_t repaired = 0;
-  for (std::size_t i = 0; i < input.size(); ++i) {
-    if (i > 0 && !geometry::visible(env, certified.back(), input[i])) {
-      if (std::fmod(angle, 90.0) == 0)
-        throw std::logic_error("coverage: segment " + geometry::format_point(certified.back()) + " -> " + geometry::format_point(input[i]) +
-                               " leaves free space at a quarter-turn sweep");
-      if (!input_planner) input_trap.emplace(env), input_planner.emplace(*input_trap);
-      const Plan detour = input_planner->plan(certified.back(), input[i], true);
-      for (std::size_t j = 1; j + 1 < detour.path.size(); ++j) {
-        if (!geometry::visible(env, certified.back(), detour.path[j]))
-          throw std::logic_error("coverage: detour around a rounded segment leaves free space");
-        certified.push_back(detour.path[j]);
-      }
-      if (!geometry::visible(env, certified.back(), input[i]))
-        throw std::logic_error("coverage: detour around a rounded segment leaves free space");
-      ++repaired;
+CoverageReport plan_at(const Planning& P, const BoustrophedonDecomposition& b, double angle) {
+  const bool quarter = std::fmod(angle, 90.0) == 0;
+  std::optional<VisibilityIndex> sweep_index;
+  if (!quarter) sweep_index.emplace(b.sweep_environment());
+  const std::size_t n = b.cells().size();
+  // The four sweeps of every cell, in the input frame, certified.
+  std::vector<std::array<Polyline, 4>> sweeps(n);
+  std::vector<std::array<std::size_t, 4>> laps(n);
+  std::vector<std::vector<Sweep>> options(n);
+  std::size_t detours = 0;
+  for (std::size_t c = 0; c < n; ++c)
+    for (std::uint8_t v = 0; v < 4; ++v) {
+      const auto pts = detail::sweep_cell(b, c, P.w, v & 1, v & 2, &laps[c][v]);
+      sweeps[c][v] = detail::to_input_frame(b, P.E, pts, P.index, P.graph, sweep_index ? &*sweep_index : nullptr);
+      options[c].push_back({sweeps[c][v].points.front(), sweeps[c][v].points.back(), sweeps[c][v].length()});
     }
-    if (certified.empty() || certified.back() != input[i]) certified.push_back(input[i]);
-  }
+
+  // Transits: shortest paths in the component, or (the paper's planner) through the
+  // trapezoids of its decomposition.
+  std::optional<TrapezoidalDecomposition> trap;
+  std::optional<TrapezoidalPlanner> trap_planner;
+  if (P.o.transit == Transit::Decomposition) trap.emplace(P.E), trap_planner.emplace(*trap);
+  auto transit_path = [&](const Point& a, const Point& z) -> std::vector<Point> {
+    if (trap_planner) return trap_planner->plan(a, z, false).path;
+    auto sp = P.graph.shortest_path(a, z);
+    if (!sp.found) throw std::logic_error("coverage: no transit between two sweeps of one component");
+    return sp.points;
+  };
 
   CoverageReport rep;
+  std::vector<std::uint32_t> order;
+  std::vector<std::uint8_t> chosen;
+  if (P.o.order == CellOrder::Optimised) {
+    const auto cost = [&](const Point& a, const Point& z) {
+      if (a == z) return 0.0;
+      if (trap_planner) return trap_planner->plan(a, z, false).length;
+      const auto sp = P.graph.shortest_path(a, z);
+      return sp.found ? sp.length : std::numeric_limits<double>::infinity();
+    };
+    const SweepOrder so = order_sweeps(options, P.start, cost);
+    order = so.cells, chosen = so.sweeps;
+    rep.order_optimal = so.optimal, rep.order_lower_bound = so.lower_bound;
+  } else {
+    // 6.2.1: depth-first order of the adjacency graph from the start cell, every cell
+    // swept left to right, first lap up.
+    std::uint32_t first = 0;
+    if (P.start) {
+      const Point q = b.to_sweep(*P.start);
+      double best = std::numeric_limits<double>::infinity();
+      for (std::uint32_t c = 0; c < n; ++c) {
+        const auto poly = b.polygon(c);
+        if (CGAL::bounded_side_2(poly.begin(), poly.end(), *P.start, geometry::Kernel()) != CGAL::ON_UNBOUNDED_SIDE) {
+          first = c;
+          break;
+        }
+        const double d = dist(q, b.to_sweep(poly.front()));
+        if (d < best) best = d, first = c;
+      }
+    }
+    const auto adj = b.adjacency();
+    std::vector<char> seen(n, 0);
+    std::vector<std::uint32_t> stack{first};
+    while (!stack.empty()) {
+      const std::uint32_t k = stack.back();
+      stack.pop_back();
+      if (seen[k]) continue;
+      seen[k] = 1;
+      order.push_back(k);
+      for (auto it = adj[k].rbegin(); it != adj[k].rend(); ++it)
+        if (!seen[*it]) stack.push_back(*it);
+    }
+    chosen.assign(order.size(), 0);
+  }
+
+  // Assemble: start, then per cell a transit to its sweep's entry and the sweep.
+  Polyline path;
+  if (P.o.start) path.append(*P.o.start, Move::Transit);
+  if (P.start && *P.start != path.points.back()) path.append(*P.start, Move::Transit);
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const Polyline& s = sweeps[order[k]][chosen[k]];
+    if (!path.points.empty())
+      for (const Point& p : transit_path(path.points.back(), s.points.front())) path.append(p, Move::Transit);
+    path.append(s.points.front(), Move::Transit);
+    for (std::size_t i = 1; i < s.points.size(); ++i) path.append(s.points[i], s.moves[i - 1]);
+    detours += s.detours;
+    rep.laps += laps[order[k]][chosen[k]];
+  }
+  // Certified output: every segment in the component (exact walk) and, with a footprint,
+  // at distance >= r from every obstacle (exact arithmetic).
+  for (std::size_t i = 0; i + 1 < path.points.size(); ++i) {
+    const Point &a = path.points[i], &z = path.points[i + 1];
+    const bool inside = (i == 0 && P.o.start && *P.o.start != *P.start) ? P.cs.admits(a, z) : P.index.visible(a, z);
+    const bool clear = P.cs.radius() == 0 || P.cs.admits(a, z);
+    if (!inside || !clear) {
+      char where[160];
+      std::snprintf(where, sizeof where, "(%.17g, %.17g) -> (%.17g, %.17g)", a.x(), a.y(), z.x(), z.y());
+      throw std::logic_error("coverage: segment " + std::to_string(i) + " " + where + " failed certification (" +
+                             (inside ? "closer than r to an obstacle" : "outside the configuration space polygon") + ")");
+    }
+  }
+  rep.path = std::move(path.points);
+  rep.moves = std::move(path.moves);
+  rep.rounding_detours = detours;
   rep.angle = angle;
   rep.cell_order = order;
-  rep.cells = b.cells().size();
+  rep.sweeps = chosen;
+  rep.cells = n;
   rep.critical_points = b.critical_slices().size();
-  rep.laps = bl.laps;
-  rep.rounding_detours = repaired;
-  rep.path = std::move(certified);
-  for (std::size_t i = 0; i + 1 < rep.path.size(); ++i)
-    rep.length += std::sqrt(CGAL::to_double(CGAL::squared_distance(rep.path[i], rep.path[i + 1])));
-  for (std::size_t i = 1; i + 1 < rep.path.size(); ++i)
-    rep.turns += geometry::orientation(rep.path[i - 1], rep.path[i], rep.path[i + 1]) != 0;
-  rep.diameter = min_disc_diameter(env.vertices());
-  for (std::size_t e = 0; e < env.num_vertices(); ++e)
-    rep.perimeter += std::sqrt(CGAL::to_double(CGAL::squared_distance(env.vertex(e), env.vertex(env.next(e)))));
-  const double D = rep.diameter, r = o.radius;
-  rep.bound = D * D / (2 * r) + 4 * D * static_cast<double>(rep.critical_points + env.num_holes()) + 5 * rep.perimeter - 4 * D;
+  double heading_prev = NAN;
+  for (std::size_t i = 0; i + 1 < rep.path.size(); ++i) {
+    const double len = dist(rep.path[i], rep.path[i + 1]);
+    rep.length += len;
+    if (rep.moves[i] == Move::Transit) rep.transit_length += len;
+    const double h = std::atan2(rep.path[i + 1].y() - rep.path[i].y(), rep.path[i + 1].x() - rep.path[i].x());
+    if (!std::isnan(heading_prev)) {
+      double d = std::fabs(h - heading_prev) * 180 / std::numbers::pi;
+      if (d > 180) d = 360 - d;
+      rep.rotation_deg += d;
+      rep.turns += d > 1.0;  // heading changes over a degree, as coverage planners count them
+    }
+    heading_prev = h;
+  }
   return rep;
 }
 
 }  // namespace
 
 CoverageReport plan_coverage(const Environment& env, const CoverageOptions& o) {
-  if (!(o.radius > 0) || !std::isfinite(o.radius)) throw InputError("--width: the tool width must be a positive number");
-  if (o.start && !geometry::locate(env, *o.start).in_free_space())
-    throw InputError("start " + geometry::format_point(*o.start) + " is not in free space");
-  if (o.angle_deg) return cover_at(env, o, *o.angle_deg);
-  // Candidates: the axes and the directions of the longest edges (sweeping along an edge
-  // direction avoids slivers along it); keep the shortest path.
-  std::vector<std::pair<double, double>> edges;  // length, angle
-  for (std::size_t e = 0; e < env.num_vertices(); ++e) {
-    const Point &a = env.vertex(e), &b = env.vertex(env.next(e));
-    const double deg = std::fmod(std::atan2(b.y() - a.y(), b.x() - a.x()) * 180 / std::numbers::pi + 360.0, 180.0);
-    edges.emplace_back(std::hypot(b.x() - a.x(), b.y() - a.y()), deg);
+  const double r = o.robot_radius;
+  if (!(r >= 0) || !std::isfinite(r)) throw InputError("robot radius: must be a finite number >= 0");
+  if (!(o.width >= 0) || !std::isfinite(o.width)) throw InputError("--width: the tool width must be a positive number");
+  const double w = o.width > 0 ? o.width : 2 * r;
+  if (!(w > 0)) throw InputError("--width: the tool width must be a positive number (or give the robot a radius: it defaults to 2r)");
+  const ConfigurationSpace cs(env, r);
+  if (cs.components().empty())
+    throw InputError("a robot of radius " + geometry::format_number(r) + " fits nowhere in this environment");
+  // The component covered: the start's, else the largest.
+  std::size_t comp = 0;
+  std::optional<Point> entry;
+  if (o.start) {
+    if (!geometry::locate(env, *o.start).in_free_space())
+      throw InputError("start " + geometry::format_point(*o.start) + " is not in free space");
+    if (!cs.admits(*o.start))
+      throw InputError("start " + geometry::format_point(*o.start) + " is " + geometry::format_number(cs.clearance(*o.start)) +
+                       " from an obstacle: a robot of radius " + geometry::format_number(r) + " does not fit there");
+    const auto in = cs.entry(*o.start);
+    if (!in)
+      throw InputError("start " + geometry::format_point(*o.start) + " is within " + geometry::format_number(cs.approximation_error()) +
+                       " of the configuration space's boundary and cannot be joined to it: move it inwards");
+    comp = in->component, entry = in->at;
   }
-  std::sort(edges.rbegin(), edges.rend());
-  std::set<double> candidates{0.0, 90.0};
-  for (std::size_t i = 0; i < edges.size() && candidates.size() < 10; ++i) candidates.insert(std::round(edges[i].second * 1e6) / 1e6);
+  const Environment& E = cs.components()[comp];
+  const VisibilityIndex index(E);
+  const VisibilityGraph graph(index);
+  const Planning P{env, cs, E, index, graph, o, w, entry};
+
+  std::vector<double> angles;
+  if (o.angle_deg) {
+    angles.push_back(*o.angle_deg);
+  } else {
+    // Candidates: the axes and the directions of the longest edges (sweeping along an edge
+    // avoids slivers along it); the two that need the fewest laps and cells are planned.
+    std::vector<std::pair<double, double>> edges;  // length, angle
+    for (std::size_t e = 0; e < env.num_vertices(); ++e) {
+      const Point &a = env.vertex(e), &b = env.vertex(env.next(e));
+      const double deg = std::fmod(std::atan2(b.y() - a.y(), b.x() - a.x()) * 180 / std::numbers::pi + 360.0, 180.0);
+      edges.emplace_back(std::hypot(b.x() - a.x(), b.y() - a.y()), deg);
+    }
+    std::sort(edges.rbegin(), edges.rend());
+    std::set<double> candidates{0.0, 90.0};
+    for (std::size_t i = 0; i < edges.size() && candidates.size() < 10; ++i) candidates.insert(std::round(edges[i].second * 1e6) / 1e6);
+    std::vector<std::pair<double, double>> scored;
+    for (double a : candidates) {
+      try {
+        scored.emplace_back(direction_score(BoustrophedonDecomposition(E, a), w), a);
+      } catch (const InputError&) {
+        // this direction made the rotated environment invalid: skip it
+      }
+    }
+    std::sort(scored.begin(), scored.end());
+    for (std::size_t i = 0; i < scored.size() && i < 2; ++i) angles.push_back(scored[i].second);
+    if (angles.empty()) throw InputError("coverage: no sweep direction gave a valid decomposition");
+  }
   std::optional<CoverageReport> best;
-  for (double a : candidates) {
-    try {
-      CoverageReport r = cover_at(env, o, a);
-      if (!best || r.length < best->length) best = std::move(r);
-    } catch (const InputError&) {
-      // this direction made the rotated environment invalid: skip it
+  for (double a : angles) {
+    CoverageReport rep = plan_at(P, BoustrophedonDecomposition(E, a), a);
+    if (!best || rep.length < best->length) best = std::move(rep);
+  }
+  CoverageReport rep = std::move(*best);
+  rep.width = w, rep.robot_radius = r;
+  rep.target_area = E.area();
+  for (std::size_t k = 0; k < cs.components().size(); ++k)
+    if (k != comp) rep.unreachable_area += cs.components()[k].area();
+  rep.cspace_error = cs.approximation_error();
+  rep.diameter = min_disc_diameter(env.vertices());
+  for (std::size_t e = 0; e < env.num_vertices(); ++e) rep.perimeter += dist(env.vertex(e), env.vertex(env.next(e)));
+  const double D = rep.diameter, half = w / 2;
+  rep.bound = D * D / (2 * half) + 4 * D * static_cast<double>(rep.critical_points + env.num_holes()) + 5 * rep.perimeter - 4 * D;
+  return rep;
+}
+
+CoverageMetrics measure_coverage(const Environment& env, const CoverageReport& rep, double cell) {
+  CoverageMetrics m;
+  if (rep.path.size() < 2) return m;
+  const double w = rep.width, half = w / 2;
+  const ConfigurationSpace cs(env, rep.robot_radius);
+  const auto comp = cs.component_of(rep.path.front()) ? cs.component_of(rep.path.front()) : cs.component_of(rep.path[1]);
+  if (!comp) return m;
+  const Environment& E = cs.components()[*comp];
+  const VisibilityIndex index(E);
+  const auto box = E.bbox();
+  // w/8 by default, coarser where that would take more than 4 million samples.
+  if (!(cell > 0)) cell = std::max(w / 8, std::sqrt((box.xmax() - box.xmin()) * (box.ymax() - box.ymin()) / 4e6));
+  const std::size_t nx = static_cast<std::size_t>(std::ceil((box.xmax() - box.xmin()) / cell)) + 1;
+  const std::size_t ny = static_cast<std::size_t>(std::ceil((box.ymax() - box.ymin()) / cell)) + 1;
+  if (nx * ny > 50'000'000) throw InputError("coverage metrics: the raster would need more than 5e7 samples; give a coarser cell");
+  auto centre = [&](std::size_t i, std::size_t j) { return Point(box.xmin() + (static_cast<double>(i) + 0.5) * cell, box.ymin() + (static_cast<double>(j) + 0.5) * cell); };
+  std::vector<char> target(nx * ny, 0);
+  std::vector<std::uint32_t> visits(nx * ny, 0), last(nx * ny, UINT32_MAX);
+  std::vector<char> covered(nx * ny, 0);
+  for (std::size_t j = 0; j < ny; ++j)
+    for (std::size_t i = 0; i < nx; ++i) target[j * nx + i] = index.locate(centre(i, j)).in_free_space();
+  // Segment by segment: a sample within w/2 of segment s is covered; it gets a new visit
+  // when it comes within w/2 - cell/2 of s without having been that close to s - 1 (the
+  // margin keeps samples exactly halfway between two laps, covered by both to the last
+  // bit, from counting as overlap). Row by row, the samples within distance h of a segment
+  // form an interval of x (the capsule around it is convex): its two end discs and the band
+  // between them, each cut by the row's line.
+  auto capsule_row = [](const Point& a, const Point& b, double h, double y, double& lo, double& hi) {
+    lo = INFINITY, hi = -INFINITY;
+    for (const Point& c : {a, b}) {
+      const double dy = y - c.y();
+      if (dy * dy <= h * h) {
+        const double dx = std::sqrt(h * h - dy * dy);
+        lo = std::min(lo, c.x() - dx), hi = std::max(hi, c.x() + dx);
+      }
+    }
+    const double vx = b.x() - a.x(), vy = b.y() - a.y(), L = std::hypot(vx, vy);
+    if (L == 0) return;
+    const double ux = vx / L, uy = vy / L, nx_ = -uy, ny_ = ux;
+    // |n.(P - a)| <= h and 0 <= u.(P - a) <= L for P = (x, y): each linear in x.
+    double blo = -INFINITY, bhi = INFINITY;
+    auto clip = [&](double coef, double rest, double min_v, double max_v) {  // min_v <= coef x + rest <= max_v
+      if (coef == 0) {
+        if (rest < min_v || rest > max_v) blo = INFINITY, bhi = -INFINITY;
+        return;
+      }
+      double x1 = (min_v - rest) / coef, x2 = (max_v - rest) / coef;
+      if (x1 > x2) std::swap(x1, x2);
+      blo = std::max(blo, x1), bhi = std::min(bhi, x2);
+    };
+    clip(nx_, nx_ * -a.x() + ny_ * (y - a.y()), -h, h);
+    clip(ux, ux * -a.x() + uy * (y - a.y()), 0, L);
+    if (blo <= bhi) lo = std::min(lo, blo), hi = std::max(hi, bhi);
+  };
+  const double inner = std::max(0.0, half - cell / 2);
+  for (std::size_t seg = 0; seg + 1 < rep.path.size(); ++seg) {
+    const Point &a = rep.path[seg], &b = rep.path[seg + 1];
+    const std::uint32_t stamp = static_cast<std::uint32_t>(seg);
+    const long j0 = std::max(0L, static_cast<long>(std::floor((std::min(a.y(), b.y()) - half - box.ymin()) / cell)));
+    const long j1 = std::min<long>(static_cast<long>(ny) - 1, static_cast<long>(std::ceil((std::max(a.y(), b.y()) + half - box.ymin()) / cell)));
+    for (long j = j0; j <= j1; ++j) {
+      const double y = box.ymin() + (static_cast<double>(j) + 0.5) * cell;
+      double lo, hi, ilo, ihi;
+      capsule_row(a, b, half, y, lo, hi);
+      if (!(lo <= hi)) continue;
+      capsule_row(a, b, inner, y, ilo, ihi);
+      const long i0 = std::max(0L, static_cast<long>(std::ceil((lo - box.xmin()) / cell - 0.5)));
+      const long i1 = std::min<long>(static_cast<long>(nx) - 1, static_cast<long>(std::floor((hi - box.xmin()) / cell - 0.5)));
+      for (long i = i0; i <= i1; ++i) {
+        const std::size_t id = static_cast<std::size_t>(j) * nx + static_cast<std::size_t>(i);
+        covered[id] = 1;
+        const double x = box.xmin() + (static_cast<double>(i) + 0.5) * cell;
+        if (x < ilo || x > ihi) continue;
+        if (last[id] == UINT32_MAX || (last[id] + 1 != stamp && last[id] != stamp)) ++visits[id];
+        last[id] = stamp;
+      }
     }
   }
-  if (!best) throw InputError("coverage: no sweep direction gave a valid decomposition");
-  return *best;
+  std::size_t total = 0, once = 0, twice = 0;
+  for (std::size_t id = 0; id < target.size(); ++id) {
+    if (!target[id]) continue;
+    ++total, once += covered[id], twice += visits[id] > 1;
+  }
+  m.samples = total;
+  m.covered_fraction = total ? static_cast<double>(once) / static_cast<double>(total) : 0;
+  m.overlap = total ? static_cast<double>(twice) / static_cast<double>(total) : 0;
+  const double area = E.area();
+  m.efficiency = area > 0 ? rep.length / (area / w) : 0;
+  return m;
 }
 
 }  // namespace preimage::decompose

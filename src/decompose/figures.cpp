@@ -30,27 +30,58 @@ void draw_decomposition(render::SvgCanvas& c, const TrapezoidalDecomposition& d,
 }
 
 void draw_boustrophedon(render::SvgCanvas& c, const BoustrophedonDecomposition& b) {
-  std::vector<Point> centres;
-  for (std::size_t i = 0; i < b.cells().size(); ++i) {
-    const auto poly = b.polygon(i);
-    c.polygon(poly, render::Style{kCellFills[i % 5], "#9aa0a6", 0.8, 0.75, ""}, "cell " + std::to_string(i));
-    double sx = 0, sy = 0;
-    for (auto& p : poly) sx += p.x(), sy += p.y();
-    centres.emplace_back(sx / static_cast<double>(poly.size()), sy / static_cast<double>(poly.size()));
-  }
+  for (std::size_t i = 0; i < b.cells().size(); ++i)
+    c.polygon(b.polygon(i), render::Style{kCellFills[i % 5], "#9aa0a6", 0.8, 0.75, ""}, "cell " + std::to_string(i));
   const render::Style slice{"none", "#5f6368", 1.4, 1.0, "4 3"}, node{"#202124", "#ffffff", 1.0, 1.0, ""},
       edge{"none", "#a142f4", 1.4, 0.9, ""};
-  std::vector<Point> nodes;
+  std::vector<Point> nodes;  // sweep frame
   for (const auto& s : b.critical_slices()) {
-    const Point a = b.to_input(Point(s.x, CGAL::to_double(s.y_low))), z = b.to_input(Point(s.x, CGAL::to_double(s.y_high)));
-    if (a != z) c.segment(a, z, slice);
-    nodes.emplace_back((a.x() + z.x()) / 2, (a.y() + z.y()) / 2);
+    const Point a(s.x, CGAL::to_double(s.y_low)), z(s.x, CGAL::to_double(s.y_high));
+    if (a != z) c.segment(b.to_input(a), b.to_input(z), slice);
+    nodes.emplace_back(s.x, (a.y() + z.y()) / 2);
   }
-  for (std::size_t i = 0; i < b.cells().size(); ++i)
-    c.polyline({nodes[b.cells()[i].left_slice], centres[i], nodes[b.cells()[i].right_slice]}, edge);
-  for (const auto& n : nodes) c.point(n, 3.5, node);
+  // Each Reeb edge inside its cell: from its left node along the slice to the middle of the
+  // cell's left side, through the middles of the cell at every event between its
+  // trapezoids, to the right side and along that slice to the right node.
+  const auto& T = b.trapezoids().cells();
+  auto mid = [&](std::uint32_t t, double x) {
+    return Point(x, (CGAL::to_double(b.trapezoids().edge_y(T[t].floor, x)) + CGAL::to_double(b.trapezoids().edge_y(T[t].ceiling, x))) / 2);
+  };
+  for (std::size_t i = 0; i < b.cells().size(); ++i) {
+    const auto& ts = b.cells()[i].trapezoids;
+    std::vector<Point> route{nodes[b.cells()[i].left_slice]};
+    for (auto t : ts) route.push_back(mid(t, T[t].x_left));
+    route.push_back(mid(ts.back(), T[ts.back()].x_right));
+    route.push_back(nodes[b.cells()[i].right_slice]);
+    for (auto& p : route) p = b.to_input(p);
+    c.polyline(route, edge, "Reeb graph edge: cell " + std::to_string(i));
+  }
+  for (const auto& n : nodes) c.point(b.to_input(n), 3.5, node);
   c.legend("critical slices", slice);
   c.legend("Reeb graph: critical points joined through their cells", edge);
+}
+
+void draw_coverage(render::SvgCanvas& c, const CoverageReport& rep) {
+  if (rep.path.size() < 2) return;
+  const render::Style lap{"none", "#d93025", 1.6, 0.9, ""}, follow{"none", "#1a73e8", 1.6, 0.9, ""}, transit{"none", "#188038", 2.2, 0.95, "6 4"};
+  // Runs of one kind of move as one polyline each.
+  std::size_t i = 0;
+  while (i < rep.moves.size()) {
+    std::size_t j = i;
+    while (j < rep.moves.size() && rep.moves[j] == rep.moves[i]) ++j;
+    const std::vector<Point> run(rep.path.begin() + static_cast<long>(i), rep.path.begin() + static_cast<long>(j + 1));
+    const auto& st = rep.moves[i] == Move::Lap ? lap : rep.moves[i] == Move::Follow ? follow : transit;
+    c.polyline(run, st);
+    i = j;
+  }
+  c.legend("laps along the slice", lap);
+  c.legend("boundary following between laps", follow);
+  c.legend("transits (shortest collision-free paths)", transit);
+  c.arrows(rep.path, "#202124", 90, 4);
+  const render::Style start{"#ffffff", "#202124", 2.5, 1.0, ""}, end{"#202124", "#202124", 1.0, 1.0, ""};
+  c.point(rep.path.front(), 6, start, "start");
+  c.point(rep.path.back(), 5, end, "end");
+  c.legend("start (ring) and end (dot)", start);
 }
 
 }  // namespace preimage::decompose

@@ -2,11 +2,14 @@
 #include <preimage/decompose/planner.hpp>
 
 #include <preimage/error.hpp>
+#include <preimage/geometry/configuration_space.hpp>
 #include <preimage/geometry/queries.hpp>
+#include <preimage/geometry/visibility_graph.hpp>
 
 #include <cmath>
 #include <limits>
 #include <queue>
+#include <stdexcept>
 
 namespace preimage::decompose {
 
@@ -93,6 +96,62 @@ Plan TrapezoidalPlanner::plan(const Point& start, const Point& goal, bool shorte
     out.path.swap(s);
   }
   for (std::size_t k = 0; k + 1 < out.path.size(); ++k) out.length += gap(out.path[k], out.path[k + 1]);
+  out.found = true;
+  return out;
+}
+
+RobotPlan plan_path(const Environment& env, const Point& start, const Point& goal, double radius, PlanMethod method,
+                    bool shorten) {
+  const geometry::ConfigurationSpace cs(env, radius);
+  auto join = [&](const Point& p, const char* what) {
+    const auto loc = geometry::locate(env, p);
+    if (!loc.in_free_space())
+      throw InputError(std::string(what) + " " + geometry::format_point(p) + " is not in free space: it lies " +
+                       (loc.kind == geometry::Location::Kind::InHole ? "inside " + env.ring_name(loc.index + 1) : "outside " + env.ring_name(0)));
+    if (!cs.admits(p))
+      throw InputError(std::string(what) + " " + geometry::format_point(p) + " is " + geometry::format_number(cs.clearance(p)) +
+                       " from an obstacle: a robot of radius " + geometry::format_number(radius) + " does not fit there");
+    const auto in = cs.entry(p);
+    if (!in)
+      throw InputError(std::string(what) + " " + geometry::format_point(p) + " is within " + geometry::format_number(cs.approximation_error()) +
+                       " of the configuration space's boundary and cannot be joined to it: move it inwards");
+    return *in;
+  };
+  const auto s = join(start, "start"), g = join(goal, "goal");
+  RobotPlan out;
+  if (s.component != g.component) {
+    out.why_not = "start and goal are in different components of the configuration space: a robot of radius " +
+                  geometry::format_number(radius) + " cannot pass between them";
+    return out;
+  }
+  const Environment& E = cs.components()[s.component];
+  const geometry::VisibilityIndex index(E);
+  std::vector<Point> middle;
+  if (method == PlanMethod::Shortest) {
+    const geometry::VisibilityGraph graph(index);
+    const auto sp = graph.shortest_path(s.at, g.at);
+    if (!sp.found) throw std::logic_error("plan: no path inside one component of the configuration space");
+    middle = sp.points;
+  } else {
+    const TrapezoidalDecomposition d(E);
+    const TrapezoidalPlanner planner(d);
+    const Plan p = planner.plan(s.at, g.at, shorten);
+    if (!p.found) throw std::logic_error("plan: the cell graph of one component is not connected");
+    middle = p.path, out.decomposition_cells = d.cells().size(), out.cells_crossed = p.cells.size();
+  }
+  if (start != s.at) out.path.push_back(start);
+  for (const Point& p : middle)
+    if (out.path.empty() || out.path.back() != p) out.path.push_back(p);
+  if (goal != out.path.back()) out.path.push_back(goal);
+  // Certified: inside the component (exact walk) or, for the joins from the thin band, and
+  // for every segment with a footprint, r away from every obstacle (exact arithmetic).
+  for (std::size_t i = 0; i + 1 < out.path.size(); ++i) {
+    const Point &a = out.path[i], &z = out.path[i + 1];
+    const bool join_segment = (i == 0 && start != s.at) || (i + 2 == out.path.size() && goal != g.at);
+    if (!(join_segment ? cs.admits(a, z) : index.visible(a, z)) || (radius > 0 && !cs.admits(a, z)))
+      throw std::logic_error("plan: segment " + geometry::format_point(a) + " -> " + geometry::format_point(z) + " failed certification");
+    out.length += std::sqrt(CGAL::to_double(CGAL::squared_distance(a, z)));
+  }
   out.found = true;
   return out;
 }

@@ -22,39 +22,48 @@ double dist(const Point& a, const Point& b) { return std::hypot(a.x() - b.x(), a
 
 VisibilityGraph::VisibilityGraph(const VisibilityIndex& index) : index_(&index) {
   const Environment& env = index.environment();
-  const std::size_t n = env.num_vertices();
-  for (std::uint32_t v = 0; v < n; ++v)
+  for (std::uint32_t v = 0; v < env.num_vertices(); ++v)
     if (env.is_reflex(v)) reflex_.push_back(v);
-  // Each reflex vertex's neighbours from its own visibility polygon (the relation is
-  // symmetric, so both ends find the edge), in parallel over the vertices.
-  std::vector<std::vector<std::uint32_t>> nb(reflex_.size());
-  auto work = [&](std::size_t begin, std::size_t step) {
-    for (std::size_t i = begin; i < reflex_.size(); i += step) {
-      const std::uint32_t u = reflex_[i];
-      for (std::uint32_t w : index.visible_vertices(env.vertex(u)))
-        if (w != u && env.is_reflex(w) && tangent_at(env, u, env.vertex(w)) && tangent_at(env, w, env.vertex(u)))
-          nb[i].push_back(w);
-    }
-  };
-  const std::size_t threads = std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, 8);
-  if (reflex_.size() < 64 || threads == 1) {
-    work(0, 1);
-  } else {
-    std::vector<std::thread> pool;
-    for (std::size_t k = 0; k < threads; ++k) pool.emplace_back(work, k, threads);
-    for (auto& th : pool) th.join();
-  }
-  offset_.assign(n + 1, 0);
-  for (std::size_t i = 0; i < reflex_.size(); ++i) offset_[reflex_[i] + 1] = static_cast<std::uint32_t>(nb[i].size());
-  for (std::size_t v = 0; v < n; ++v) offset_[v + 1] += offset_[v];
-  adj_.resize(offset_.back());
-  for (std::size_t i = 0; i < reflex_.size(); ++i) std::copy(nb[i].begin(), nb[i].end(), adj_.begin() + offset_[reflex_[i]]);
+  adj_.resize(env.num_vertices());
+}
+
+std::vector<std::uint32_t> VisibilityGraph::compute_neighbours(std::uint32_t u) const {
+  const Environment& env = environment();
+  std::vector<std::uint32_t> out;
+  if (!env.is_reflex(u)) return out;
+  for (std::uint32_t w : index_->visible_vertices(env.vertex(u)))
+    if (w != u && env.is_reflex(w) && tangent_at(env, u, env.vertex(w)) && tangent_at(env, w, env.vertex(u))) out.push_back(w);
+  return out;
 }
 
 std::span<const std::uint32_t> VisibilityGraph::neighbours(std::uint32_t v) const {
-  return {adj_.data() + offset_[v], offset_[v + 1] - offset_[v]};
+  {
+    std::lock_guard lock(mutex_);
+    if (adj_[v]) return *adj_[v];
+  }
+  auto list = std::make_unique<const std::vector<std::uint32_t>>(compute_neighbours(v));
+  std::lock_guard lock(mutex_);
+  if (!adj_[v]) adj_[v] = std::move(list);  // another thread may have been first: same list
+  return *adj_[v];
 }
 
+void VisibilityGraph::build_all() const {
+  const std::size_t threads = reflex_.size() < 64 ? 1 : std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, 8);
+  auto work = [&](std::size_t begin) {
+    for (std::size_t i = begin; i < reflex_.size(); i += threads) neighbours(reflex_[i]);
+  };
+  if (threads == 1) return work(0);
+  std::vector<std::thread> pool;
+  for (std::size_t k = 0; k < threads; ++k) pool.emplace_back(work, k);
+  for (auto& th : pool) th.join();
+}
+
+std::size_t VisibilityGraph::num_edges() const {
+  build_all();
+  std::size_t twice = 0;
+  for (auto v : reflex_) twice += neighbours(v).size();
+  return twice / 2;
+}
 
 std::vector<std::uint32_t> VisibilityGraph::tangent_reflex_from(const Point& q) const {
   const Environment& env = environment();

@@ -76,4 +76,27 @@ void draw_visibility(SvgCanvas& c, const geometry::VisibilityPolygon& v, const s
   c.legend("free edges (occlusion gaps)", free);
 }
 
+void draw_route(SvgCanvas& c, const std::vector<Point>& path, const std::string& label, const std::string& colour, double stroke,
+                const std::string& dash) {
+  if (path.empty()) return;
+  const Style line{"none", colour, stroke, 0.95, dash};
+  c.polyline(path, line, label);
+  c.arrows(path, colour);
+  c.legend(label, line);
+  const Style start{"#ffffff", colour, 2.5, 1.0, ""}, end{colour, "#202124", 1.5, 1.0, ""};
+  c.point(path.front(), 6, start, label + ": start");
+  c.point(path.back(), 5, end, label + ": end");
+  c.legend(label + " start (ring) and end (dot)", start);
+}
+
+void draw_configuration_space(SvgCanvas& c, const geometry::ConfigurationSpace& cs) {
+  const Style fill{"#e6f4ea", "#81c995", 1.0, 0.9, "3 2"};
+  for (const auto& comp : cs.components()) {
+    std::vector<std::vector<Point>> rings;
+    for (std::size_t r = 0; r < comp.num_rings(); ++r) rings.push_back(comp.ring(r));
+    c.rings(rings, fill, "configuration space of a robot of radius " + geometry::format_number(cs.radius()));
+  }
+  c.legend("where the robot's centre may go (radius " + geometry::format_number(cs.radius()) + ")", fill);
+}
+
 }  // namespace preimage::render

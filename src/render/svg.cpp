@@ -4,6 +4,7 @@
 #include <preimage/error.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 
@@ -108,6 +109,69 @@ void SvgCanvas::label(const Point& p, const std::string& text, double size, cons
            num(size) + "\" fill=\"" + escape(colour) + "\">" + escape(text) + "</text>\n";
 }
 
+void SvgCanvas::arrows(const std::vector<Point>& pts, const std::string& colour, double spacing, double size) {
+  double carry = spacing / 2;
+  for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
+    const double x0 = margin_ + (pts[i].x() - world_.xmin()) * scale_, y0 = margin_ + (world_.ymax() - pts[i].y()) * scale_;
+    const double x1 = margin_ + (pts[i + 1].x() - world_.xmin()) * scale_, y1 = margin_ + (world_.ymax() - pts[i + 1].y()) * scale_;
+    const double len = std::hypot(x1 - x0, y1 - y0);
+    if (len == 0) continue;
+    const double ux = (x1 - x0) / len, uy = (y1 - y0) / len;
+    for (double t = carry; t < len; t += spacing) {
+      const double cx = x0 + ux * t, cy = y0 + uy * t;
+      body_ += "<polygon points=\"" + num(cx + ux * size) + "," + num(cy + uy * size) + " " + num(cx - ux * size - uy * size * 0.7) + "," +
+               num(cy - uy * size + ux * size * 0.7) + " " + num(cx - ux * size + uy * size * 0.7) + "," + num(cy - uy * size - ux * size * 0.7) +
+               "\" fill=\"" + escape(colour) + "\"/>\n";
+    }
+    carry = std::fmod(carry - len, spacing);
+    if (carry < 0) carry += spacing;
+  }
+}
+
+namespace {
+// A round tick spacing: 1, 2 or 5 times a power of ten, about `want` ticks over the range.
+double tick_step(double range, double want) {
+  const double raw = range / want, p = std::pow(10.0, std::floor(std::log10(raw)));
+  for (double m : {1.0, 2.0, 5.0})
+    if (m * p >= raw) return m * p;
+  return 10 * p;
+}
+std::string tick_text(double v, double step) {
+  char b[32];
+  const int digits = step >= 1 ? 0 : static_cast<int>(std::ceil(-std::log10(step)));
+  std::snprintf(b, sizeof b, "%.*f", digits, std::fabs(v) < step * 1e-9 ? 0.0 : v);
+  return b;
+}
+constexpr double kAxisLeft = 44, kAxisBottom = 34;
+}  // namespace
+
+std::string SvgCanvas::axes() const {
+  std::string out;
+  const double x_left = margin_, x_right = width_ - margin_, y_top = margin_, y_bottom = height_ - margin_;
+  const std::string line = " stroke=\"#555\" stroke-width=\"1\"";
+  const std::string text = " font-family=\"sans-serif\" font-size=\"10\" fill=\"#444\"";
+  const double wx = world_.xmax() - world_.xmin(), wy = world_.ymax() - world_.ymin();
+  const double sx = tick_step(wx, 6), sy = tick_step(wy, std::max(2.0, 6 * wy / std::max(wx, 1e-300)));
+  out += "<line x1=\"" + num(x_left) + "\" y1=\"" + num(height_) + "\" x2=\"" + num(x_right) + "\" y2=\"" + num(height_) + "\"" + line + "/>\n";
+  for (double v = std::ceil(world_.xmin() / sx) * sx; v <= world_.xmax() + sx * 1e-9; v += sx) {
+    const double x = margin_ + (v - world_.xmin()) * scale_;
+    out += "<line x1=\"" + num(x) + "\" y1=\"" + num(height_) + "\" x2=\"" + num(x) + "\" y2=\"" + num(height_ + 4) + "\"" + line + "/>";
+    out += "<text x=\"" + num(x) + "\" y=\"" + num(height_ + 14) + "\" text-anchor=\"middle\"" + text + ">" + tick_text(v, sx) + "</text>\n";
+  }
+  out += "<line x1=\"-2\" y1=\"" + num(y_top) + "\" x2=\"-2\" y2=\"" + num(y_bottom) + "\"" + line + "/>\n";
+  for (double v = std::ceil(world_.ymin() / sy) * sy; v <= world_.ymax() + sy * 1e-9; v += sy) {
+    const double y = margin_ + (world_.ymax() - v) * scale_;
+    out += "<line x1=\"-6\" y1=\"" + num(y) + "\" x2=\"-2\" y2=\"" + num(y) + "\"" + line + "/>";
+    out += "<text x=\"-8\" y=\"" + num(y + 3) + "\" text-anchor=\"end\"" + text + ">" + tick_text(v, sy) + "</text>\n";
+  }
+  // Scale bar: one tick step, labelled with its length.
+  const double bar = sx * scale_;
+  out += "<line x1=\"" + num(x_right - bar) + "\" y1=\"" + num(height_ + 26) + "\" x2=\"" + num(x_right) + "\" y2=\"" + num(height_ + 26) +
+         "\" stroke=\"#222\" stroke-width=\"3\"/><text x=\"" + num(x_right - bar - 6) + "\" y=\"" + num(height_ + 30) + "\" text-anchor=\"end\"" +
+         text + ">" + tick_text(sx, sx) + " units</text>\n";
+  return out;
+}
+
 void SvgCanvas::legend(const std::string& text, const Style& s) {
   for (auto& [t, st] : legend_)
     if (t == text) return;  // one entry per meaning, however many times it is drawn
@@ -116,10 +180,13 @@ void SvgCanvas::legend(const std::string& text, const Style& s) {
 
 std::string SvgCanvas::str() const {
   const double legend_h = legend_.empty() ? 0 : 8 + 18.0 * static_cast<double>(legend_.size());
-  std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + num(width_) + "\" height=\"" +
-                    num(height_ + legend_h) + "\" viewBox=\"0 0 " + num(width_) + " " + num(height_ + legend_h) + "\">\n";
+  const double W = width_ + kAxisLeft, H = height_ + kAxisBottom + legend_h;
+  std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + num(W) + "\" height=\"" + num(H) + "\" viewBox=\"0 0 " +
+                    num(W) + " " + num(H) + "\">\n<rect x=\"0\" y=\"0\" width=\"" + num(W) + "\" height=\"" + num(H) + "\" fill=\"#ffffff\"/>\n";
+  out += "<g transform=\"translate(" + num(kAxisLeft) + ",0)\">\n";
   out += body_;
-  double y = height_ + 4;
+  out += axes();
+  double y = height_ + kAxisBottom + 4;
   for (auto& [text, s] : legend_) {
     Style sw = s;
     out += "<rect x=\"" + num(margin_) + "\" y=\"" + num(y + 2) + "\" width=\"22\" height=\"10\"" + style_attr(sw) + "/>";
@@ -127,7 +194,7 @@ std::string SvgCanvas::str() const {
            escape(text) + "</text>\n";
     y += 18;
   }
-  out += "</svg>\n";
+  out += "</g>\n</svg>\n";
   return out;
 }
 

@@ -91,7 +91,9 @@ void check_cells(const Environment& env, double angle, const std::string& what) 
 // (d) every segment of the coverage path lies in closed free space (exact, O(n) per
 // segment, independent of the library's own certification).
 void check_cover(const Environment& env, double width, std::optional<double> angle, const std::string& what) {
-  const auto rep = decompose::plan_coverage(env, {width / 2, std::nullopt, angle});
+  decompose::CoverageOptions o;
+  o.width = width, o.angle_deg = angle;
+  const auto rep = decompose::plan_coverage(env, o);
   ASSERT_GE(rep.path.size(), 2u) << what;
   for (std::size_t i = 0; i + 1 < rep.path.size(); ++i)
     ASSERT_TRUE(geometry::visible(env, rep.path[i], rep.path[i + 1]))
@@ -155,9 +157,11 @@ TEST(BoustrophedonCells, RandomRectilinearEnvironments) {
 TEST(BoustrophedonCells, RandomGeneralEnvironments) {
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
     const auto env = geometry::generators::random_environment(60 + 10 * seed, seed % 4, seed);
+    const auto box = env.bbox();
+    const double w = 0.03 * std::max(box.xmax() - box.xmin(), box.ymax() - box.ymin());
     for (double a : kAngles) {
       check_cells(env, a, "random seed " + std::to_string(seed) + " at " + std::to_string(a));
-      check_cover(env, 0.08, a, "random seed " + std::to_string(seed) + " at " + std::to_string(a));
+      check_cover(env, w, a, "random seed " + std::to_string(seed) + " at " + std::to_string(a));
     }
   }
   for (std::uint64_t seed = 1; seed <= 6; ++seed) {
@@ -186,5 +190,16 @@ TEST(BoustrophedonCells, HouseExpoFloorPlans) {
       for (double a : {0.0, 90.0, 45.0}) check_cover(env, w, a, std::string(name) + " width " + std::to_string(w) + " at " + std::to_string(a));
       check_cover(env, w, std::nullopt, std::string(name) + " width " + std::to_string(w) + " auto");
     }
+  }
+}
+
+TEST(BoustrophedonCells, StackedVerticalVerticesFixture) {
+  const auto s = scene::load_scene(std::string(PREIMAGE_FIXTURES) + "/scenes/stacked_vertical_vertices.json");
+  const Environment& env = *s.environment;
+  const BoustrophedonDecomposition b(env);
+  EXPECT_EQ(b.cells().size(), b.critical_slices().size() + env.num_holes() - 1);
+  for (double a : kAngles) {
+    check_cells(env, a, "stacked vertical vertices at " + std::to_string(a));
+    check_cover(env, 0.3, a, "stacked vertical vertices at " + std::to_string(a));
   }
 }

@@ -11,6 +11,7 @@
 #include <queue>
 
 #include "support/cgal_oracle.hpp"
+#include "support/path_oracle.hpp"
 
 using namespace preimage::geometry;
 
@@ -28,26 +29,6 @@ std::vector<Environment> environments() {
 
 double dist(const Point& a, const Point& b) { return std::hypot(a.x() - b.x(), a.y() - b.y()); }
 
-// Dijkstra over s, t and every vertex, edges wherever the exact edge scan says visible.
-double brute_shortest(const Environment& env, const Point& s, const Point& t) {
-  std::vector<Point> nodes{s, t};
-  for (std::size_t v = 0; v < env.num_vertices(); ++v) nodes.push_back(env.vertex(v));
-  const std::size_t n = nodes.size();
-  std::vector<double> d(n, std::numeric_limits<double>::infinity());
-  std::vector<char> done(n, 0);
-  d[0] = 0;
-  for (std::size_t it = 0; it < n; ++it) {
-    std::size_t u = n;
-    for (std::size_t k = 0; k < n; ++k)
-      if (!done[k] && (u == n || d[k] < d[u])) u = k;
-    if (u == n || std::isinf(d[u])) break;
-    done[u] = 1;
-    if (u == 1) break;
-    for (std::size_t k = 0; k < n; ++k)
-      if (!done[k] && d[u] + dist(nodes[u], nodes[k]) < d[k] && visible(env, nodes[u], nodes[k])) d[k] = d[u] + dist(nodes[u], nodes[k]);
-  }
-  return d[1];
-}
 
 }  // namespace
 
@@ -98,7 +79,7 @@ TEST(VisibilityGraph, ShortestPathsMatchDijkstraOnTheFullGraph) {
       for (std::size_t j = i + 1; j < qs.size(); j += 2) {
         const auto p = g.shortest_path(qs[i].p, qs[j].p);
         ASSERT_TRUE(p.found);
-        const double want = brute_shortest(env, qs[i].p, qs[j].p);
+        const double want = preimage::testing::brute_shortest_path(env, qs[i].p, qs[j].p);
         ASSERT_NEAR(p.length, want, 1e-9 * (1 + want)) << format_point(qs[i].p) << " -> " << format_point(qs[j].p);
         double len = 0;
         for (std::size_t k = 0; k + 1 < p.points.size(); ++k) {

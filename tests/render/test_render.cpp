@@ -3,6 +3,8 @@
 #include <preimage/render/figures.hpp>
 #include <preimage/render/html.hpp>
 
+#include <cstdio>
+
 using namespace preimage;
 
 namespace {
@@ -20,7 +22,27 @@ TEST(Svg, MapsWorldToPixelsWithYUp) {
   const std::string svg = c.str();
   EXPECT_NE(svg.find("cx=\"10.00\" cy=\"10.00\""), std::string::npos) << svg;   // top-left corner
   EXPECT_NE(svg.find("cx=\"110.00\" cy=\"60.00\""), std::string::npos) << svg;  // bottom-right corner
-  EXPECT_NE(svg.find("height=\"70.00\""), std::string::npos);
+  EXPECT_NE(svg.find("height=\"104.00\""), std::string::npos) << svg;  // 70 for the drawing, 34 for the x axis
+  // Axes in world units along the left and bottom edges, and a scale bar.
+  EXPECT_NE(svg.find(">10</text>"), std::string::npos) << svg;
+  EXPECT_NE(svg.find(">4</text>"), std::string::npos) << svg;
+  EXPECT_NE(svg.find(" units</text>"), std::string::npos) << svg;
+}
+
+TEST(Svg, ArrowsPointTheWayThePathRuns) {
+  render::SvgCanvas c(CGAL::Bbox_2(0, 0, 10, 5), 120, 10);
+  c.arrows({geometry::Point(0, 1), geometry::Point(10, 1)}, "#000", 30, 5);
+  const std::string svg = c.str();
+  // Rightward: each arrowhead's tip (first point) lies right of its base.
+  std::size_t at = svg.find("<polygon points=\""), arrows = 0;
+  while (at != std::string::npos) {
+    double tx, ty, bx, by;
+    ASSERT_EQ(std::sscanf(svg.c_str() + at + 17, "%lf,%lf %lf,%lf", &tx, &ty, &bx, &by), 4);
+    EXPECT_GT(tx, bx);
+    ++arrows;
+    at = svg.find("<polygon points=\"", at + 1);
+  }
+  EXPECT_EQ(arrows, 3u);  // 100 px of line: at 15, 45 and 75 px
 }
 
 TEST(Svg, EscapesTextAndDeduplicatesLegend) {

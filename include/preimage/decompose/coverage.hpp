@@ -1,47 +1,90 @@
 // SPDX-License-Identifier: Apache-2.0
-// Coverage paths on the boustrophedon decomposition (Choset et al., 6.2.1 and 6.2.5).
+// Coverage paths on the boustrophedon decomposition (Choset et al., 6.2.1 and 6.2.5) for a
+// disc robot that a real base can drive.
 //
-// The cells are visited in depth-first order of the adjacency graph from the start
-// cell. Inside a cell the tool runs laps along the slice (floor to ceiling) at spacing
-// w = 2r, joined by boundary-following moves along the floor or ceiling; between cells it
-// travels on collision-free paths planned in the trapezoidal decomposition. Every free
-// point farther than r from the boundary ends up within r of the path: a lap spans the
-// whole cell height, and the horizontal segment from such a point to its nearest lap
-// stays in free space, hence in the cell.
+// The robot's centre moves in the configuration space (free space eroded by its radius r,
+// geometry::ConfigurationSpace); the decomposition is of that space. Inside a cell the
+// tool runs laps along the slice at spacing w (the tool width, 2r by default), joined by
+// boundary-following moves along the cell's floor or ceiling chain. Every cell can be swept
+// four ways (from its left or right end, first lap up or down); which sweep of each cell and
+// in what order is a generalised travelling-salesman path over the cells (exact for up to
+// 12 cells, a local search with a lower bound beyond), with the shortest collision-free
+// transit between one sweep's end and the next one's start (geometry::VisibilityGraph). The
+// paper's exhaustive walk (depth-first order, transits through the trapezoids) remains
+// available for comparison.
+//
+// Every point laps reach that is farther than w/2 from the configuration space boundary is
+// within w/2 of a lap: the slice segment from it to its nearest lap stays in the cell.
+// Every segment is certified before the path is returned: inside the polygonal
+// configuration space with exact predicates, and at distance >= r from every obstacle
+// with exact arithmetic; a failure is a bug (std::logic_error), never a printed path.
 #pragma once
 #include <preimage/decompose/boustrophedon.hpp>
 
 #include <optional>
+#include <string>
 
 namespace preimage::decompose {
 
+enum class CellOrder { Optimised, DepthFirst };  // GTSP over sweeps, or 6.2.1's exhaustive walk
+enum class Transit { Shortest, Decomposition };  // visibility-graph shortest paths, or trapezoid midpoints
+
 struct CoverageOptions {
-  double radius;                    // tool radius r; laps are 2r apart
-  std::optional<Point> start;       // default: the first vertex of the first cell's floor
-  std::optional<double> angle_deg;  // sweep direction; none = try candidates, keep the shortest
+  double width = 0;                  // tool width w: laps are w apart; 0 means 2 * robot_radius
+  double robot_radius = 0;           // r: the robot's centre stays r away from every obstacle
+  std::optional<Point> start;        // default: where the first sweep begins
+  std::optional<double> angle_deg;   // sweep direction; none = try candidates, keep the shortest
+  CellOrder order = CellOrder::Optimised;
+  Transit transit = Transit::Shortest;
 };
+
+/// What a path segment is doing (for figures and metrics).
+enum class Move : std::uint8_t { Lap, Follow, Transit };
 
 struct CoverageReport {
-  // Input coordinates; every segment is certified in closed free space with exact
-  // predicates before it is returned. At angles that are not quarter turns the path is
-  // built in the rotated (sweep) frame; a point rounded out of free space on the way back
-  // is moved a few ulps in, and a segment that rounding made graze a wall is replaced by a
-  // shortest path between its ends (counted in rounding_detours).
+  // Input coordinates, certified (see above). At angles that are not quarter turns the path
+  // is built in the rotated sweep frame; points rounded out on the way back are moved a few
+  // ulps in and a segment that rounding made graze a wall is replaced by a shortest path
+  // (counted in rounding_detours; never at quarter turns).
   std::vector<Point> path;
+  std::vector<Move> moves;  // per segment: path[i] -> path[i + 1]
   std::size_t rounding_detours = 0;
-  double angle = 0;         // sweep direction used
-  double length = 0;
+  double angle = 0;          // sweep direction used
+  double width = 0, robot_radius = 0;
   std::size_t laps = 0, turns = 0, cells = 0, critical_points = 0;
-  double diameter = 0;        // Δ: diameter of the smallest disc containing the environment
-  double perimeter = 0;       // P_total: boundary length, obstacles included
-  double bound = 0;           // Δ²/(2r) + 4Δ(N_cp + N_ob) + 5 P_total − 4Δ
-  std::vector<std::uint32_t> cell_order;  // depth-first order the cells were covered in
+  double length = 0, transit_length = 0, rotation_deg = 0;  // rotation: sum of heading changes
+  std::vector<std::uint32_t> cell_order;  // cells in the order covered
+  std::vector<std::uint8_t> sweeps;       // per covered cell: 0..3 (bit 0: from the right end, bit 1: first lap down)
+  bool order_optimal = false;             // exact GTSP solution (small instances)
+  double order_lower_bound = 0;           // lower bound on the path length for any order and sweeps
+  // The configuration space actually covered: the component holding the start.
+  double target_area = 0;        // its area (polygonal, certified inside the exact one)
+  double unreachable_area = 0;   // area of the other components (the robot cannot get there)
+  double cspace_error = 0;       // how far the polygonal boundary may lie inside the exact one
+  // Chapter's bound for the exhaustive walk: D^2/(2r) + 4D(N_cp + N_ob) + 5 P_total - 4D.
+  double diameter = 0, perimeter = 0, bound = 0;
 };
 
-/// Throws InputError for r <= 0 or a start outside free space.
+/// Throws InputError for a width or radius that is not positive and finite (the width may be
+/// 0 when the radius is positive), a start the robot does not fit at, or a robot that fits
+/// nowhere. Throws std::logic_error if a segment fails certification (a bug).
 CoverageReport plan_coverage(const Environment& env, const CoverageOptions& options);
 
-/// Diameter of the smallest enclosing disc of the points (Welzl's algorithm, in double:
+/// Rasterised quality of a coverage path (floating point: a measurement, not a decision):
+/// the target is the configuration space component the path runs in, sampled on a square
+/// grid of side `cell` (default w/8, coarser where that would exceed 4 million samples); a
+/// sample is covered when within w/2 of the path, and
+/// covered twice when the path comes within w/2 - cell/2 of it on two separate visits (the
+/// margin keeps samples exactly halfway between neighbouring laps from counting).
+struct CoverageMetrics {
+  double covered_fraction = 0;  // covered samples / target samples
+  double overlap = 0;           // samples covered twice or more / target samples
+  double efficiency = 0;        // length / (target area / w): 1 is a perfect boustrophedon without transits
+  std::size_t samples = 0;
+};
+CoverageMetrics measure_coverage(const Environment& env, const CoverageReport& report, double cell = 0);
+
+/// Diameter of the smallest disc containing the points (Welzl's algorithm, in double:
 /// it only enters the reported bound, never a decision).
 double min_disc_diameter(std::vector<Point> pts);
 

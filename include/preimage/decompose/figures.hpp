@@ -2,6 +2,7 @@
 // Figures of the decompose module, on the shared SVG canvas.
 #pragma once
 #include <preimage/decompose/boustrophedon.hpp>
+#include <preimage/decompose/coverage.hpp>
 #include <preimage/decompose/planner.hpp>
 #include <preimage/render/svg.hpp>
 
@@ -15,5 +16,9 @@ void draw_decomposition(render::SvgCanvas& canvas, const TrapezoidalDecompositio
 /// Boustrophedon cells, critical slices and the Reeb graph (nodes at slice midpoints,
 /// one edge per cell drawn through the cell's centre).
 void draw_boustrophedon(render::SvgCanvas& canvas, const BoustrophedonDecomposition& b);
+
+/// A coverage path: laps, boundary following and transits in three styles, arrows along
+/// it, start and end markers.
+void draw_coverage(render::SvgCanvas& canvas, const CoverageReport& report);
 
 }  // namespace preimage::decompose

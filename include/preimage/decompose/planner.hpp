@@ -6,6 +6,7 @@
 #include <preimage/decompose/cell_locator.hpp>
 
 #include <optional>
+#include <string>
 
 namespace preimage::decompose {
 
@@ -19,6 +20,7 @@ struct Plan {
 class TrapezoidalPlanner {
  public:
   explicit TrapezoidalPlanner(const TrapezoidalDecomposition& d);
+  TrapezoidalPlanner(TrapezoidalDecomposition&&) = delete;  // keeps a pointer to the decomposition
   /// Throws InputError when start or goal is not in free space (naming which and where).
   /// `found` is false when the cell graph does not connect them (the free space of a valid
   /// Environment is connected, so today that means start and goal were both rejected first).
@@ -33,5 +35,25 @@ class TrapezoidalPlanner {
   const TrapezoidalDecomposition* d_;
   CellLocator locator_;
 };
+
+enum class PlanMethod { Shortest, Trapezoidal };
+
+struct RobotPlan {
+  bool found = false;
+  std::vector<Point> path;            // start ... goal, certified
+  double length = 0;
+  std::size_t decomposition_cells = 0, cells_crossed = 0;  // Trapezoidal only
+  std::string why_not;                // when not found
+};
+
+/// A collision-free path for a disc robot of radius r (r = 0: a point) from start to goal:
+/// the shortest one (visibility graph of the configuration space), or through the
+/// trapezoidal decomposition of the configuration space (6.1; `shorten` pulls the string).
+/// Every segment is certified: inside the polygonal configuration space (exact) and at
+/// distance >= r from every obstacle (exact arithmetic). Throws InputError when start or
+/// goal is not a place the robot fits; `found` is false, with the reason, when they are in
+/// different components (a passage narrower than 2r between them).
+RobotPlan plan_path(const Environment& env, const Point& start, const Point& goal, double radius,
+                    PlanMethod method = PlanMethod::Shortest, bool shorten = true);
 
 }  // namespace preimage::decompose

@@ -14,14 +14,20 @@
 #pragma once
 #include <preimage/geometry/visibility.hpp>
 
+#include <memory>
+#include <mutex>
 #include <span>
 
 namespace preimage::geometry {
 
 class VisibilityGraph {
  public:
-  /// Builds every edge (each reflex vertex's visibility polygon, both cores).
+  /// Edges are computed on demand (a vertex's on first use, from its visibility polygon)
+  /// and kept: a search touches only the vertices near its path. Thread-safe.
   explicit VisibilityGraph(const VisibilityIndex& index);
+  VisibilityGraph(VisibilityIndex&&) = delete;  // keeps a pointer to the index
+  /// Computes every vertex's edges now, on all cores.
+  void build_all() const;
 
   const VisibilityIndex& index() const { return *index_; }
   const Environment& environment() const { return index_->environment(); }
@@ -29,7 +35,8 @@ class VisibilityGraph {
   const std::vector<std::uint32_t>& reflex_vertices() const { return reflex_; }
   /// Neighbours of reflex vertex v in the graph (environment ids); empty for others.
   std::span<const std::uint32_t> neighbours(std::uint32_t v) const;
-  std::size_t num_edges() const { return adj_.size() / 2; }
+  /// Number of edges (builds them all).
+  std::size_t num_edges() const;
 
   struct Path {
     bool found = false;
@@ -46,10 +53,13 @@ class VisibilityGraph {
   // Reflex vertices visible from q whose segment to q is tangent at the vertex.
   std::vector<std::uint32_t> tangent_reflex_from(const Point& q) const;
 
+  std::vector<std::uint32_t> compute_neighbours(std::uint32_t v) const;
+
   const VisibilityIndex* index_;
   std::vector<std::uint32_t> reflex_;
-  std::vector<std::uint32_t> offset_;  // CSR over all environment vertices
-  std::vector<std::uint32_t> adj_;
+  // Per environment vertex: its neighbours once computed (lists never change after).
+  mutable std::vector<std::unique_ptr<const std::vector<std::uint32_t>>> adj_;
+  mutable std::mutex mutex_;
 };
 
 /// Is the segment from reflex vertex v to point x tangent to the boundary at v (both

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Standard figures: a scene with its slots, a triangulation, a visibility polygon.
 #pragma once
+#include <preimage/geometry/configuration_space.hpp>
 #include <preimage/geometry/triangulation.hpp>
 #include <preimage/geometry/visibility.hpp>
 #include <preimage/render/svg.hpp>
@@ -16,5 +17,13 @@ void draw_triangulation(SvgCanvas& canvas, const geometry::Triangulation& t);
 /// Filled polygon, solid edges along walls, dashed free (occlusion) edges, the query point.
 void draw_visibility(SvgCanvas& canvas, const geometry::VisibilityPolygon& v, const std::string& colour = "#f4b400",
                      const std::string& label = "visibility polygon (thick edges lie on walls)");
+
+/// A robot's route: the polyline with arrows showing the way it runs, and start and end
+/// markers (each with a legend entry).
+void draw_route(SvgCanvas& canvas, const std::vector<Point>& path, const std::string& label, const std::string& colour,
+                double stroke_px = 2.5, const std::string& dash = "");
+/// The configuration space of a disc robot: its components shaded, the band it cannot
+/// reach along the walls left plain.
+void draw_configuration_space(SvgCanvas& canvas, const geometry::ConfigurationSpace& cs);
 
 }  // namespace preimage::render

@@ -32,9 +32,14 @@ class SvgCanvas {
   void segment(const Point& a, const Point& b, const Style& style, const std::string& title = "");
   void point(const Point& p, double radius_px, const Style& style, const std::string& title = "");
   void label(const Point& p, const std::string& text, double size_px = 12, const std::string& colour = "#222");
+  /// Small arrowheads along a polyline, one every `spacing_px` of drawn length, pointing the
+  /// way it runs.
+  void arrows(const std::vector<Point>& pts, const std::string& colour, double spacing_px = 70, double size_px = 5);
   /// Adds a legend entry drawn with the given style.
   void legend(const std::string& text, const Style& style);
 
+  /// The SVG: the drawing with axes in world units along its left and bottom edges (ticks
+  /// and a scale bar), and the legend below it.
   std::string str() const;
   void save(const std::string& path) const;
 
@@ -42,6 +47,7 @@ class SvgCanvas {
 
  private:
   std::string px(const Point& p) const;
+  std::string axes() const;
   std::string style_attr(const Style& s) const;
   CGAL::Bbox_2 world_;
   double scale_, margin_, width_, height_;
