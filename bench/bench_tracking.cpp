@@ -48,7 +48,7 @@ void full(benchmark::State& st) {
   const Case& c = scan_case(static_cast<std::size_t>(st.range(0)));
   for (auto _ : st) {
     TrackStep s = track(c.scan, c.params, c.target);
-    benchmark::DoNotOptimize(s.command);
+    benchmark::DoNotOptimize(s.control.command);
   }
   st.counters["iterations/s"] = benchmark::Counter(static_cast<double>(st.iterations()), benchmark::Counter::kIsRate);
 }
@@ -76,8 +76,8 @@ void stage_gradient(benchmark::State& st) {
 }
 void stage_command(benchmark::State& st) {
   const Case& c = scan_case(static_cast<std::size_t>(st.range(0)));
-  const Vec2 g{0.3, -0.2};
-  for (auto _ : st) benchmark::DoNotOptimize(risk_command(g, c.target, c.params.control));
+  const RiskAverage risk{0.5, Vec2{0.3, -0.2}};
+  for (auto _ : st) benchmark::DoNotOptimize(risk_control(risk, c.target, c.params.control));
 }
 void ept_brute(benchmark::State& st) {
   const Case& c = scan_case(static_cast<std::size_t>(st.range(0)));

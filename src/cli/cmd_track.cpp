@@ -3,17 +3,23 @@
 #include "common.hpp"
 
 #include <preimage/error.hpp>
+#include <preimage/tracking/evaluation.hpp>
 #include <preimage/tracking/figures.hpp>
 #include <preimage/tracking/replay.hpp>
 #include <preimage/tracking/simulation.hpp>
 
+#include <unistd.h>
 #include <zlib.h>
 
+#include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
+#include <thread>
 
 namespace preimage::cli {
 namespace {
@@ -22,6 +28,42 @@ using nlohmann::json;
 using namespace preimage::tracking;
 
 json vec_json(const Vec2& v) { return json::array({v.x, v.y}); }
+json point_xy(const geometry::Point& p) { return json::array({p.x(), p.y()}); }
+
+// Progress on stderr for work that has run more than a second, when stderr is a terminal.
+class Progress {
+ public:
+  explicit Progress(std::string what) : what_(std::move(what)), tty_(isatty(2) != 0) {}
+  Progress(const Progress&) = delete;
+  Progress& operator=(const Progress&) = delete;
+  ~Progress() {
+    if (drawn_) std::fprintf(stderr, "\r\033[K");
+  }
+  void operator()(std::size_t done, std::size_t total) {
+    if (!tty_) return;
+    const double t = std::chrono::duration<double>(Clock::now() - start_).count();
+    if (t < 1 || (t - last_ < 0.25 && done < total)) return;
+    last_ = t;
+    const double left = done ? t * static_cast<double>(total - done) / static_cast<double>(done) : 0;
+    std::fprintf(stderr, "\r\033[K%s: %zu of %zu (%.0f%%), %.0f s, about %.0f s left", what_.c_str(), done, total,
+                 100.0 * static_cast<double>(done) / static_cast<double>(std::max<std::size_t>(total, 1)), t, left);
+    drawn_ = true;
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  std::string what_;
+  bool tty_;
+  Clock::time_point start_ = Clock::now();
+  double last_ = -1;
+  bool drawn_ = false;
+};
+
+json risk_json(const EdgeRisk& r, const RiskParams& rp, const Point& corner, const Vec2& gradient) {
+  return {{"corner", point_xy(corner)}, {"r_o", r.r_o}, {"h", r.h}, {"d", r.d}, {"s", r.s}, {"c", rp.c}, {"m", rp.m},
+          {"exit", r.exit == EdgeRisk::Exit::Corner ? "corner" : "perpendicular"}, {"phi", r.phi},
+          {"gradient", vec_json(gradient)}};
+}
 
 void run_ept(const std::string& file, const std::string& observer, const std::string& target, bool as_json,
              const std::string& svg, double radius, int m) {
@@ -45,39 +87,37 @@ void run_ept(const std::string& file, const std::string& observer, const std::st
   rp.delta = radius > 0 ? radius : (sc.tracking ? sc.tracking->target_radius : rp.delta);
   rp.m = m;
   const auto risks = escape_risks(map, tree, rp);
-  const Vec2 rec = recursive_average(tree, risks), plain = plain_average(risks);
+  const RiskAverage rec = recursive_average(tree, risks), plain = plain_average(risks);
   if (!svg.empty()) {
-    const Vec2 d1 = rec * -1.0, d2 = plain * -1.0;
+    const Vec2 d1 = rec.gradient * -1.0, d2 = plain.gradient * -1.0;
     std::ofstream(svg) << escape_path_tree_figure(&env, map, tree, &d1, &d2);
   }
   if (as_json) {
     json j;
-    j["observer"] = points_json({o})[0];
-    j["target"] = points_json({t})[0];
+    j["observer"] = point_xy(o);
+    j["target"] = point_xy(t);
     json V = json::array();
-    for (std::size_t e = 0; e < map.size(); ++e)
-      V.push_back({{"from", points_json({map.vertices[e]})[0]}, {"kind", to_string(map.edges[e])}});
+    for (std::size_t e = 0; e < map.size(); ++e) V.push_back({{"from", point_xy(map.vertices[e])}, {"kind", to_string(map.edges[e])}});
     j["visibility_polygon"] = V;
     json nodes = json::array();
     for (auto& nd : tree.nodes)
-      nodes.push_back({{"at", points_json({nd.at})[0]}, {"parent", nd.parent == kNone ? json(nullptr) : json(nd.parent)},
-                       {"distance", nd.distance}});
+      nodes.push_back({{"at", point_xy(nd.at)}, {"parent", nd.parent == kNone ? json(nullptr) : json(nd.parent)}, {"distance", nd.distance}});
     j["nodes"] = nodes;
     json paths = json::array();
     for (std::size_t i = 0; i < tree.paths.size(); ++i) {
       const auto& p = tree.paths[i];
       json pj = {{"edge", p.edge}, {"kind", to_string(p.kind)}, {"node", p.node}, {"sde", p.length},
-                 {"escape_point", points_json({p.escape_point})[0]}, {"polyline", points_json(tree.polyline(i))}};
+                 {"escape_point", point_xy(p.escape_point)}, {"polyline", points_json(tree.polyline(i))}};
       for (auto& r : risks)
-        if (r.path == i)
-          pj["risk"] = {{"phi", r.phi}, {"r_o", r.r_o}, {"h", r.h}, {"gradient", vec_json(r.gradient)},
-                        {"exit", r.exit == EdgeRisk::Exit::Corner ? "corner" : "perpendicular"}};
+        if (r.path == i) pj["risk"] = risk_json(r, rp, map.vertices[map.corner[p.edge]], r.gradient);
       paths.push_back(pj);
     }
     j["escape_paths"] = paths;
     j["sde"] = tree.shortest == kNone ? json(nullptr) : json(tree.sde());
-    j["gradient_recursive"] = vec_json(rec);
-    j["gradient_plain"] = vec_json(plain);
+    j["phi_recursive"] = rec.phi;
+    j["gradient_recursive"] = vec_json(rec.gradient);
+    j["phi_plain"] = plain.phi;
+    j["gradient_plain"] = vec_json(plain.gradient);
     print_json(j);
     return;
   }
@@ -92,29 +132,96 @@ void run_ept(const std::string& file, const std::string& observer, const std::st
     std::cout << "\n";
   }
   if (tree.shortest != kNone) std::cout << "SDE(q^t, q^o) = " << tree.sde() << " through edge " << tree.paths[tree.shortest].edge << "\n";
-  std::cout << "-grad phi: recursive average (" << -rec.x << ", " << -rec.y << "), plain average (" << -plain.x << ", "
-            << -plain.y << ")\n";
+  std::cout << "-grad phi: recursive average (" << -rec.gradient.x << ", " << -rec.gradient.y << "), plain average ("
+            << -plain.gradient.x << ", " << -plain.gradient.y << ")\n";
 }
 
-SimulationParams sim_params(const std::string& policy, const std::string& strategy, std::size_t steps, std::uint64_t seed,
-                            double fov, const std::string& aggregation) {
+struct SimOptions {
+  std::string policy = "scripted", strategy = "risk", aggregation = "recursive";
+  std::size_t steps = 300;
+  std::uint64_t seed = 1;
+  double fov = 360, accel = 0, alpha = 0, speed_ratio = 0.5;
+  std::size_t lookahead_steps = 5, headings = 16;
+};
+
+SimulationParams sim_params(const SimOptions& o) {
   SimulationParams p;
-  p.policy = parse_target_policy(policy);
-  p.strategy = parse_strategy(strategy);
-  p.steps = steps;
-  p.seed = seed;
-  if (fov != 360 && fov != 180) throw InputError("--fov: expected 180 or 360, got " + std::to_string(fov));
-  p.laser.fov = fov * M_PI / 180;
-  p.laser.beams = fov == 360 ? 360 : 361;
-  p.tracker.control.reverse = fov == 360;
-  if (aggregation == "plain") p.tracker.aggregation = Aggregation::Plain;
-  else if (aggregation != "recursive") throw InputError("--aggregation: expected recursive or plain, got \"" + aggregation + "\"");
+  p.policy = parse_target_policy(o.policy);
+  p.strategy = parse_strategy(o.strategy);
+  p.steps = o.steps;
+  p.seed = o.seed;
+  set_sensor(p, o.fov);
+  p.accel = o.accel;
+  p.alpha = o.alpha;
+  p.speed_ratio = o.speed_ratio;
+  p.lookahead_steps = o.lookahead_steps;
+  p.lookahead_headings = o.headings;
+  if (o.aggregation == "plain") p.tracker.aggregation = Aggregation::Plain;
+  else if (o.aggregation != "recursive") throw InputError("--aggregation: expected recursive or plain, got \"" + o.aggregation + "\"");
   return p;
 }
 
-void run_simulate(const std::string& file, const SimulationParams& p, const std::string& svg, bool as_json) {
+// One line of `simulate --log`: the step's state, TRACK's tree and risk terms (world
+// frame), the command, and the gradient checked on the exact map at the true positions.
+json step_json(const StepRecord& r, const SimulationParams& p, const geometry::VisibilityIndex& index, double radius) {
+  const Pose& o = r.observer;
+  json j = {{"step", r.step}, {"time", static_cast<double>(r.step) * p.dt},
+            {"observer", {o.position.x(), o.position.y(), o.heading}}, {"target", point_xy(r.target)},
+            {"visible", r.visible}, {"estimate", point_xy(r.estimate)}, {"tracked", r.track->tracked},
+            {"command", {r.command.v, r.command.omega}}, {"velocity", {r.velocity.v, r.velocity.omega}}};
+  if (r.track->tracked) {
+    const TrackStep& ts = *r.track;
+    json nodes = json::array(), paths = json::array(), risks = json::array();
+    for (const auto& nd : ts.tree.nodes)
+      nodes.push_back({{"at", point_xy(to_world(o, nd.at))}, {"parent", nd.parent == kNone ? json(nullptr) : json(nd.parent)}});
+    for (const auto& pa : ts.tree.paths)
+      paths.push_back({{"edge", pa.edge}, {"kind", to_string(pa.kind)}, {"node", pa.node}, {"sde", pa.length},
+                       {"escape_point", point_xy(to_world(o, pa.escape_point))}});
+    RiskParams rp = p.tracker.risk;
+    rp.delta = radius;
+    for (const auto& rk : ts.risks) {
+      json rj = risk_json(rk, rp, to_world(o, ts.map.vertices[ts.map.corner[ts.tree.paths[rk.path].edge]]), to_world(o, rk.gradient));
+      rj["path"] = rk.path;
+      risks.push_back(rj);
+    }
+    j["tree"] = {{"nodes", nodes}, {"paths", paths}};
+    j["risks"] = risks;
+    j["phi_bar"] = ts.risk.phi;
+    j["gradient"] = vec_json(to_world(o, ts.risk.gradient));
+    j["descent"] = vec_json(to_world(o, ts.control.descent));
+    j["pull"] = vec_json(to_world(o, ts.control.pull));
+  }
+  json exact = nullptr;
+  try {
+    RiskParams rp = p.tracker.risk;
+    rp.delta = radius;
+    const RiskCheck c = check_risk_gradient(index, o.position, r.target, rp, p.tracker.aggregation, 1e-6);
+    exact = {{"phi_bar", c.risk.phi}, {"gradient", vec_json(c.risk.gradient)}, {"difference", vec_json(c.difference)},
+             {"stable", c.stable}};
+  } catch (const InputError&) {
+    // the target is not inside the exact V (lost), or V is degenerate at the observer
+  }
+  j["exact"] = exact;
+  return j;
+}
+
+void run_simulate(const std::string& file, const SimulationParams& params, const std::string& svg, const std::string& log,
+                  bool as_json) {
   const scene::Scene sc = scene::load_scene(file);
   const TrackingScenario s = TrackingScenario::from_scene(sc);
+  SimulationParams p = params;
+  std::ofstream log_out;
+  std::optional<geometry::VisibilityIndex> index;
+  if (!log.empty()) {
+    log_out.open(log);
+    if (!log_out) throw InputError("--log " + log + ": cannot open for writing");
+    index.emplace(*s.environment);
+  }
+  Progress progress("simulate");
+  p.on_step = [&](const StepRecord& r) {
+    if (log_out.is_open()) log_out << step_json(r, p, *index, s.target.radius).dump() << "\n";
+    progress(r.step + 1, p.steps);
+  };
   const SimulationResult r = simulate(s, p);
   if (!svg.empty()) std::ofstream(svg) << tracking_run_figure(*s.environment, r, to_string(p.strategy));
   if (as_json) {
@@ -122,14 +229,17 @@ void run_simulate(const std::string& file, const SimulationParams& p, const std:
               {"steps", r.observer.size() - 1}, {"dt", r.dt},
               {"escape_time", r.escape_time < 0 ? json(nullptr) : json(r.escape_time)},
               {"visible_fraction", r.visible_fraction}, {"observer_path_length", r.observer_length},
-              {"target_path_length", r.target_length}};
-    json O = json::array(), T = json::array();
+              {"target_path_length", r.target_length},
+              {"command_variation", {{"v", r.variation_v()}, {"omega", r.variation_omega()}}}};
+    json O = json::array(), T = json::array(), C = json::array();
     for (std::size_t i = 0; i < r.observer.size(); ++i) {
       O.push_back({r.observer[i].position.x(), r.observer[i].position.y(), r.observer[i].heading});
       T.push_back({r.target[i].x(), r.target[i].y(), static_cast<bool>(r.visible[i])});
     }
+    for (const auto& c : r.commands) C.push_back({c.v, c.omega});
     j["observer"] = O;
     j["target"] = T;
+    j["commands"] = C;
     print_json(j);
     return;
   }
@@ -137,44 +247,97 @@ void run_simulate(const std::string& file, const SimulationParams& p, const std:
             << r.observer.size() - 1 << " steps of " << r.dt << " s\n";
   std::cout << "escape time: " << (r.escape_time < 0 ? std::string("never (kept in sight)") : std::to_string(r.escape_time) + " s")
             << "\nvisible: " << std::fixed << std::setprecision(1) << 100 * r.visible_fraction << "% of the time\n"
-            << "path length: observer " << std::setprecision(2) << r.observer_length << " m, target " << r.target_length << " m\n";
+            << "path length: observer " << std::setprecision(2) << r.observer_length << " m, target " << r.target_length << " m\n"
+            << "command variation: " << std::setprecision(3) << r.variation_v() << " m/s and " << r.variation_omega()
+            << " rad/s per second\n";
 }
 
-void run_evaluate(const std::vector<std::string>& files, std::size_t seeds, std::size_t steps, double fov, bool as_json) {
-  json rows = json::array();
-  if (!as_json)
-    std::cout << "| scene | target | strategy | runs | escaped | mean escape time (s) | visible | observer path (m) |\n"
-                 "|---|---|---|---|---|---|---|---|\n";
-  for (const auto& file : files) {
-    const scene::Scene sc = scene::load_scene(file);
-    const TrackingScenario s = TrackingScenario::from_scene(sc);
-    for (const char* policy : {"scripted", "random", "adversarial"}) {
-      for (const char* strategy : {"risk", "sde", "naive"}) {
-        double esc_sum = 0, vis_sum = 0, len_sum = 0;
-        std::size_t escaped = 0;
-        for (std::size_t seed = 1; seed <= seeds; ++seed) {
-          const SimulationResult r = simulate(s, sim_params(policy, strategy, steps, seed, fov, "recursive"));
-          const double horizon = static_cast<double>(r.observer.size() - 1) * r.dt;
-          escaped += r.escape_time >= 0;
-          esc_sum += r.escape_time >= 0 ? r.escape_time : horizon;
-          vis_sum += r.visible_fraction;
-          len_sum += r.observer_length;
-        }
-        const double k = static_cast<double>(seeds);
-        if (as_json) {
-          rows.push_back({{"scene", s.name}, {"target_policy", policy}, {"strategy", strategy}, {"runs", seeds},
-                          {"escaped", escaped}, {"mean_escape_time", esc_sum / k}, {"visible_fraction", vis_sum / k},
-                          {"observer_path_length", len_sum / k}});
-        } else {
-          std::cout << "| " << s.name << " | " << policy << " | " << strategy << " | " << seeds << " | " << escaped << " | "
-                    << std::fixed << std::setprecision(1) << esc_sum / k << " | " << std::setprecision(1)
-                    << 100 * vis_sum / k << "% | " << len_sum / k << " |\n" << std::flush;
-        }
-      }
-    }
+std::string interval(const Interval& i, const char* f = "%.1f") {
+  char b[96];
+  const std::string fm = std::string(f) + " [" + f + ", " + f + "]";
+  std::snprintf(b, sizeof b, fm.c_str(), i.value, i.low, i.high);
+  return b;
+}
+
+void run_evaluate(const std::vector<std::string>& files, const EvaluationParams& ep, bool as_json, const std::string& cdf_svg) {
+  std::vector<scene::Scene> scenes;
+  std::vector<TrackingScenario> scenarios;
+  scenes.reserve(files.size());
+  for (const auto& f : files) scenes.push_back(scene::load_scene(f));
+  for (const auto& sc : scenes) scenarios.push_back(TrackingScenario::from_scene(sc));
+  std::vector<CellResult> cells;
+  {
+    Progress progress("evaluate");
+    cells = evaluate(scenarios, ep, [&](std::size_t done, std::size_t total) { progress(done, total); });
   }
-  if (as_json) print_json(rows);
-  else std::cout << "(escape time counts the whole run, " << steps / 10.0 << " s, when the target was never lost)\n";
+  if (!cdf_svg.empty()) {
+    std::ofstream out(cdf_svg);
+    if (!out) throw InputError("--cdf-svg " + cdf_svg + ": cannot open for writing");
+    out << escape_time_cdf_figure(cells, "Escape-time CDF, " + std::to_string(ep.seeds) + " seeds per curve");
+  }
+  // The cells of one scene x sensor x dynamics x policy, one per strategy.
+  auto find = [&](std::size_t from, Strategy s) -> const CellResult* {
+    for (std::size_t i = from; i < cells.size() && cells[i].scene == cells[from].scene && cells[i].fov == cells[from].fov &&
+                               cells[i].dynamics == cells[from].dynamics && cells[i].policy == cells[from].policy;
+         ++i)
+      if (cells[i].strategy == s) return &cells[i];
+    return nullptr;
+  };
+  if (as_json) {
+    json rows = json::array();
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      const CellResult& c = cells[i];
+      auto iv = [](const Interval& v) { return json{{"value", v.value}, {"low", v.low}, {"high", v.high}}; };
+      json row = {{"scene", c.scene}, {"fov", c.fov}, {"dynamics", c.dynamics}, {"target_policy", to_string(c.policy)},
+                  {"strategy", to_string(c.strategy)}, {"runs", c.escape_times.size()}, {"horizon", c.horizon},
+                  {"escaped", c.escaped}, {"escaped_fraction", iv(c.escaped_fraction)}, {"mean_escape_time", iv(c.mean_escape)},
+                  {"median_escape_time", iv(c.median_escape)},
+                  {"command_variation", {{"v", c.variation_v}, {"omega", c.variation_omega}}},
+                  {"escape_times", c.escape_times}};
+      if (c.strategy == Strategy::Risk) {
+        std::size_t first = i;
+        while (first > 0 && find(first - 1, c.strategy) == &c) --first;
+        if (const CellResult* sde = find(first, Strategy::Sde)) row["minus_sde"] = iv(paired_difference(c, *sde));
+      }
+      rows.push_back(row);
+    }
+    json out = {{"seeds", ep.seeds}, {"steps", ep.steps}, {"accel", ep.accel}, {"alpha", ep.alpha},
+                {"speed_ratio", ep.speed_ratio}, {"lookahead_steps", ep.lookahead_steps},
+                {"lookahead_headings", ep.lookahead_headings}, {"cells", rows}};
+    print_json(out);
+    return;
+  }
+  std::cout << "| scene | sensor | dynamics | target |";
+  for (Strategy s : ep.strategies) std::cout << " " << to_string(s) << ": lost, mean escape (s) [95% CI] |";
+  const bool both = std::find(ep.strategies.begin(), ep.strategies.end(), Strategy::Risk) != ep.strategies.end() &&
+                    std::find(ep.strategies.begin(), ep.strategies.end(), Strategy::Sde) != ep.strategies.end();
+  if (both) std::cout << " risk - sde (s) [95% CI] |";
+  std::cout << " command variation, omega (rad/s per s) |\n|---|---|---|---|";
+  for (std::size_t k = 0; k < ep.strategies.size() + (both ? 2 : 1); ++k) std::cout << "---|";
+  std::cout << "\n";
+  for (std::size_t i = 0; i < cells.size(); i += ep.strategies.size()) {
+    const CellResult& c = cells[i];
+    std::cout << "| " << c.scene << " | " << c.fov << "° | " << (c.dynamics ? "yes" : "no") << " | " << to_string(c.policy) << " |";
+    std::string tv;
+    for (Strategy s : ep.strategies) {
+      const CellResult* x = find(i, s);
+      std::cout << " " << x->escaped << "/" << x->escape_times.size() << ", " << interval(x->mean_escape) << " |";
+      char b[32];
+      std::snprintf(b, sizeof b, "%s%.2f", tv.empty() ? "" : " / ", x->variation_omega);
+      tv += b;
+    }
+    if (both) std::cout << " " << interval(paired_difference(*find(i, Strategy::Risk), *find(i, Strategy::Sde))) << " |";
+    std::cout << " " << tv << " |\n";
+  }
+  std::cout << "(" << ep.seeds << " seeds per cell, " << ep.steps / 10.0 << " s each; a run never lost counts "
+            << ep.steps / 10.0 << " s; dynamics: accel " << ep.accel << " m/s^2, alpha " << ep.alpha << " rad/s^2)\n";
+}
+
+// zlib says Z_BUF_ERROR ("unexpected end of file") when a gzip stream stops before its end.
+void throw_if_truncated(gzFile in, const std::string& file, const std::string& where) {
+  int err = 0;
+  gzerror(in, &err);
+  if (err == Z_BUF_ERROR) throw InputError(file + ": the file is truncated (its compressed stream ends early, " + where + ")");
 }
 
 void run_replay(const std::string& file, bool as_json, double max_range, double radius, double ahead) {
@@ -198,6 +361,9 @@ void run_replay(const std::string& file, bool as_json, double max_range, double 
     }
     if (!got) break;
     ++line_no;
+    // A last line without its newline is where a truncated .gz file stops: zlib then
+    // reports that the stream ended early, and the line is a fragment, not a bad line.
+    if (line.back() != '\n') throw_if_truncated(in, file, "in line " + std::to_string(line_no));
     const std::string where = file + ":" + std::to_string(line_no);
     const auto scan = parse_log_line(line, max_range, where);
     if (!scan) continue;
@@ -228,9 +394,10 @@ void run_replay(const std::string& file, bool as_json, double max_range, double 
       std::cout << ", " << std::setprecision(1) << r.micros << " us\n";
     }
   }
+  throw_if_truncated(in, file, "after line " + std::to_string(line_no));
   int err = 0;
-  gzerror(in, &err);
-  if (err != Z_OK && err != Z_STREAM_END) throw InputError(file + ": read error after line " + std::to_string(line_no));
+  const char* msg = gzerror(in, &err);
+  if (err != Z_OK && err != Z_STREAM_END) throw InputError(file + ": read error after line " + std::to_string(line_no) + " (" + msg + ")");
   if (!as_json)
     std::cout << scans << " scans replayed; time per scan: mean " << std::setprecision(1) << (scans ? total / scans : 0)
               << " us, max " << worst << " us\n";
@@ -250,49 +417,88 @@ void add_track_commands(CLI::App& app) {
   e->add_option("scene", e_file, "scene (JSON)")->required();
   e->add_option("--observer", e_obs, "observer X,Y (default: $.tracking.observer)");
   e->add_option("--target", e_tgt, "target X,Y (default: $.tracking.target)");
-  e->add_option("--radius", e_radius, "target radius delta (default: $.tracking.target_radius, else 0.2)");
-  e->add_option("--m", e_m, "exponent m of equation (3)")->check(CLI::NonNegativeNumber);
+  e->add_option("--radius", e_radius, "target radius delta (default: $.tracking.target_radius, else 0.2)")
+      ->check(number_in(0, 100, true));
+  add_count(e, "--m", e_m, 0, 16, "exponent m of equation (3)");
   e->add_flag("--json", e_json, "JSON output");
   e->add_option("--svg", e_svg, "draw V, the tree and -grad phi to this SVG file");
   e->callback([] { run_ept(e_file, e_obs, e_tgt, e_json, e_svg, e_radius, e_m); });
 
+  const CLI::Validator fov_check(
+      [](std::string& text) -> std::string {
+        return text == "360" || text == "180" ? std::string() : "expected 180 or 360, got '" + text + "'";
+      },
+      "180|360");
+
   auto* s = cmd->add_subcommand("simulate", "a closed-loop run: TRACK (or a baseline) against a moving target");
-  static std::string s_file, s_policy = "scripted", s_strategy = "risk", s_svg, s_agg = "recursive";
-  static std::size_t s_steps = 300;
-  static std::uint64_t s_seed = 1;
-  static double s_fov = 360;
+  static std::string s_file, s_svg, s_log;
+  static SimOptions so;
   static bool s_json = false;
   s->add_option("scene", s_file, "scene with a $.tracking slot (JSON)")->required();
-  s->add_option("--target-policy", s_policy, "scripted | random | adversarial");
-  s->add_option("--strategy", s_strategy, "risk (escape risk, eq. 6) | sde (eq. 2) | naive (steer at the target)");
-  s->add_option("--steps", s_steps, "TRACK iterations at 10 Hz");
-  s->add_option("--seed", s_seed, "seed of the range noise and of the random target");
-  s->add_option("--fov", s_fov, "sensor field of view: 360 or 180 degrees");
-  s->add_option("--aggregation", s_agg, "recursive (escape-path tree) | plain average of grad phi");
-  s->add_flag("--json", s_json, "JSON output with both trajectories");
+  s->add_option("--target-policy", so.policy, "scripted | random | adversarial | lookahead");
+  s->add_option("--strategy", so.strategy, "risk (escape risk, eq. 6) | sde (eq. 2) | naive (steer at the target)");
+  add_count(s, "--steps", so.steps, 1, 1000000, "TRACK iterations at 10 Hz");
+  add_count(s, "--seed", so.seed, 0, INT64_MAX, "seed of the range noise and of the random target");
+  s->add_option("--fov", so.fov, "sensor field of view: 360 or 180 degrees")->check(fov_check);
+  s->add_option("--aggregation", so.aggregation, "recursive (escape-path tree) | plain average of grad phi");
+  s->add_option("--accel", so.accel, "bound on the observer's linear acceleration, m/s^2 (default: none)")->check(number_in(0, 100, true));
+  s->add_option("--alpha", so.alpha, "bound on the observer's angular acceleration, rad/s^2 (default: none)")->check(number_in(0, 1000, true));
+  s->add_option("--speed-ratio", so.speed_ratio, "adversarial and lookahead target speed / observer top speed")
+      ->check(number_in(0, 10, true))->capture_default_str();
+  add_count(s, "--lookahead-steps", so.lookahead_steps, 1, 50, "steps the lookahead target simulates ahead");
+  add_count(s, "--headings", so.headings, 1, 360, "headings the lookahead target tries");
+  s->add_flag("--json", s_json, "JSON output with both trajectories and the commands");
   s->add_option("--svg", s_svg, "draw both paths to this SVG file");
-  s->callback([] { run_simulate(s_file, sim_params(s_policy, s_strategy, s_steps, s_seed, s_fov, s_agg), s_svg, s_json); });
+  s->add_option("--log", s_log, "per step, one JSON line: tree, risk terms, gradient (and its check on the exact map), command");
+  s->callback([] { run_simulate(s_file, sim_params(so), s_svg, s_log, s_json); });
 
-  auto* v = cmd->add_subcommand("evaluate", "three strategies x three target policies over many seeds, as a table");
-  static std::vector<std::string> v_files;
-  static std::size_t v_seeds = 10, v_steps = 300;
-  static double v_fov = 360;
+  auto* v = cmd->add_subcommand("evaluate", "strategies x target policies x sensors x dynamics over many seeds");
+  static std::vector<std::string> v_files, v_policies, v_strategies, v_dynamics{"off", "on"};
+  static std::vector<double> v_fovs{360, 180};
+  static EvaluationParams ep;
   static bool v_json = false;
+  static std::string v_cdf;
+  ep.jobs = std::max(1u, std::thread::hardware_concurrency());
   v->add_option("scenes", v_files, "scenes with a $.tracking slot")->required();
-  v->add_option("--seeds", v_seeds, "runs per cell");
-  v->add_option("--steps", v_steps, "TRACK iterations per run");
-  v->add_option("--fov", v_fov, "360 or 180");
-  v->add_flag("--json", v_json, "JSON output");
-  v->callback([] { run_evaluate(v_files, v_seeds, v_steps, v_fov, v_json); });
+  add_count(v, "--seeds", ep.seeds, 1, 10000, "runs per cell");
+  add_count(v, "--steps", ep.steps, 1, 1000000, "TRACK iterations per run (10 Hz)");
+  v->add_option("--fov", v_fovs, "sensors: 360, 180 or both")->check(fov_check)->delimiter(',')->capture_default_str();
+  v->add_option("--dynamics", v_dynamics, "off (kinematic), on (bounded accelerations) or both")
+      ->check(CLI::IsMember({"off", "on"}))->delimiter(',')->capture_default_str();
+  v->add_option("--accel", ep.accel, "linear acceleration bound with dynamics, m/s^2")->check(number_in(0, 100, true))->capture_default_str();
+  v->add_option("--alpha", ep.alpha, "angular acceleration bound with dynamics, rad/s^2")->check(number_in(0, 1000, true))->capture_default_str();
+  v->add_option("--target-policy", v_policies, "policies (default: scripted,random,adversarial,lookahead)")->delimiter(',');
+  v->add_option("--strategy", v_strategies, "strategies (default: risk,sde,naive)")->delimiter(',');
+  v->add_option("--speed-ratio", ep.speed_ratio, "adversarial and lookahead target speed / observer top speed")
+      ->check(number_in(0, 10, true))->capture_default_str();
+  add_count(v, "--lookahead-steps", ep.lookahead_steps, 1, 50, "steps the lookahead target simulates ahead");
+  add_count(v, "--headings", ep.lookahead_headings, 1, 360, "headings the lookahead target tries");
+  add_count(v, "--jobs", ep.jobs, 1, 256, "worker threads (default: the cores)");
+  v->add_flag("--json", v_json, "JSON output: every cell with its escape times");
+  v->add_option("--cdf-svg", v_cdf, "draw the escape-time CDFs to this SVG file");
+  v->callback([] {
+    ep.fovs = v_fovs;
+    ep.dynamics.clear();
+    for (const auto& d : v_dynamics) ep.dynamics.push_back(d == "on");
+    if (!v_policies.empty()) {
+      ep.policies.clear();
+      for (const auto& p : v_policies) ep.policies.push_back(parse_target_policy(p));
+    }
+    if (!v_strategies.empty()) {
+      ep.strategies.clear();
+      for (const auto& p : v_strategies) ep.strategies.push_back(parse_strategy(p));
+    }
+    run_evaluate(v_files, ep, v_json, v_cdf);
+  });
 
   auto* r = cmd->add_subcommand("replay", "TRACK's local map and escape-path tree on a recorded laser log (CARMEN or text)");
   static std::string r_file;
   static bool r_json = false;
   static double r_max = 50, r_radius = 0.2, r_ahead = 1.0;
   r->add_option("log", r_file, "log file (.gz or plain; - for stdin)")->required();
-  r->add_option("--max-range", r_max, "saturation range for FLASER and text logs (default 50 m)");
-  r->add_option("--radius", r_radius, "target radius for detection");
-  r->add_option("--ahead", r_ahead, "distance of the placed target when none is detected");
+  r->add_option("--max-range", r_max, "saturation range for FLASER and text logs, m")->check(number_in(0, 1e4, true))->capture_default_str();
+  r->add_option("--radius", r_radius, "target radius for detection, m")->check(number_in(0, 100, true))->capture_default_str();
+  r->add_option("--ahead", r_ahead, "distance of the placed target when none is detected, m")->check(number_in(0, 1e4, true))->capture_default_str();
   r->add_flag("--json", r_json, "one JSON object per scan (JSON Lines)");
   r->callback([] { run_replay(r_file, r_json, r_max, r_radius, r_ahead); });
 }

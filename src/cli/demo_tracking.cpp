@@ -27,7 +27,7 @@ void demo_tracking(DemoContext& ctx) {
   const LocalMap map = exact_local_map(index, geometry::Point(0, 0));
   const EscapePathTree tree = escape_path_tree(map, geometry::Point(0.3, 7));
   const auto risks = escape_risks(map, tree, RiskParams{});
-  const Vec2 rec = recursive_average(tree, risks) * -1.0, plain = plain_average(risks) * -1.0;
+  const Vec2 rec = recursive_average(tree, risks).gradient * -1.0, plain = plain_average(risks).gradient * -1.0;
   ctx.figure("tracking-escape-path-tree.svg", escape_path_tree_figure(&env, map, tree, &rec, &plain),
              "Escape-path tree (blue) of the target (green) in V of the observer (purple); free edges red. The chair's "
              "legs give " + std::to_string(tree.paths.size()) + " escape paths, many on one branch round the partition. "

@@ -38,6 +38,15 @@ struct Tokens {
 
 }  // namespace
 
+double flaser_angle_increment(std::size_t n) {
+  // carmen_laser_get_angle_increment: 180 and 360 beams are 181 and 361 with the last
+  // beam dropped, so their spacing is not pi / (n - 1).
+  if (n == 180 || n == 181) return M_PI / 180;
+  if (n == 360 || n == 361) return M_PI / 360;
+  if (n == 400 || n == 401) return M_PI / 720;
+  return M_PI / static_cast<double>(n - 1);
+}
+
 std::optional<Scan> parse_log_line(const std::string& line, double max_range, const std::string& where) {
   std::istringstream in(line);
   Tokens tk{{}, where};
@@ -49,7 +58,7 @@ std::optional<Scan> parse_log_line(const std::string& line, double max_range, co
   if (head == "FLASER") {
     const std::size_t n = tk.count(1);
     scan.angle_min = -M_PI / 2;
-    scan.angle_increment = M_PI / static_cast<double>(n - 1);
+    scan.angle_increment = flaser_angle_increment(n);
     for (std::size_t i = 0; i < n; ++i) scan.ranges.push_back(tk.num(2 + i));
     scan.timestamp = tk.num(2 + n + 6);  // after x y theta odom_x odom_y odom_theta
   } else if (head == "ROBOTLASER1") {
@@ -106,7 +115,7 @@ ReplayScan replay_scan(const Scan& scan, const TrackerParams& tp, double ahead) 
   if (tree) {
     r.target = tree->target;
     const auto risks = escape_risks(map, *tree, tp.risk);
-    r.gradient = recursive_average(*tree, risks);
+    r.gradient = recursive_average(*tree, risks).gradient;
     r.has_tree = true;
     r.sde = tree->sde();
     r.tree_nodes = tree->nodes.size();

@@ -33,6 +33,8 @@ EdgeRisk corner_risk(const Point& observer, const Point& corner, const Point& pi
   for (int i = 0; i < rp.m + 2; ++i) hm /= h;
   out.r_o = r;
   out.h = h;
+  out.d = d;
+  out.s = s;
   out.phi = rp.c * r * r * hm;
   out.gradient = grad_r * (2 * rp.c * r * hm) - grad_h * ((rp.m + 2) * rp.c * r * r * hm / h);
   return out;
@@ -55,31 +57,43 @@ std::vector<EdgeRisk> escape_risks(const LocalMap& map, const EscapePathTree& tr
   return out;
 }
 
-Vec2 plain_average(const std::vector<EdgeRisk>& risks) {
-  Vec2 sum;
-  for (auto& r : risks) sum = sum + r.gradient;
-  return risks.empty() ? sum : sum * (1.0 / static_cast<double>(risks.size()));
+RiskAverage plain_average(const std::vector<EdgeRisk>& risks) {
+  RiskAverage sum;
+  for (auto& r : risks) {
+    sum.phi += r.phi;
+    sum.gradient = sum.gradient + r.gradient;
+  }
+  if (risks.empty()) return sum;
+  const double k = 1.0 / static_cast<double>(risks.size());
+  return {sum.phi * k, sum.gradient * k};
 }
 
-Vec2 recursive_average(const EscapePathTree& tree, const std::vector<EdgeRisk>& risks) {
+RiskAverage recursive_average(const EscapePathTree& tree, const std::vector<EdgeRisk>& risks) {
   const std::size_t n = tree.nodes.size();
-  thread_local std::vector<Vec2> sum;  // (per-thread scratch: one average per TRACK iteration)
+  thread_local std::vector<RiskAverage> sum;  // (per-thread scratch: one average per TRACK iteration)
   thread_local std::vector<int> count;
-  sum.assign(n, Vec2{});
+  sum.assign(n, RiskAverage{});
   count.assign(n, 0);
+  auto add = [](RiskAverage& to, const RiskAverage& v, double k) {
+    to.phi += v.phi * k;
+    to.gradient = to.gradient + v.gradient * k;
+  };
   for (auto& r : risks) {
     const std::uint32_t v = tree.paths[r.path].node;
-    sum[v] = sum[v] + r.gradient;
+    add(sum[v], RiskAverage{r.phi, r.gradient}, 1.0);
     ++count[v];
   }
   // Parents precede children, so one backward pass averages every subtree before its parent.
   for (std::size_t v = n; v-- > 1;) {
     if (count[v] == 0) continue;
     const std::uint32_t p = tree.nodes[v].parent;
-    sum[p] = sum[p] + sum[v] * (1.0 / count[v]);
+    add(sum[p], sum[v], 1.0 / count[v]);
     ++count[p];
   }
-  return count[0] ? sum[0] * (1.0 / count[0]) : Vec2{};
+  if (!count[0]) return {};
+  RiskAverage out;
+  add(out, sum[0], 1.0 / count[0]);
+  return out;
 }
 
 }  // namespace preimage::tracking

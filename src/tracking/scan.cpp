@@ -65,19 +65,29 @@ Scan simulate_scan(const geometry::Environment& env, const Pose& pose, const Las
 }
 
 const BeamDirections& beam_directions(const Scan& scan) {
-  thread_local BeamDirections dirs;
-  thread_local double min = 0, inc = 0;
-  if (dirs.cos.size() != scan.ranges.size() || min != scan.angle_min || inc != scan.angle_increment) {
-    min = scan.angle_min;
-    inc = scan.angle_increment;
-    dirs.cos.resize(scan.ranges.size());
-    dirs.sin.resize(scan.ranges.size());
-    for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
-      dirs.cos[i] = std::cos(scan.angle(i));
-      dirs.sin[i] = std::sin(scan.angle(i));
+  // Two layouts: a sensor's own, and the same beams indexed from half a turn on, which
+  // detection uses when the target may lie across the seam of a 360-deg scan.
+  struct Slot { BeamDirections dirs; double min = 0, inc = 0; };
+  thread_local Slot slots[2];
+  thread_local int last = 0;
+  for (int k : {last, 1 - last}) {
+    Slot& s = slots[k];
+    if (s.dirs.cos.size() == scan.ranges.size() && s.min == scan.angle_min && s.inc == scan.angle_increment) {
+      last = k;
+      return s.dirs;
     }
   }
-  return dirs;
+  last = 1 - last;  // the least recently used
+  Slot& s = slots[last];
+  s.min = scan.angle_min;
+  s.inc = scan.angle_increment;
+  s.dirs.cos.resize(scan.ranges.size());
+  s.dirs.sin.resize(scan.ranges.size());
+  for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
+    s.dirs.cos[i] = std::cos(scan.angle(i));
+    s.dirs.sin[i] = std::sin(scan.angle(i));
+  }
+  return s.dirs;
 }
 
 namespace {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <random>
 
 namespace preimage::tracking {
@@ -15,6 +16,7 @@ const char* to_string(TargetPolicy p) {
     case TargetPolicy::Scripted: return "scripted";
     case TargetPolicy::Random: return "random";
     case TargetPolicy::Adversarial: return "adversarial";
+    case TargetPolicy::Lookahead: return "lookahead";
   }
   return "?";
 }
@@ -27,9 +29,9 @@ const char* to_string(Strategy s) {
   return "?";
 }
 TargetPolicy parse_target_policy(const std::string& s) {
-  for (auto p : {TargetPolicy::Scripted, TargetPolicy::Random, TargetPolicy::Adversarial})
+  for (auto p : {TargetPolicy::Scripted, TargetPolicy::Random, TargetPolicy::Adversarial, TargetPolicy::Lookahead})
     if (s == to_string(p)) return p;
-  throw InputError("--target-policy: expected scripted, random or adversarial, got \"" + s + "\"");
+  throw InputError("--target-policy: expected scripted, random, adversarial or lookahead, got \"" + s + "\"");
 }
 Strategy parse_strategy(const std::string& s) {
   for (auto p : {Strategy::Risk, Strategy::Sde, Strategy::Naive})
@@ -107,8 +109,6 @@ LocalMap exact_local_map(const geometry::VisibilityIndex& index, const Point& at
   return local_map_from_visibility(index.compute(at));
 }
 
-namespace {
-
 Point to_sensor(const Pose& o, const Point& p) {
   const double dx = p.x() - o.position.x(), dy = p.y() - o.position.y(), c = std::cos(o.heading), s = std::sin(o.heading);
   return Point(c * dx + s * dy, -s * dx + c * dy);
@@ -117,6 +117,14 @@ Point to_world(const Pose& o, const Point& p) {
   const double c = std::cos(o.heading), s = std::sin(o.heading);
   return Point(o.position.x() + c * p.x() - s * p.y(), o.position.y() + s * p.x() + c * p.y());
 }
+Vec2 to_world(const Pose& o, const Vec2& v) {
+  const double c = std::cos(o.heading), s = std::sin(o.heading);
+  return {c * v.x - s * v.y, s * v.x + c * v.y};
+}
+
+namespace {
+
+Point offset(const Point& p, const Vec2& v) { return Point(p.x() + v.x, p.y() + v.y); }
 
 // Walks `path` (from its first point) by `step`, consuming it; returns the new point.
 Point walk(std::vector<Point>& path, double step) {
@@ -137,23 +145,259 @@ Point walk(std::vector<Point>& path, double step) {
   return at;
 }
 
+// The polyline with each inner vertex moved c off the obstacle corner it bends round. A
+// taut path turns round an obstacle that lies inside the turn, so the corner's free side
+// is opposite the bisector of the two legs.
+std::vector<Point> with_clearance(const std::vector<Point>& path, double c) {
+  std::vector<Point> out = path;
+  for (std::size_t i = 1; i + 1 < path.size(); ++i) {
+    const Vec2 a = vec(path[i - 1]) - vec(path[i]), b = vec(path[i + 1]) - vec(path[i]);
+    if (a.norm() == 0 || b.norm() == 0) continue;
+    const Vec2 inner = a * (1 / a.norm()) + b * (1 / b.norm());
+    if (inner.norm() > 1e-9) out[i] = offset(path[i], inner * (-c / inner.norm()));
+  }
+  return out;
+}
+
+// One run's world: the scene, the sensor, the strategy, and the observer's step.
+class World {
+ public:
+  struct Observer {
+    Pose pose;
+    Command velocity;  // executed on the last step
+    Point estimate;    // where it believes the target is (world frame)
+  };
+
+  World(const TrackingScenario& sc, const SimulationParams& sp)
+      : env_(*sc.environment), index_(env_), sp_(sp), r_(sc.target.radius), cone_(sp.laser.fov < 2 * M_PI - 1e-9) {
+    // The tracker knows the target's radius: detection fits it, the risk's delta is it.
+    tp_ = sp.tracker;
+    tp_.detect.radius = r_;
+    tp_.risk.delta = r_;
+  }
+  const geometry::Environment& env() const { return env_; }
+  const geometry::VisibilityIndex& index() const { return index_; }
+
+  bool interior(const Point& p) const { return geometry::locate(env_, p).kind == geometry::Location::Kind::Interior; }
+  bool sees(const Pose& from, const Point& p) const {
+    const Point q = to_sensor(from, p);
+    if (std::hypot(q.x(), q.y()) > sp_.laser.max_range) return false;
+    if (cone_ && std::abs(std::atan2(q.y(), q.x())) > sp_.laser.fov / 2) return false;
+    return geometry::visible(env_, from.position, p);
+  }
+  // May the observer go from `from` to `to` with the target at t (it keeps off the target)?
+  bool can_move(const Point& from, const Point& to, const Point& t) const {
+    return interior(to) && geometry::visible(env_, from, to) && dist(to, t) > r_ + 0.15;
+  }
+  // A target step from `from` to `to` in the open, straight.
+  bool can_step(const Point& from, const Point& to) const { return interior(to) && geometry::visible(env_, from, to); }
+  // A target step: taken if straight and into the open, else the target stays.
+  Point target_step(const Point& from, const Point& to) const { return can_step(from, to) ? to : from; }
+
+  // The strategy's command for a scan from o.pose with the target at t (range noise from
+  // rng; none if null). TRACK's iteration goes to ts; o.estimate follows the detection.
+  Command decide(Observer& o, const Point& t, std::mt19937_64* rng, TrackStep& ts) const {
+    const Scan scan = simulate_scan(env_, o.pose, sp_.laser, Disc{t, r_}, rng);
+    ts = track(scan, tp_, to_sensor(o.pose, o.estimate));
+    if (ts.detection.found) o.estimate = to_world(o.pose, ts.detection.center);
+    const Command naive = naive_command(to_sensor(o.pose, o.estimate), tp_.control);
+    if (sp_.strategy == Strategy::Risk) return ts.tracked ? ts.control.command : naive;
+    if (sp_.strategy == Strategy::Sde) return sde_command(o, naive);
+    return naive;
+  }
+
+  // Dynamics, then unicycle kinematics (equation 5) over one period. A blocked move stops
+  // the observer (it turns on the spot).
+  void move(Observer& o, const Command& cmd, const Point& t) const {
+    const double dt = sp_.dt;
+    Command u = cmd;
+    if (sp_.accel > 0) u.v = o.velocity.v + std::clamp(cmd.v - o.velocity.v, -sp_.accel * dt, sp_.accel * dt);
+    if (sp_.alpha > 0) u.omega = o.velocity.omega + std::clamp(cmd.omega - o.velocity.omega, -sp_.alpha * dt, sp_.alpha * dt);
+    const double th = o.pose.heading + u.omega * dt;
+    const Point p(o.pose.position.x() + u.v * dt * std::cos(th), o.pose.position.y() + u.v * dt * std::sin(th));
+    o.pose.heading = th;
+    if (u.v != 0 && can_move(o.pose.position, p, t)) o.pose.position = p;
+    else u.v = 0;
+    o.velocity = u;
+  }
+
+  // The adversarial target's step: along the shortest escape path in the exact V of the
+  // observer at `observer`, kept its radius off corners and run on past the escape point;
+  // if that step is blocked, along the next shortest. Without a tree (out of sight, or a
+  // degenerate V) it walks on along `plan`, its last one.
+  Point escape_step(const Point& observer, const Point& t, double step, std::vector<Point>& plan) const {
+    std::optional<EscapePathTree> tree;
+    LocalMap map;
+    try {
+      map = exact_local_map(index_, observer);
+      tree = try_escape_path_tree(map, t);
+    } catch (const InputError&) {
+      // a degenerate V at this observer position: keep the last plan
+    }
+    if (tree && tree->shortest != kNone) {
+      std::vector<std::uint32_t> order(tree->paths.size());
+      for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+      std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return tree->paths[a].length < tree->paths[b].length; });
+      for (std::uint32_t i : order) {
+        std::vector<Point> path = with_clearance(tree->polyline(i), r_);
+        const EscapePath& e = tree->paths[i];
+        if (e.kind == EdgeKind::Occlusion) {
+          const std::uint32_t k = map.corner[e.edge], far = k == e.edge ? static_cast<std::uint32_t>(map.next(e.edge)) : e.edge;
+          wrap_corner(path, map.vertices[k], vec(map.vertices[far]) - vec(map.vertices[k]));
+        }
+        const Point& a = path[path.size() - 2];
+        const Point& b = path.back();
+        const double len = dist(a, b);
+        if (len > 0) path.push_back(Point(b.x() + (b.x() - a.x()) / len, b.y() + (b.y() - a.y()) / len));
+        std::vector<Point> rest = path;
+        const Point q = target_step(t, walk(rest, step));
+        if (!(q == t)) {
+          plan = std::move(rest);
+          return q;
+        }
+      }
+      return t;
+    }
+    if (plan.size() < 2) return t;
+    return target_step(t, walk(plan, step));
+  }
+
+  // The look-ahead target's step (see TargetPolicy::Lookahead).
+  Point lookahead_step(const Observer& o, const Point& t, double step) const {
+    const std::size_t k = std::max<std::size_t>(sp_.lookahead_steps, 1), H = sp_.lookahead_headings;
+    std::size_t best_depth = k + 1;  // the depth at which the best candidate escapes; k + 1: none does
+    double best_sde = std::numeric_limits<double>::infinity();
+    Point best = t;
+    TrackStep scratch;
+    for (std::size_t c = 0; c <= H; ++c) {  // c = 0: the adversarial move; then the headings
+      const double heading = 2 * M_PI * static_cast<double>(c) / static_cast<double>(std::max<std::size_t>(H, 1));
+      const Vec2 dir{std::cos(heading), std::sin(heading)};
+      // Only an earlier escape can beat an escape found already.
+      const std::size_t limit = std::min(k, best_depth - 1);
+      if (limit == 0) break;
+      Observer O = o;
+      Point T = t, first = t;
+      std::vector<Point> plan;
+      std::size_t escaped = 0;
+      for (std::size_t depth = 1; depth <= limit; ++depth) {
+        Point next = T;
+        if (c == 0) {
+          next = escape_step(O.pose.position, T, step, plan);
+        } else {
+          next = target_step(T, offset(T, dir * step));
+        }
+        if (depth == 1) first = next;
+        T = next;
+        if (!sees(O.pose, T)) { escaped = depth; break; }
+        if (depth < limit) move(O, decide(O, T, nullptr, scratch), T);
+      }
+      if (escaped) {
+        if (escaped < best_depth) { best_depth = escaped; best = first; }
+        continue;
+      }
+      if (best_depth <= k || limit < k) continue;
+      double sde = std::numeric_limits<double>::infinity();
+      try {
+        if (auto tree = try_escape_path_tree(exact_local_map(index_, O.pose.position), T)) sde = tree->sde();
+      } catch (const InputError&) {
+        // a degenerate V: no score for this candidate
+      }
+      if (sde < best_sde) { best_sde = sde; best = first; }
+    }
+    return best;
+  }
+
+ private:
+  // An escape point within the radius of the occluding corner k: the disc escapes past k
+  // at its radius (the corner exit of eq. (4)), so the path ends on a circle of radius r
+  // about k, from the side of its previous point round to the free edge's direction u,
+  // the way round that stays in the open, in steps of at most 30 deg.
+  void wrap_corner(std::vector<Point>& path, const Point& k, const Vec2& u) const {
+    if (path.size() < 2 || u.norm() == 0 || dist(path.back(), k) >= r_) return;
+    const Vec2 from = vec(path[path.size() - 2]) - vec(k);
+    if (from.norm() == 0) return;
+    const double a0 = std::atan2(from.y, from.x), a1 = std::atan2(u.y, u.x);
+    for (double turn : {+1.0, -1.0}) {
+      double sweep = turn * (a1 - a0);
+      while (sweep < 0) sweep += 2 * M_PI;
+      while (sweep >= 2 * M_PI) sweep -= 2 * M_PI;
+      const int n = std::max(1, static_cast<int>(std::ceil(sweep / (M_PI / 6))));
+      std::vector<Point> arc;
+      for (int j = 0; j <= n; ++j) {
+        const double a = a0 + turn * sweep * j / n;
+        arc.push_back(offset(k, Vec2{std::cos(a), std::sin(a)} * r_));
+      }
+      bool open = dist(path[path.size() - 2], arc.front()) == 0 || can_step(path[path.size() - 2], arc.front());
+      for (std::size_t j = 1; open && j < arc.size(); ++j) open = can_step(arc[j - 1], arc[j]);
+      if (!open) continue;
+      path.pop_back();
+      path.insert(path.end(), arc.begin(), arc.end());
+      return;
+    }
+  }
+
+  // Equation (2): the control whose next position maximises SDE for the target where it
+  // is believed to be now. The baseline is given the map: SDE comes from the exact V there.
+  Command sde_command(const Observer& o, const Command& naive) const {
+    const ControlParams& cp = tp_.control;
+    const double dt = sp_.dt;
+    double best = -1, best_tie = 1e300;
+    Command cmd = naive;
+    for (double fv : {0.0, 0.5, 1.0}) {
+      for (double fw : {-1.0, -0.5, 0.0, 0.5, 1.0}) {
+        const Command c{fv * cp.v_max, fw * cp.omega_max};
+        const double th = o.pose.heading + c.omega * dt;
+        const Point p(o.pose.position.x() + c.v * dt * std::cos(th), o.pose.position.y() + c.v * dt * std::sin(th));
+        if (c.v > 0 && !can_move(o.pose.position, p, o.estimate)) continue;
+        if (!sees(Pose{p, th}, o.estimate)) continue;
+        LocalMap m;
+        try {
+          m = exact_local_map(index_, p);
+        } catch (const InputError&) {
+          continue;  // a degenerate V at this candidate: skip it
+        }
+        const auto tree = try_escape_path_tree(m, o.estimate);
+        if (!tree) continue;
+        const double sde = std::min(tree->sde(), 1e9);
+        const double tie = std::abs(c.v - naive.v) + std::abs(c.omega - naive.omega);
+        if (sde > best + 1e-9 || (std::abs(sde - best) <= 1e-9 && tie < best_tie)) {
+          best = sde;
+          best_tie = tie;
+          cmd = c;
+        }
+      }
+    }
+    return cmd;
+  }
+
+  const geometry::Environment& env_;
+  const geometry::VisibilityIndex index_;
+  const SimulationParams& sp_;
+  TrackerParams tp_;
+  double r_;
+  bool cone_;
+};
+
+double variation(const std::vector<Command>& cmds, double dt, double Command::*field) {
+  if (cmds.size() < 2) return 0;
+  double tv = 0;
+  for (std::size_t i = 1; i < cmds.size(); ++i) tv += std::abs(cmds[i].*field - cmds[i - 1].*field);
+  return tv / (static_cast<double>(cmds.size()) * dt);
+}
+
 }  // namespace
 
+double SimulationResult::variation_v() const { return variation(commands, dt, &Command::v); }
+double SimulationResult::variation_omega() const { return variation(commands, dt, &Command::omega); }
+
 SimulationResult simulate(const TrackingScenario& sc, const SimulationParams& sp) {
-  const geometry::Environment& env = *sc.environment;
-  const geometry::VisibilityIndex index(env);
+  const World world(sc, sp);
+  const geometry::Environment& env = world.env();
   std::mt19937_64 rng(sp.seed);
   SimulationResult out;
   out.dt = sp.dt;
-  Pose o = sc.observer;
+  World::Observer o{sc.observer, Command{}, sc.target.center};  // it starts knowing where the target is
   Point t = sc.target.center;
-  const double r = sc.target.radius;
-  // The tracker knows the target's radius: detection fits it, the risk's delta is it.
-  TrackerParams tp = sp.tracker;
-  tp.detect.radius = r;
-  tp.risk.delta = r;
-  const ControlParams& cp = tp.control;
-  const bool cone = sp.laser.fov < 2 * M_PI - 1e-9;
 
   std::vector<Point> plan;  // the target's remaining path
   auto random_free = [&]() {
@@ -161,28 +405,20 @@ SimulationResult simulate(const TrackingScenario& sc, const SimulationParams& sp
     std::uniform_real_distribution<double> X(box.xmin(), box.xmax()), Y(box.ymin(), box.ymax());
     for (;;) {
       Point p(X(rng), Y(rng));
-      if (interior(env, p)) return p;
+      if (world.interior(p)) return p;
     }
   };
   if (sp.policy == TargetPolicy::Scripted) {
     plan = sc.target_path;
     plan.insert(plan.begin(), t);
   }
-  auto sees = [&](const Pose& from, const Point& p) {
-    const Point q = to_sensor(from, p);
-    if (std::hypot(q.x(), q.y()) > sp.laser.max_range) return false;
-    if (cone && std::abs(std::atan2(q.y(), q.x())) > sp.laser.fov / 2) return false;
-    return geometry::visible(env, from.position, p);
-  };
-  auto can_move = [&](const Point& from, const Point& to) {
-    return interior(env, to) && geometry::visible(env, from, to) && dist(to, t) > r + 0.15;
-  };
+  const double chase = sp.speed_ratio * sp.tracker.control.v_max;  // the planning targets' speed
 
-  Point estimate = t;  // world frame; the observer starts knowing where the target is
   std::size_t seen = 0;
+  TrackStep ts;
   for (std::size_t step = 0; step <= sp.steps; ++step) {
-    const bool vis = sees(o, t);
-    out.observer.push_back(o);
+    const bool vis = world.sees(o.pose, t);
+    out.observer.push_back(o.pose);
     out.target.push_back(t);
     out.visible.push_back(vis);
     if (vis) ++seen;
@@ -190,86 +426,76 @@ SimulationResult simulate(const TrackingScenario& sc, const SimulationParams& sp
     if (step == sp.steps || (sp.stop_at_escape && !vis)) { out.tracked.push_back(0); break; }
 
     // --- the observer: TRACK on a scan, or a baseline
-    const Scan scan = simulate_scan(env, o, sp.laser, Disc{t, r}, &rng);
-    const TrackStep ts = track(scan, tp, to_sensor(o, estimate));
+    const Pose before = o.pose;
+    const Command cmd = world.decide(o, t, &rng, ts);
     out.tracked.push_back(ts.tracked);
-    if (ts.detection.found) estimate = to_world(o, ts.detection.center);
-    const Point est_s = to_sensor(o, estimate);
-    Command cmd = naive_command(est_s, cp);
-    if (sp.strategy == Strategy::Risk && ts.tracked) {
-      cmd = ts.command;
-    } else if (sp.strategy == Strategy::Sde) {
-      // Equation (2): the control whose next position maximises SDE for the target where
-      // it is now. The baseline is given the map: SDE comes from the exact V there.
-      double best = -1;
-      const Command naive = cmd;
-      double best_tie = 1e300;
-      for (double fv : {0.0, 0.5, 1.0}) {
-        for (double fw : {-1.0, -0.5, 0.0, 0.5, 1.0}) {
-          const Command c{fv * cp.v_max, fw * cp.omega_max};
-          const double th = o.heading + c.omega * sp.dt;
-          const Point p(o.position.x() + c.v * sp.dt * std::cos(th), o.position.y() + c.v * sp.dt * std::sin(th));
-          if (c.v > 0 && !can_move(o.position, p)) continue;
-          if (!sees(Pose{p, th}, estimate)) continue;
-          LocalMap m;
-          try {
-            m = exact_local_map(index, p);
-          } catch (const InputError&) {
-            continue;  // a degenerate V at this candidate: skip it
-          }
-          const auto tree = try_escape_path_tree(m, estimate);
-          if (!tree) continue;
-          const double sde = std::min(tree->sde(), 1e9);
-          const double tie = std::abs(c.v - naive.v) + std::abs(c.omega - naive.omega);
-          if (sde > best + 1e-9 || (std::abs(sde - best) <= 1e-9 && tie < best_tie)) {
-            best = sde;
-            best_tie = tie;
-            cmd = c;
-          }
-        }
-      }
-    }
-    // Unicycle kinematics, equation (5), integrated over one period.
-    const double th = o.heading + cmd.omega * sp.dt;
-    const Point p(o.position.x() + cmd.v * sp.dt * std::cos(th), o.position.y() + cmd.v * sp.dt * std::sin(th));
-    const Point before = o.position;
-    o.heading = th;
-    if (cmd.v != 0 && can_move(before, p)) o.position = p;
-    out.observer_length += dist(before, o.position);
+    out.commands.push_back(cmd);
+    world.move(o, cmd, t);
+    out.observer_length += dist(before.position, o.pose.position);
+    if (sp.on_step) sp.on_step(StepRecord{step, before, t, vis, o.estimate, &ts, cmd, o.velocity});
 
     // --- the target
     const Point t_before = t;
-    double speed = sc.target_speed;
-    if (sp.policy == TargetPolicy::Random) {
-      while (plan.size() < 2) plan = shortest_path(env, t, random_free());
-    } else if (sp.policy == TargetPolicy::Adversarial) {
-      speed = sp.speed_ratio * cp.v_max;
-      // Run along the current shortest escape path from the observer's true position.
-      LocalMap m;
-      bool ok = true;
-      try {
-        m = exact_local_map(index, o.position);
-      } catch (const InputError&) {
-        ok = false;  // keep the previous plan
+    switch (sp.policy) {
+      case TargetPolicy::Scripted:
+        if (plan.size() >= 2) t = walk(plan, sc.target_speed * sp.dt);
+        if (!world.interior(t)) t = t_before;  // a path along the boundary: stay in the open
+        break;
+      case TargetPolicy::Random: {
+        while (plan.size() < 2) plan = with_clearance(shortest_path(env, t, random_free()), sc.target.radius);
+        const Point q = world.target_step(t, walk(plan, sc.target_speed * sp.dt));
+        if (q == t) plan.clear();  // blocked (a passage narrower than the target): a new goal next step
+        t = q;
+        break;
       }
-      const auto tree = ok ? try_escape_path_tree(m, t) : std::nullopt;
-      if (tree && tree->shortest != kNone) {
-        plan = tree->polyline(tree->shortest);
-        // and on past the escape point, out of sight
-        const Point& a = plan[plan.size() - 2];
-        const Point& b = plan.back();
-        const double len = dist(a, b);
-        if (len > 0) {
-          const Point beyond(b.x() + (b.x() - a.x()) / len, b.y() + (b.y() - a.y()) / len);
-          if (geometry::visible(env, b, beyond)) plan.push_back(beyond);
-        }
-      }
+      case TargetPolicy::Adversarial: t = world.escape_step(o.pose.position, t, chase * sp.dt, plan); break;
+      case TargetPolicy::Lookahead: t = world.lookahead_step(o, t, chase * sp.dt); break;
     }
-    if (plan.size() >= 2) t = walk(plan, speed * sp.dt);
-    if (!interior(env, t)) t = t_before;  // a path along the boundary: stay in the open
     out.target_length += dist(t_before, t);
   }
   out.visible_fraction = static_cast<double>(seen) / static_cast<double>(out.visible.size());
+  return out;
+}
+
+namespace {
+
+// phi-bar at `observer`, and what it was computed from: each escape path's tree nodes
+// and corner, so two evaluations can be told to share their structure.
+RiskAverage risk_at(const geometry::VisibilityIndex& index, const Point& observer, const Point& target, const RiskParams& rp,
+                    Aggregation aggregation, std::vector<Point>* structure) {
+  const LocalMap map = exact_local_map(index, observer);
+  const EscapePathTree tree = escape_path_tree(map, target);
+  const auto risks = escape_risks(map, tree, rp);
+  if (structure) {
+    structure->clear();
+    for (const auto& r : risks) {
+      const EscapePath& p = tree.paths[r.path];
+      structure->push_back(map.vertices[map.corner[p.edge]]);
+      for (std::uint32_t v = p.node; v != kNone; v = tree.nodes[v].parent) structure->push_back(tree.nodes[v].at);
+    }
+  }
+  return aggregation == Aggregation::Recursive ? recursive_average(tree, risks) : plain_average(risks);
+}
+
+}  // namespace
+
+RiskCheck check_risk_gradient(const geometry::VisibilityIndex& index, const Point& o, const Point& t, const RiskParams& rp,
+                              Aggregation aggregation, double eps) {
+  RiskCheck out;
+  std::vector<Point> structure, moved;
+  out.risk = risk_at(index, o, t, rp, aggregation, &structure);
+  double phi[4] = {0, 0, 0, 0};
+  out.stable = true;
+  const Point at[4] = {Point(o.x() + eps, o.y()), Point(o.x() - eps, o.y()), Point(o.x(), o.y() + eps), Point(o.x(), o.y() - eps)};
+  for (int i = 0; i < 4; ++i) {
+    try {
+      phi[i] = risk_at(index, at[i], t, rp, aggregation, &moved).phi;
+      out.stable = out.stable && moved == structure;
+    } catch (const InputError&) {
+      out.stable = false;  // the target left V, or V is degenerate there
+    }
+  }
+  out.difference = Vec2{(phi[0] - phi[1]) / (2 * eps), (phi[2] - phi[3]) / (2 * eps)};
   return out;
 }
 

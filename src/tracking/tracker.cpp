@@ -44,7 +44,10 @@ bool fit_circle(const std::vector<Vec2>& pts, double r, Vec2& c, double& rms) {
 
 }  // namespace
 
-Detection detect_target(const Scan& scan, const DetectParams& dp, const std::optional<Point>& prior) {
+namespace {
+
+// The best-fitting cluster (nearest the prior, with one), before widening to its rim.
+Detection best_cluster(const Scan& scan, const DetectParams& dp, const std::optional<Point>& prior) {
   Detection best;
   const std::size_t n = scan.ranges.size();
   const double margin = 0.05;
@@ -78,11 +81,14 @@ Detection detect_target(const Scan& scan, const DetectParams& dp, const std::opt
       i = j + 1;
       if (b - a + 1 < dp.min_points) continue;
       if ((point(b) - point(a)).norm() > 2.2 * dp.radius) continue;  // wider than the target
-      // The target stands in front of what is behind it: both flanks are further or empty.
+      // The cluster is an object of its own, not a piece of a longer surface: each flank
+      // is empty, further (the target stands in front of what is behind it) or nearer than
+      // all of it (an obstacle hides part of the target).
       double near = 1e300;
       for (std::size_t k = a; k <= b; ++k) near = std::min(near, scan.ranges[k]);
-      const bool left_ok = a == 0 || !valid(a - 1) || scan.ranges[a - 1] > near + 0.5 * dp.radius;
-      const bool right_ok = b + 1 == n || !valid(b + 1) || scan.ranges[b + 1] > near + 0.5 * dp.radius;
+      auto flank_ok = [&](std::size_t k) { return !valid(k) || scan.ranges[k] > near + 0.5 * dp.radius || scan.ranges[k] < near; };
+      const bool left_ok = a == 0 || flank_ok(a - 1);
+      const bool right_ok = b + 1 == n || flank_ok(b + 1);
       if (!left_ok || !right_ok) continue;
       // With a prior, skip clusters whose fit could not pass the gate: a fit with rms <=
       // max_rms has every point within r + sqrt(N) max_rms of its centre.
@@ -154,20 +160,138 @@ Detection detect_target(const Scan& scan, const DetectParams& dp, const std::opt
   return best;
 }
 
+// A target touching an obstacle is one cluster with it, too wide to be the target. With
+// an estimate, the readings near it (within the radius and one step's motion of it,
+// contiguous about the beam that points at it) are fitted, dropping the points off the
+// circle once (the obstacle's), and kept if the circle fits.
+Detection beside_obstacle(const Scan& scan, const DetectParams& dp, const Point& prior) {
+  Detection d;
+  const std::size_t n = scan.ranges.size();
+  const BeamDirections& dir = beam_directions(scan);
+  const Vec2 e = vec(prior);
+  auto near_prior = [&](std::size_t k) {
+    const double r = scan.ranges[k];
+    return r > 0.01 && r < scan.max_range - 0.05 && (Vec2{r * dir.cos[k], r * dir.sin[k]} - e).norm() <= dp.radius + dp.jump;
+  };
+  const double m = std::round((std::atan2(prior.y(), prior.x()) - scan.angle_min) / scan.angle_increment);
+  const double nn = static_cast<double>(n);
+  std::size_t mid = n;
+  for (double k : {m, m - 1, m + 1, m - 2, m + 2}) {
+    const double kk = scan.full_circle() ? std::fmod(k + 2 * nn, nn) : k;
+    if (kk >= 0 && kk < nn && near_prior(static_cast<std::size_t>(kk))) { mid = static_cast<std::size_t>(kk); break; }
+  }
+  if (mid == n) return d;
+  std::size_t a = mid, b = mid;
+  while (a > 0 && near_prior(a - 1)) --a;
+  while (b + 1 < n && near_prior(b + 1)) ++b;
+  thread_local std::vector<Vec2> pts;
+  auto fit = [&](Vec2& c, double& rms) {
+    pts.clear();
+    for (std::size_t k = a; k <= b; ++k) pts.push_back(Vec2{scan.ranges[k] * dir.cos[k], scan.ranges[k] * dir.sin[k]});
+    return pts.size() >= dp.min_points && fit_circle(pts, dp.radius, c, rms);
+  };
+  Vec2 c;
+  double rms;
+  // Drop the obstacle's readings, those off the fitted circle at either end, and refit
+  // (a few times: the first fit is pulled towards the obstacle).
+  auto off = [&](std::size_t k) {
+    const double r = scan.ranges[k];
+    return std::abs((Vec2{r * dir.cos[k], r * dir.sin[k]} - c).norm() - dp.radius) > 2 * dp.max_rms;
+  };
+  for (int round = 0; round < 4; ++round) {
+    if (!fit(c, rms)) return d;
+    const std::size_t a0 = a, b0 = b;
+    while (a < b && off(a)) ++a;
+    while (b > a && off(b)) --b;
+    if (a == a0 && b == b0) break;
+  }
+  if (!fit(c, rms) || rms > dp.max_rms || (c - e).norm() > dp.gate) return d;
+  // A short piece of wall also fits a circle of the radius within max_rms; the target's
+  // arc bulges towards the sensor (by the sagitta of its chord, less where the window
+  // still ends on the obstacle), a wall's by its noise only.
+  const Vec2 pa = pts.front(), pb = pts.back(), ab = pb - pa;
+  const double chord = ab.norm();
+  if (chord == 0) return d;
+  double bulge = 0;
+  const double towards = ab.cross(pa * -1.0) > 0 ? 1.0 : -1.0;  // the sensor's side of the chord
+  for (const Vec2& q : pts) bulge = std::max(bulge, towards * ab.cross(q - pa) / chord);
+  const double sagitta = dp.radius - std::sqrt(std::max(0.0, dp.radius * dp.radius - chord * chord / 4));
+  if (bulge < 0.25 * sagitta || bulge < dp.max_rms) return d;
+  d.found = true;
+  d.center = Point(c.x, c.y);
+  d.rms = rms;
+  d.first = a;
+  d.last = b;
+  d.candidates = 1;
+  return d;
+}
+
+}  // namespace
+
 namespace {
-// Replaces the target's readings in s (a copy of the scan) by the background.
+
+// Detection within one indexing of the beams: the best cluster (or, with an estimate,
+// the target beside an obstacle), widened to the readings on its rim.
+Detection detect_in(const Scan& scan, const DetectParams& dp, const std::optional<Point>& prior) {
+  Detection d = best_cluster(scan, dp, prior);
+  if (!d.found && prior) d = beside_obstacle(scan, dp, *prior);
+  if (!d.found) return d;
+  const BeamDirections& dir = beam_directions(scan);
+  const Vec2 c = vec(d.center);
+  // A reading on the fitted circle, and not nearer than the disc's nearest point (which
+  // an obstacle hiding part of the target is).
+  auto on_rim = [&](std::size_t k) {
+    const double r = scan.ranges[k];
+    if (!(r > 0.01 && r < scan.max_range - 0.05) || r < c.norm() - dp.radius - dp.rim) return false;
+    return (Vec2{r * dir.cos[k], r * dir.sin[k]} - c).norm() <= dp.radius + dp.rim;
+  };
+  while (d.first > 0 && on_rim(d.first - 1)) --d.first;
+  while (d.last + 1 < scan.ranges.size() && on_rim(d.last + 1)) ++d.last;
+  return d;
+}
+
+}  // namespace
+
+Detection detect_target(const Scan& scan, const DetectParams& dp, const std::optional<Point>& prior) {
+  Detection d = detect_in(scan, dp, prior);
+  const std::size_t n = scan.ranges.size();
+  // Clusters stop at the seam of a 360-deg scan (straight behind). If the target may lie
+  // across it, look again with the beams indexed from half a turn on, and say where its
+  // beams are in the scan's own indices (first > last: round through the seam).
+  if (!scan.full_circle() || (d.found && d.first > 0 && d.last + 1 < n)) return d;
+  thread_local Scan turned;
+  const std::size_t h = n / 2;
+  turned.timestamp = scan.timestamp;
+  turned.max_range = scan.max_range;
+  turned.angle_increment = scan.angle_increment;
+  turned.angle_min = scan.angle_min + static_cast<double>(h) * scan.angle_increment;
+  turned.ranges.resize(n);
+  for (std::size_t i = 0; i < n; ++i) turned.ranges[i] = scan.ranges[(i + h) % n];
+  Detection t = detect_in(turned, dp, prior);
+  if (!t.found || t.first == 0 || t.last + 1 == n) return d;
+  t.first = (t.first + h) % n;
+  t.last = (t.last + h) % n;
+  return t;
+}
+
+namespace {
+// Replaces the target's readings in s (a copy of the scan) by the background. Its beams
+// run from d.first to d.last, round through the seam of a full circle if first > last.
 void fill_shadow(Scan& s, const Detection& d) {
-  const std::size_t n = s.ranges.size();
-  const bool has_l = d.first > 0, has_r = d.last + 1 < n;
-  const double rl = has_l ? s.ranges[d.first - 1] : (has_r ? s.ranges[d.last + 1] : s.max_range);
-  const double rr = has_r ? s.ranges[d.last + 1] : rl;
+  const std::size_t n = s.ranges.size(), m = (d.last + n - d.first) % n + 1;
+  const bool round = s.full_circle() && m < n;
+  const bool has_l = round || d.first > 0, has_r = round || d.last + 1 < n;
+  const double left = s.ranges[(d.first + n - 1) % n], right = s.ranges[(d.last + 1) % n];
+  const double rl = has_l ? left : (has_r ? right : s.max_range);
+  const double rr = has_r ? right : rl;
   const double sat = s.max_range - 0.05;
-  for (std::size_t k = d.first; k <= d.last; ++k) {
+  for (std::size_t j = 0; j < m; ++j) {
+    double& r = s.ranges[(d.first + j) % n];
     if (rl >= sat || rr >= sat) {
-      s.ranges[k] = s.max_range;
+      r = s.max_range;
     } else {
-      const double f = static_cast<double>(k - d.first + 1) / static_cast<double>(d.last - d.first + 2);
-      s.ranges[k] = rl + f * (rr - rl);
+      const double f = static_cast<double>(j + 1) / static_cast<double>(m + 1);
+      r = rl + f * (rr - rl);
     }
   }
 }
@@ -199,15 +323,17 @@ Command regulator(const Point& t, const ControlParams& p) {
 }
 }  // namespace
 
-Command risk_command(const Vec2& grad, const Point& target, const ControlParams& p) {
-  Command c = regulator(target, p);
-  const double g = grad.norm();
-  if (g > 0) {
-    const Vec2 d = grad * -1.0, n{1, 0};
-    c.v += p.k_v * n.dot(d);
-    c.omega += p.k_omega * n.cross(d) / g;
-  }
-  return clamp(c, p);
+ControlTerms risk_control(const RiskAverage& risk, const Point& target, const ControlParams& p) {
+  ControlTerms out;
+  const double dist = std::hypot(target.x(), target.y()), bearing = std::atan2(target.y(), target.x());
+  if (dist > 0) out.pull = Vec2{target.x(), target.y()} * (p.k_distance * (dist - p.preferred_distance) / dist);
+  if (risk.phi > 0) out.descent = risk.gradient * (-p.k_v / risk.phi);
+  const Vec2 D = out.descent + out.pull;
+  const double len = D.norm();
+  Command c{D.x, len > 0 ? p.k_omega * D.y / len : 0.0};  // n = (1, 0): n . D and n x D
+  if (p.centre_target) c.omega += p.k_bearing * bearing;
+  out.command = clamp(c, p);
+  return out;
 }
 
 Command naive_command(const Point& target, const ControlParams& p) { return clamp(regulator(target, p), p); }
@@ -222,8 +348,8 @@ TrackStep track(const Scan& scan, const TrackerParams& tp, const std::optional<P
   out.tracked = true;
   out.tree = std::move(*tree);
   out.risks = escape_risks(out.map, out.tree, tp.risk);
-  out.gradient = tp.aggregation == Aggregation::Recursive ? recursive_average(out.tree, out.risks) : plain_average(out.risks);
-  out.command = risk_command(out.gradient, out.detection.center, tp.control);
+  out.risk = tp.aggregation == Aggregation::Recursive ? recursive_average(out.tree, out.risks) : plain_average(out.risks);
+  out.control = risk_control(out.risk, out.detection.center, tp.control);
   return out;
 }
 

@@ -28,8 +28,9 @@ TEST(TrackingFixtures, TargetOnARoundedRadialEdge) {
   std::ifstream in(std::string(PREIMAGE_FIXTURES) + "/scans/aces_scan49_target_on_radial_edge.log");
   std::string line;
   ASSERT_TRUE(std::getline(in, line));
-  const auto scan = parse_log_line(line, 50, "fixture");
+  auto scan = parse_log_line(line, 50, "fixture");
   ASSERT_TRUE(scan.has_value());
+  scan->angle_increment = M_PI / 179;  // the spacing replay gave 180 beams then (now CARMEN's pi/180)
   const LocalMap map = local_map_from_scan(*scan);
   const Point t(std::cos(scan->angle(90)), std::sin(scan->angle(90)));
   const EscapePathTree tree = escape_path_tree(map, t);
@@ -88,7 +89,7 @@ TEST(TrackingAggregation, ChairSceneRecursiveAverageDiffersFromPlain) {
   std::size_t largest = 0;
   for (auto& c : tree.child_paths()) largest = std::max(largest, c.size());
   EXPECT_GE(largest, 6u);
-  const Vec2 plain = plain_average(risks) * -1.0, rec = recursive_average(tree, risks) * -1.0;
+  const Vec2 plain = plain_average(risks).gradient * -1.0, rec = recursive_average(tree, risks).gradient * -1.0;
   EXPECT_LT(plain.x, 0) << "plain average should point left, towards the chair";
   EXPECT_GT(rec.x, 0) << "recursive average should point right";
   const double angle = std::acos(plain.dot(rec) / (plain.norm() * rec.norm()));
@@ -233,6 +234,34 @@ TEST(TrackingReplay, LogLinesAreParsedOrNamed) {
   EXPECT_THROW(parse_log_line("FLASER 180 1 2", 50, "l"), InputError);
 }
 
+
+TEST(TrackingReplay, FlaserBeamsAreSpacedAsCarmenDoes) {
+  // carmen_laser_get_angle_increment: 180 and 181 beams 1 deg apart, 360 and 361 half a
+  // degree, 400 and 401 a quarter; other counts spread over 180 deg. Replay used
+  // pi / (n - 1), turning the 180-beam scans of the Intel and ACES logs by up to 1 deg.
+  auto line = [](std::size_t n) {
+    std::string l = "FLASER " + std::to_string(n);
+    for (std::size_t i = 0; i < n; ++i) l += " 1.5";
+    return l + " 0 0 0 0 0 0 12.5 host 12.5";
+  };
+  const std::pair<std::size_t, double> cases[] = {{180, M_PI / 180}, {181, M_PI / 180}, {360, M_PI / 360}, {361, M_PI / 360},
+                                                  {400, M_PI / 720}, {401, M_PI / 720}, {100, M_PI / 99}};
+  for (const auto& [n, inc] : cases) {
+    const auto s = parse_log_line(line(n), 50, "log:1");
+    ASSERT_TRUE(s.has_value());
+    EXPECT_EQ(s->ranges.size(), n);
+    EXPECT_DOUBLE_EQ(s->angle_increment, inc) << n << " beams";
+    EXPECT_DOUBLE_EQ(s->angle_min, -M_PI / 2);
+  }
+  // The ACES scan of the fixture: 180 beams, the last at +89 deg, the 91st straight ahead.
+  std::ifstream in(std::string(PREIMAGE_FIXTURES) + "/scans/aces_scan49_target_on_radial_edge.log");
+  std::string l;
+  ASSERT_TRUE(std::getline(in, l));
+  const auto aces = parse_log_line(l, 50, "fixture");
+  ASSERT_TRUE(aces.has_value());
+  EXPECT_NEAR(aces->angle(179), 89 * M_PI / 180, 1e-12);
+  EXPECT_NEAR(aces->angle(90), 0, 1e-12);
+}
 
 TEST(TrackingFixtures, CoincidentVisibilityVerticesAreMerged) {
   // From (2, 6) in the lab, the ray through one chair corner meets another corner: V has

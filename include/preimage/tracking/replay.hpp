@@ -3,7 +3,8 @@
 //
 // Formats, one scan per line (other lines are skipped):
 //  * CARMEN: `FLASER n r1..rn x y theta odom_x odom_y odom_theta ipc_timestamp host
-//    logger_timestamp` (180 deg, beams -90..+90 deg), and `ROBOTLASER1 type start_angle
+//    logger_timestamp`, the first beam at -90 deg and the spacing CARMEN's own
+//    (flaser_angle_increment), and `ROBOTLASER1 type start_angle
 //    fov resolution max_range accuracy remission_mode n r1..rn ...`. ODOM, PARAM, NEFF
 //    and other messages and `#` comments are skipped.
 //  * Plain text: `timestamp angle_min angle_increment r1 r2 ... rn` (radians, metres);
@@ -15,6 +16,12 @@
 #include <string>
 
 namespace preimage::tracking {
+
+/// Spacing of the n beams of a FLASER line, as CARMEN's carmen_laser_get_angle_increment
+/// gives it: pi/180 for 180 or 181 beams (1 deg; 180 beams are 181 with the last dropped,
+/// so they span 179 deg), pi/360 for 360 or 361, pi/720 for 400 or 401, else the beams
+/// spread over 180 deg (pi / (n - 1)).
+double flaser_angle_increment(std::size_t n);
 
 /// The scan on one log line, or nothing for a line that carries none. `max_range` is the
 /// saturation range for formats that do not state it. Throws InputError

@@ -51,7 +51,15 @@ struct EdgeRisk {
   std::uint32_t path = 0;  // index into EscapePathTree::paths
   Exit exit = Exit::Corner;
   double r_o = 0, h = 0, phi = 0;
+  double d = 0, s = 0;     // last pivot w relative to the corner k: d = u x (w - k), s = u . (w - k)
   Vec2 gradient;           // grad phi^e with respect to the observer position
+};
+
+/// An average of the edges' risks: phi-bar and grad phi-bar (the same weights for both,
+/// so the gradient is the gradient of the value while the tree keeps its structure).
+struct RiskAverage {
+  double phi = 0;
+  Vec2 gradient;
 };
 
 /// Risk and gradient of one corner, as a function of the observer position alone (the
@@ -63,11 +71,11 @@ EdgeRisk corner_risk(const Point& observer, const Point& corner, const Point& pi
 /// as in section V.A, the distance regulator handles the sensor's range).
 std::vector<EdgeRisk> escape_risks(const LocalMap& map, const EscapePathTree& tree, const RiskParams& params);
 
-/// The plain average of grad phi^e over the occlusion edges (zero if none).
-Vec2 plain_average(const std::vector<EdgeRisk>& risks);
+/// The plain average of phi^e and grad phi^e over the occlusion edges (zero if none).
+RiskAverage plain_average(const std::vector<EdgeRisk>& risks);
 /// The recursive average over the escape-path tree (III.B): each node averages its
 /// children (subtrees that hold an occlusion edge, and the edges hanging from it), and the
 /// result is passed up to its parent; the root's value is returned.
-Vec2 recursive_average(const EscapePathTree& tree, const std::vector<EdgeRisk>& risks);
+RiskAverage recursive_average(const EscapePathTree& tree, const std::vector<EdgeRisk>& risks);
 
 }  // namespace preimage::tracking

@@ -69,8 +69,8 @@ struct MapParams {
 /// field-of-view edges. Throws InputError for a scan that is not valid.
 LocalMap local_map_from_scan(const Scan& scan, const MapParams& params = {});
 
-/// cos and sin of every beam angle, cached per thread for the last beam layout seen (a
-/// sensor keeps one layout, so TRACK computes no trigonometry per scan).
+/// cos and sin of every beam angle, cached per thread for the last two beam layouts seen
+/// (a sensor keeps one layout, so TRACK computes no trigonometry per scan).
 struct BeamDirections { std::vector<double> cos, sin; };
 const BeamDirections& beam_directions(const Scan& scan);
 

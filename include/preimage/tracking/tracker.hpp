@@ -16,6 +16,7 @@ struct DetectParams {
   double max_rms = 0.03;      // a circle fit worse than this (metres) is not the target
   std::size_t min_points = 3;
   double gate = 1.5;          // with a prior estimate, only clusters this close are considered
+  double rim = 0.06;          // neighbouring readings within radius + rim of the fitted centre are the target's too
 };
 
 /// The target as detected in a scan (section V.A: a cluster of points that fits the
@@ -24,7 +25,12 @@ struct Detection {
   bool found = false;
   Point center;               // sensor frame
   double rms = 0;             // of the fit
-  std::size_t first = 0, last = 0;  // beams that hit it
+  /// Beams that hit it, first to last (round through the seam of a 360-deg scan when
+  /// first > last): the fitted cluster, widened by the neighbours whose points lie on the
+  /// fitted circle (a beam grazing the rim reads a point further out, which the cluster's
+  /// jump test splits off; left in the scan it is a spike in V with a free edge a hair from
+  /// the target).
+  std::size_t first = 0, last = 0;
   std::size_t candidates = 0; // clusters that fitted
 };
 
@@ -37,17 +43,36 @@ Scan without_target(const Scan& scan, const Detection& detection);
 LocalMap local_map_without_target(const Scan& scan, const Detection& detection, const MapParams& params);
 
 struct ControlParams {
-  double k_v = 1.0, k_omega = 1.5;      // equation (6)
+  double k_v = 1.0;           // equation (6), on log phi-bar (m^2/s): v_max when phi-bar changes by 100% per metre
+  double k_omega = 1.5;       // equation (6)
   double k_distance = 0.8, k_bearing = 1.5;  // the regulator: preferred distance, centred target
   double preferred_distance = 1.5;
   double v_max = 1.0, omega_max = 2.0;
-  bool reverse = false;                 // may the observer back up (needs a 360-deg sensor)
+  bool reverse = false;       // may the observer back up (needs a 360-deg sensor)
+  bool centre_target = false; // a sensor cone: the regulator also turns to keep the target in it
 };
 struct Command { double v = 0, omega = 0; };
 
-/// Equation (6) steering along -grad (sensor frame, heading +x) plus the proportional
-/// regulator on the target's distance and bearing; clamped to the limits.
-Command risk_command(const Vec2& grad, const Point& target, const ControlParams& params);
+/// The risk strategy's command and its parts (sensor frame, heading +x), for logging.
+struct ControlTerms {
+  Vec2 descent;     // k_v (-grad phi-bar) / phi-bar = k_v (-grad log phi-bar)
+  Vec2 pull;        // the regulator: k_distance (|q^t| - preferred distance) towards the target
+  Command command;  // equation (6) on descent + pull, the centring term with a cone, clamped
+};
+
+/// The risk strategy's control (V.A). The desired motion is D = descent + pull, mapped to
+/// the unicycle by equation (6): v = n . D, omega = k_omega (n x D) / |D|, plus k_bearing
+/// times the target's bearing when `centre_target` (a sensor cone), clamped to the limits.
+/// Two departures from a literal eq. (6) on grad phi-bar, both found on the box scene
+/// (docs/tracking.md):
+///  * it descends log phi-bar (the same direction): |grad phi^e| is proportional to r_o, so
+///    eq. (6)'s speed, k_v |grad phi-bar|, vanishes as the observer nears the occluding
+///    corner although the target is about to escape; |grad log phi^e| = |2 grad r_o / r_o -
+///    (m + 2) grad h / h| does not, and does not depend on the arbitrary c of eq. (3);
+///  * the regulator's distance term joins D instead of being added to (v, omega), and it
+///    turns to centre the target only with a cone: otherwise it turned the observer back
+///    towards the target, cancelling the turn of eq. (6) towards -grad phi-bar.
+ControlTerms risk_control(const RiskAverage& risk, const Point& target, const ControlParams& params);
 /// The naive follower: only the regulator (steer at the target, keep the distance).
 Command naive_command(const Point& target, const ControlParams& params);
 
@@ -68,8 +93,8 @@ struct TrackStep {
   LocalMap map;
   EscapePathTree tree;
   std::vector<EdgeRisk> risks;
-  Vec2 gradient;   // grad phi-bar
-  Command command;
+  RiskAverage risk;      // phi-bar and grad phi-bar
+  ControlTerms control;  // control.command is the command
   bool tracked = false;  // target detected and inside V
 };
 

@@ -1,0 +1,230 @@
+// SPDX-License-Identifier: Apache-2.0
+#include <preimage/error.hpp>
+#include <preimage/render/svg.hpp>
+#include <preimage/tracking/evaluation.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+namespace preimage::tracking {
+
+namespace {
+constexpr double kZ = 1.959963984540054;  // the normal 97.5% quantile: two-sided 95% intervals
+}
+
+void set_sensor(SimulationParams& p, double fov) {
+  if (fov != 360 && fov != 180) throw InputError("--fov: expected 180 or 360, got " + std::to_string(fov));
+  p.laser.fov = fov * M_PI / 180;
+  p.laser.beams = fov == 360 ? 360 : 361;
+  p.tracker.control.reverse = fov == 360;
+  p.tracker.control.centre_target = fov != 360;
+}
+
+void summarise(CellResult& c) {
+  const std::size_t n = c.escape_times.size();
+  c.escaped = static_cast<std::size_t>(
+      std::count_if(c.escape_times.begin(), c.escape_times.end(), [&](double t) { return t < c.horizon; }));
+  if (n == 0) return;
+  const double nn = static_cast<double>(n);
+  // Wilson score interval for the fraction escaped.
+  const double p = static_cast<double>(c.escaped) / nn, z2 = kZ * kZ;
+  const double centre = (p + z2 / (2 * nn)) / (1 + z2 / nn);
+  const double half = kZ * std::sqrt(p * (1 - p) / nn + z2 / (4 * nn * nn)) / (1 + z2 / nn);
+  c.escaped_fraction = {p, std::max(0.0, centre - half), std::min(1.0, centre + half)};
+  // Mean of the escape times (each at most the horizon).
+  double sum = 0;
+  for (double t : c.escape_times) sum += t;
+  const double mean = sum / nn;
+  double ss = 0;
+  for (double t : c.escape_times) ss += (t - mean) * (t - mean);
+  const double se = n > 1 ? std::sqrt(ss / (nn - 1) / nn) : 0;
+  c.mean_escape = {mean, mean - kZ * se, mean + kZ * se};
+  // Median, and ranks j, k with P(t_(j) <= median <= t_(k)) ~ 95% (binomial, normal
+  // approximation), which holds whatever the distribution.
+  std::vector<double> s = c.escape_times;
+  std::sort(s.begin(), s.end());
+  const double med = n % 2 ? s[n / 2] : 0.5 * (s[n / 2 - 1] + s[n / 2]);
+  const double j = std::floor(nn / 2 - kZ * std::sqrt(nn) / 2), k = std::ceil(nn / 2 + kZ * std::sqrt(nn) / 2);
+  const auto rank = [&](double r) { return s[static_cast<std::size_t>(std::clamp(r, 1.0, nn)) - 1]; };
+  c.median_escape = {med, rank(j), rank(k)};
+}
+
+Interval paired_difference(const CellResult& a, const CellResult& b) {
+  const std::size_t n = std::min(a.escape_times.size(), b.escape_times.size());
+  if (n == 0) return {};
+  std::vector<double> d(n);
+  double sum = 0;
+  for (std::size_t i = 0; i < n; ++i) sum += d[i] = a.escape_times[i] - b.escape_times[i];
+  const double nn = static_cast<double>(n), mean = sum / nn;
+  double ss = 0;
+  for (double x : d) ss += (x - mean) * (x - mean);
+  const double se = n > 1 ? std::sqrt(ss / (nn - 1) / nn) : 0;
+  return {mean, mean - kZ * se, mean + kZ * se};
+}
+
+std::vector<CellResult> evaluate(const std::vector<TrackingScenario>& scenarios, const EvaluationParams& ep,
+                                 const std::function<void(std::size_t, std::size_t)>& progress) {
+  std::vector<CellResult> cells;
+  std::vector<std::size_t> scenario_of;
+  const double horizon = static_cast<double>(ep.steps) * SimulationParams{}.dt;
+  for (std::size_t s = 0; s < scenarios.size(); ++s)
+    for (double fov : ep.fovs)
+      for (bool dyn : ep.dynamics)
+        for (TargetPolicy pol : ep.policies)
+          for (Strategy st : ep.strategies) {
+            CellResult c;
+            c.scene = scenarios[s].name;
+            c.fov = fov;
+            c.dynamics = dyn;
+            c.policy = pol;
+            c.strategy = st;
+            c.horizon = horizon;
+            c.escape_times.assign(ep.seeds, horizon);
+            cells.push_back(std::move(c));
+            scenario_of.push_back(s);
+          }
+  for (auto& c : cells) {
+    SimulationParams probe;
+    set_sensor(probe, c.fov);  // reject a bad sensor before any thread starts
+  }
+  std::vector<double> var_v(cells.size() * ep.seeds), var_w(cells.size() * ep.seeds);
+  const std::size_t total = cells.size() * ep.seeds;
+  std::atomic<std::size_t> next{0};
+  std::size_t done = 0;
+  std::mutex mutex;
+  std::exception_ptr failure;
+  auto worker = [&]() {
+    for (;;) {
+      const std::size_t i = next.fetch_add(1);
+      if (i >= total) return;
+      const std::size_t ci = i / ep.seeds, seed = i % ep.seeds + 1;
+      CellResult& c = cells[ci];
+      try {
+        SimulationParams p;
+        set_sensor(p, c.fov);
+        p.policy = c.policy;
+        p.strategy = c.strategy;
+        p.steps = ep.steps;
+        p.seed = seed;
+        p.speed_ratio = ep.speed_ratio;
+        p.lookahead_headings = ep.lookahead_headings;
+        p.lookahead_steps = ep.lookahead_steps;
+        if (c.dynamics) {
+          p.accel = ep.accel;
+          p.alpha = ep.alpha;
+        }
+        p.stop_at_escape = true;
+        const SimulationResult r = simulate(scenarios[scenario_of[ci]], p);
+        c.escape_times[seed - 1] = r.escape_time >= 0 ? r.escape_time : horizon;  // distinct slots: no lock
+        var_v[i] = r.variation_v();
+        var_w[i] = r.variation_omega();
+      } catch (...) {
+        const std::lock_guard<std::mutex> lock(mutex);
+        if (!failure) failure = std::current_exception();
+        next = total;  // stop the other workers
+        return;
+      }
+      const std::lock_guard<std::mutex> lock(mutex);
+      ++done;
+      if (progress) progress(done, total);
+    }
+  };
+  const std::size_t jobs = std::clamp<std::size_t>(ep.jobs, 1, std::max<std::size_t>(total, 1));
+  std::vector<std::thread> threads;
+  for (std::size_t j = 1; j < jobs; ++j) threads.emplace_back(worker);
+  worker();
+  for (auto& t : threads) t.join();
+  if (failure) std::rethrow_exception(failure);
+  for (std::size_t ci = 0; ci < cells.size(); ++ci) {
+    double sv = 0, sw = 0;
+    for (std::size_t s = 0; s < ep.seeds; ++s) {
+      sv += var_v[ci * ep.seeds + s];
+      sw += var_w[ci * ep.seeds + s];
+    }
+    cells[ci].variation_v = ep.seeds ? sv / static_cast<double>(ep.seeds) : 0;
+    cells[ci].variation_omega = ep.seeds ? sw / static_cast<double>(ep.seeds) : 0;
+    summarise(cells[ci]);
+  }
+  return cells;
+}
+
+namespace {
+
+const char* strategy_colour(Strategy s) {
+  switch (s) {
+    case Strategy::Risk: return "#d62728";
+    case Strategy::Sde: return "#1f77b4";
+    case Strategy::Naive: return "#7f7f7f";
+  }
+  return "#000";
+}
+const char* strategy_dash(Strategy s) { return s == Strategy::Risk ? "" : s == Strategy::Sde ? "6 3" : "2 3"; }
+
+std::string fmt(const char* f, double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+
+}  // namespace
+
+std::string escape_time_cdf_figure(const std::vector<CellResult>& cells, const std::string& title) {
+  // Panels in the order the cells come: a new panel whenever the scene, sensor, dynamics
+  // or policy changes; four to a row.
+  std::vector<std::vector<const CellResult*>> panels;
+  for (const auto& c : cells) {
+    const CellResult* last = panels.empty() ? nullptr : panels.back().front();
+    if (!last || last->scene != c.scene || last->fov != c.fov || last->dynamics != c.dynamics || last->policy != c.policy)
+      panels.emplace_back();
+    panels.back().push_back(&c);
+  }
+  const std::size_t cols = std::min<std::size_t>(4, std::max<std::size_t>(panels.size(), 1));
+  const std::size_t rows = (panels.size() + cols - 1) / cols;
+  // World units: a panel's plot is 1 x 0.6, in a 1.25 x 0.95 cell; a header band on top.
+  const double pw = 1.25, ph = 0.95, top = 0.25;
+  const double W = pw * static_cast<double>(cols), H = ph * static_cast<double>(std::max<std::size_t>(rows, 1)) + top;
+  render::SvgCanvas svg(CGAL::Bbox_2(0, 0, W, H), 300 * static_cast<double>(cols));
+  svg.label(Point(0.05, H - 0.1), title, 14);
+  const render::Style frame{"none", "#444", 1, 1.0, ""}, grid{"none", "#ccc", 0.6, 1.0, ""};
+  for (std::size_t i = 0; i < panels.size(); ++i) {
+    const double x0 = pw * static_cast<double>(i % cols) + 0.15;
+    const double y0 = H - top - ph * static_cast<double>(i / cols + 1) + 0.18;
+    const CellResult& head = *panels[i].front();
+    auto at = [&](double t, double f) { return Point(x0 + t / head.horizon, y0 + 0.6 * f); };
+    svg.polygon({at(0, 0), at(head.horizon, 0), at(head.horizon, 1), at(0, 1)}, frame);
+    for (double f : {0.25, 0.5, 0.75}) svg.segment(at(0, f), at(head.horizon, f), grid);
+    svg.label(at(0, 1.08), head.scene + ", " + fmt("%.0f", head.fov) + "°" + (head.dynamics ? ", dynamics" : "") + ", " +
+                               to_string(head.policy), 10);
+    svg.label(at(0, -0.14), "0", 9);
+    svg.label(at(head.horizon * 0.92, -0.14), fmt("%.0f s", head.horizon), 9);
+    svg.label(at(-0.1 * head.horizon, 0.97), "1", 9);
+    for (const CellResult* c : panels[i]) {
+      std::vector<double> t = c->escape_times;
+      std::sort(t.begin(), t.end());
+      const double n = static_cast<double>(t.size());
+      std::vector<Point> line{at(0, 0)};
+      double f = 0;
+      for (double x : t) {
+        if (x >= c->horizon) break;
+        line.push_back(at(x, f));
+        f += 1 / n;
+        line.push_back(at(x, f));
+      }
+      line.push_back(at(c->horizon, f));
+      svg.polyline(line, render::Style{"none", strategy_colour(c->strategy), 1.8, 1.0, strategy_dash(c->strategy)},
+                   std::string(to_string(c->strategy)) + ": " + std::to_string(c->escaped) + " of " +
+                       std::to_string(c->escape_times.size()) + " lost by " + fmt("%.0f s", c->horizon));
+    }
+  }
+  for (Strategy s : {Strategy::Risk, Strategy::Sde, Strategy::Naive})
+    svg.legend(std::string(to_string(s)) + ": fraction of runs that lost the target by time t",
+               render::Style{"none", strategy_colour(s), 1.8, 1.0, strategy_dash(s)});
+  return svg.str();
+}
+
+}  // namespace preimage::tracking
