@@ -141,7 +141,7 @@ struct SimOptions {
   std::size_t steps = 300;
   std::uint64_t seed = 1;
   double fov = 360, accel = 0, alpha = 0, speed_ratio = 0.5;
-  std::size_t lookahead_steps = 5, headings = 16;
+  std::size_t lookahead_steps = 5, headings = 8;
 };
 
 SimulationParams sim_params(const SimOptions& o) {

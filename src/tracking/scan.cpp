@@ -45,11 +45,35 @@ Scan simulate_scan(const geometry::Environment& env, const Pose& pose, const Las
   s.ranges.resize(spec.beams);
   std::normal_distribution<double> noise(0.0, spec.noise_sigma);
   const double ox = pose.position.x(), oy = pose.position.y();
+  // All beams at once (the simulation's inner loop): the layout's cached directions turned
+  // by the heading, and the walls as plain arrays relative to the sensor. Each beam keeps
+  // the nearest wall it crosses, as geometry::ray_range does for one.
+  const BeamDirections& dir = beam_directions(s);
+  const double ch = std::cos(pose.heading), sh = std::sin(pose.heading);
+  const std::size_t E = env.num_vertices();
+  thread_local std::vector<double> wall;  // ax, ay, ex, ey per edge
+  wall.resize(4 * E);
+  for (std::size_t e = 0; e < E; ++e) {
+    const Point& a = env.vertex(e);
+    const Point& b = env.vertex(env.next(e));
+    wall[4 * e] = a.x() - ox;
+    wall[4 * e + 1] = a.y() - oy;
+    wall[4 * e + 2] = b.x() - a.x();
+    wall[4 * e + 3] = b.y() - a.y();
+  }
   for (std::size_t i = 0; i < spec.beams; ++i) {
-    const double a = pose.heading + s.angle(i);
-    double r = geometry::ray_range(env, pose.position, a, spec.max_range);
+    const double dx = ch * dir.cos[i] - sh * dir.sin[i], dy = sh * dir.cos[i] + ch * dir.sin[i];
+    double r = spec.max_range;
+    for (std::size_t e = 0; e < E; ++e) {
+      const double ax = wall[4 * e], ay = wall[4 * e + 1], ex = wall[4 * e + 2], ey = wall[4 * e + 3];
+      const double den = dx * ey - dy * ex;
+      if (den == 0) continue;  // parallel: a grazing beam returns from the next edge
+      const double t = (ax * ey - ay * ex) / den;  // along the beam
+      if (!(t > 0 && t < r)) continue;
+      const double f = (ax * dy - ay * dx) / den;  // along the edge
+      if (f >= 0 && f <= 1) r = t;
+    }
     if (target) {  // first hit on the target's circle, if nearer
-      const double dx = std::cos(a), dy = std::sin(a);
       const double cx = target->center.x() - ox, cy = target->center.y() - oy;
       const double b = cx * dx + cy * dy, c = cx * cx + cy * cy - target->radius * target->radius;
       const double disc = b * b - c;

@@ -262,47 +262,34 @@ class World {
     return target_step(t, walk(plan, step));
   }
 
-  // The look-ahead target's step (see TargetPolicy::Lookahead).
+  // The look-ahead target's step (see TargetPolicy::Lookahead): the adversarial move,
+  // unless a straight heading leaves sight sooner against the observer's simulated response.
   Point lookahead_step(const Observer& o, const Point& t, double step) const {
     const std::size_t k = std::max<std::size_t>(sp_.lookahead_steps, 1), H = sp_.lookahead_headings;
-    std::size_t best_depth = k + 1;  // the depth at which the best candidate escapes; k + 1: none does
-    double best_sde = std::numeric_limits<double>::infinity();
+    std::size_t best_depth = k + 1;  // the depth at which the best candidate leaves sight; k + 1: not within k
     Point best = t;
     TrackStep scratch;
     for (std::size_t c = 0; c <= H; ++c) {  // c = 0: the adversarial move; then the headings
       const double heading = 2 * M_PI * static_cast<double>(c) / static_cast<double>(std::max<std::size_t>(H, 1));
       const Vec2 dir{std::cos(heading), std::sin(heading)};
-      // Only an earlier escape can beat an escape found already.
-      const std::size_t limit = std::min(k, best_depth - 1);
+      // A heading is taken only if it escapes sooner than the best so far.
+      const std::size_t limit = c == 0 ? k : std::min(k, best_depth - 1);
       if (limit == 0) break;
       Observer O = o;
       Point T = t, first = t;
       std::vector<Point> plan;
-      std::size_t escaped = 0;
       for (std::size_t depth = 1; depth <= limit; ++depth) {
-        Point next = T;
-        if (c == 0) {
-          next = escape_step(O.pose.position, T, step, plan);
-        } else {
-          next = target_step(T, offset(T, dir * step));
-        }
+        const Point next = c == 0 ? escape_step(O.pose.position, T, step, plan) : target_step(T, offset(T, dir * step));
         if (depth == 1) first = next;
         T = next;
-        if (!sees(O.pose, T)) { escaped = depth; break; }
+        if (!sees(O.pose, T)) {
+          best_depth = depth;
+          best = first;
+          break;
+        }
         if (depth < limit) move(O, decide(O, T, nullptr, scratch), T);
       }
-      if (escaped) {
-        if (escaped < best_depth) { best_depth = escaped; best = first; }
-        continue;
-      }
-      if (best_depth <= k || limit < k) continue;
-      double sde = std::numeric_limits<double>::infinity();
-      try {
-        if (auto tree = try_escape_path_tree(exact_local_map(index_, O.pose.position), T)) sde = tree->sde();
-      } catch (const InputError&) {
-        // a degenerate V: no score for this candidate
-      }
-      if (sde < best_sde) { best_sde = sde; best = first; }
+      if (c == 0 && best_depth > k) best = first;  // the default
     }
     return best;
   }

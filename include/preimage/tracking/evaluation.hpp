@@ -27,7 +27,7 @@ struct EvaluationParams {
   std::vector<Strategy> strategies{Strategy::Risk, Strategy::Sde, Strategy::Naive};
   double accel = 0.5, alpha = 1.5;  // the dynamics of the "with dynamics" cells
   double speed_ratio = 0.5;
-  std::size_t lookahead_headings = 16, lookahead_steps = 5;
+  std::size_t lookahead_headings = 8, lookahead_steps = 5;
   std::size_t jobs = 1;             // worker threads
 };
 

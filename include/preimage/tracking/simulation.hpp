@@ -21,11 +21,11 @@ namespace preimage::tracking {
 ///  * Random: to random free points by shortest paths, at target_speed.
 ///  * Adversarial: along its current shortest escape path SEP(q^t, q^o) in the exact V of
 ///    the observer's true position, re-planned every step, at speed_ratio x v_max.
-///  * Lookahead: at speed_ratio x v_max, tries each of `lookahead_headings` straight
-///    headings and the adversarial move for `lookahead_steps` steps, simulating the
-///    observer's actual response to each (its strategy on noise-free scans), and takes the
-///    first step of the one that escapes soonest (or, if none escapes, leaves the target
-///    with the shortest SDE); re-planned every step.
+///  * Lookahead: at speed_ratio x v_max, plays the adversarial move and each of
+///    `lookahead_headings` straight headings for `lookahead_steps` steps against the
+///    observer's actual response (its strategy, run on noise-free scans), and takes the
+///    first step of the one that leaves sight soonest; the adversarial move if none does
+///    sooner than it. Re-planned every step.
 /// The random and planning targets pass obstacle corners their radius off: a disc wraps a
 /// corner (as the risk of eq. (3)-(4) assumes), and a path through the corner itself would
 /// put the target's centre on the boundary, where the adversary used to stall.
@@ -77,7 +77,7 @@ struct SimulationParams {
   /// Observer dynamics: the executed (v, omega) moves towards the command by at most
   /// accel dt and alpha dt per period (m/s^2, rad/s^2); 0 leaves that bound off.
   double accel = 0, alpha = 0;
-  std::size_t lookahead_headings = 16, lookahead_steps = 5;
+  std::size_t lookahead_headings = 8, lookahead_steps = 5;
   bool stop_at_escape = false;
   std::function<void(const StepRecord&)> on_step;  // called on every step but the last
 };
