@@ -275,31 +275,35 @@ Detection detect_target(const Scan& scan, const DetectParams& dp, const std::opt
 }
 
 namespace {
-// Replaces the target's readings in s (a copy of the scan) by the background. Its beams
-// run from d.first to d.last, round through the seam of a full circle if first > last.
-void fill_shadow(Scan& s, const Detection& d) {
+// Replaces the target's readings in s (a copy of the scan) by the background (see
+// without_target). Its beams run from d.first to d.last, round through the seam of a full
+// circle if first > last.
+void fill_shadow(Scan& s, const Detection& d, const MapParams& mp) {
   const std::size_t n = s.ranges.size(), m = (d.last + n - d.first) % n + 1;
   const bool round = s.full_circle() && m < n;
   const bool has_l = round || d.first > 0, has_r = round || d.last + 1 < n;
   const double left = s.ranges[(d.first + n - 1) % n], right = s.ranges[(d.last + 1) % n];
   const double rl = has_l ? left : (has_r ? right : s.max_range);
   const double rr = has_r ? right : rl;
-  const double sat = s.max_range - 0.05;
+  auto no_return = [&](double r) { return r <= mp.min_range || r >= s.max_range - mp.range_margin; };
+  const bool open = no_return(rl) || no_return(rr), one_surface = std::abs(rl - rr) <= mp.gap;
   for (std::size_t j = 0; j < m; ++j) {
     double& r = s.ranges[(d.first + j) % n];
-    if (rl >= sat || rr >= sat) {
+    if (open) {
       r = s.max_range;
-    } else {
+    } else if (one_surface) {
       const double f = static_cast<double>(j + 1) / static_cast<double>(m + 1);
       r = rl + f * (rr - rl);
+    } else {
+      r = std::max(rl, rr);
     }
   }
 }
 }  // namespace
 
-Scan without_target(const Scan& scan, const Detection& d) {
+Scan without_target(const Scan& scan, const Detection& d, const MapParams& mp) {
   Scan s = scan;
-  if (d.found) fill_shadow(s, d);
+  if (d.found) fill_shadow(s, d, mp);
   return s;
 }
 
@@ -307,7 +311,7 @@ LocalMap local_map_without_target(const Scan& scan, const Detection& d, const Ma
   if (!d.found) return local_map_from_scan(scan, mp);
   thread_local Scan filled;  // (assignment reuses its buffer: one scan per TRACK iteration)
   filled = scan;
-  fill_shadow(filled, d);
+  fill_shadow(filled, d, mp);
   return local_map_from_scan(filled, mp);
 }
 

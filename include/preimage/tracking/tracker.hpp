@@ -16,7 +16,7 @@ struct DetectParams {
   double max_rms = 0.03;      // a circle fit worse than this (metres) is not the target
   std::size_t min_points = 3;
   double gate = 1.5;          // with a prior estimate, only clusters this close are considered
-  double rim = 0.06;          // neighbouring readings within radius + rim of the fitted centre are the target's too
+  double rim = 0.03;          // neighbouring readings within radius + rim of the fitted centre are the target's too
 };
 
 /// The target as detected in a scan (section V.A: a cluster of points that fits the
@@ -35,9 +35,15 @@ struct Detection {
 };
 
 Detection detect_target(const Scan& scan, const DetectParams& params, const std::optional<Point>& prior = {});
-/// The scan with the target's readings replaced as if it were not there, interpolating
-/// the background across its shadow: the paper assumes no obstacle lies in the shadow.
-Scan without_target(const Scan& scan, const Detection& detection);
+/// The scan with the target's readings replaced as if it were not there. The paper (V.A)
+/// assumes no obstacle lies in the target's shadow. If the readings either side of it
+/// continue one surface (their ranges differ by at most the map's occlusion gap), the
+/// surface is interpolated across; otherwise the nearer surface ends at the shadow's edge
+/// and the shadow reads the farther one (max range if either side reads nothing), so the
+/// free edge past the nearer surface's end stays in V. (Interpolating across a depth step
+/// drew a wall through the shadow: a target touching the box corner hid the very free edge
+/// it escaped through.)
+Scan without_target(const Scan& scan, const Detection& detection, const MapParams& params = {});
 /// V(q^o) from the scan with the detected target's shadow filled (the scan as is if the
 /// target was not found).
 LocalMap local_map_without_target(const Scan& scan, const Detection& detection, const MapParams& params);
