@@ -2,6 +2,8 @@
 // One TRACK iteration (section IV) on a laser scan of the cluttered lab, split by stage,
 // at 360 and 720 readings; and the escape-path tree against the brute-force oracle
 // (visibility graph + Dijkstra) on the same local map. Target: >= 100,000 iterations/s.
+// And the simulated scan of the evaluation's inner loop against a ray cast per beam.
+#include <preimage/geometry/queries.hpp>
 #include <preimage/scene/scene.hpp>
 #include <preimage/tracking/tracker.hpp>
 
@@ -17,6 +19,11 @@ using namespace preimage::tracking;
 
 namespace {
 
+const scene::Scene& lab_scene() {
+  static const scene::Scene sc = scene::load_scene(std::string(PREIMAGE_BENCH_EXAMPLES) + "/tracking/lab.json");
+  return sc;
+}
+
 struct Case {
   Scan scan;
   LocalMap map;
@@ -28,8 +35,7 @@ const Case& scan_case(std::size_t beams) {
   static std::map<std::size_t, Case> cases;
   auto it = cases.find(beams);
   if (it != cases.end()) return it->second;
-  static const scene::Scene sc = scene::load_scene(std::string(PREIMAGE_BENCH_EXAMPLES) + "/tracking/lab.json");
-  const auto& env = sc.require_environment();
+  const auto& env = lab_scene().require_environment();
   LaserSpec spec;
   spec.beams = beams;
   spec.noise_sigma = 0.01;
@@ -79,6 +85,32 @@ void stage_command(benchmark::State& st) {
   const RiskAverage risk{0.5, Vec2{0.3, -0.2}};
   for (auto _ : st) benchmark::DoNotOptimize(risk_control(risk, c.target, c.params.control));
 }
+// Simulated scans, the evaluation's inner loop: all beams at once against one
+// geometry::ray_range call per beam (its trigonometry and all walls per beam).
+const Pose kScanPose{Point(2, 6), 0.3};
+const Disc kScanTarget{Point(5, 5.6), 0.2};
+void scan_batch(benchmark::State& st) {
+  const auto& env = lab_scene().require_environment();
+  for (auto _ : st) benchmark::DoNotOptimize(simulate_scan(env, kScanPose, LaserSpec{}, kScanTarget));
+}
+void scan_per_beam(benchmark::State& st) {
+  const auto& env = lab_scene().require_environment();
+  const LaserSpec spec;
+  std::vector<double> ranges(spec.beams);
+  for (auto _ : st) {
+    for (std::size_t i = 0; i < spec.beams; ++i) {
+      const double a = kScanPose.heading - M_PI + 2 * M_PI * static_cast<double>(i) / static_cast<double>(spec.beams);
+      double r = geometry::ray_range(env, kScanPose.position, a, spec.max_range);
+      const double dx = std::cos(a), dy = std::sin(a);
+      const double cx = kScanTarget.center.x() - kScanPose.position.x(), cy = kScanTarget.center.y() - kScanPose.position.y();
+      const double b = cx * dx + cy * dy, c = cx * cx + cy * cy - kScanTarget.radius * kScanTarget.radius;
+      if (b * b - c >= 0 && b - std::sqrt(b * b - c) > 0) r = std::min(r, b - std::sqrt(b * b - c));
+      ranges[i] = r;
+    }
+    benchmark::DoNotOptimize(ranges.data());
+  }
+}
+
 void ept_brute(benchmark::State& st) {
   const Case& c = scan_case(static_cast<std::size_t>(st.range(0)));
   for (auto _ : st) benchmark::DoNotOptimize(preimage::testing::brute_force_sde(c.map, c.target));
@@ -94,5 +126,7 @@ BENCHMARK(stage_gradient)->Name("stage/4-gradient")->ArgName("beams")->Arg(360)-
 BENCHMARK(stage_command)->Name("stage/5-command")->ArgName("beams")->Arg(360)->Unit(benchmark::kMicrosecond);
 BENCHMARK(stage_ept)->Name("escape-paths/preimage")->ArgName("beams")->Arg(720)->Unit(benchmark::kMicrosecond);
 BENCHMARK(ept_brute)->Name("escape-paths/reference")->ArgName("beams")->Arg(720)->Unit(benchmark::kMicrosecond);
+BENCHMARK(scan_batch)->Name("simulated-scan/preimage")->Unit(benchmark::kMicrosecond);
+BENCHMARK(scan_per_beam)->Name("simulated-scan/reference")->Unit(benchmark::kMicrosecond);
 
 int main(int argc, char** argv) { return preimage::bench::run_with_ratios(argc, argv); }

@@ -140,7 +140,7 @@ struct SimOptions {
   std::string policy = "scripted", strategy = "risk", aggregation = "recursive";
   std::size_t steps = 300;
   std::uint64_t seed = 1;
-  double fov = 360, accel = 0, alpha = 0, speed_ratio = 0.5;
+  double fov = 360, accel = 0, alpha = 0, speed_ratio = 0.5, start_spread = 0, heading_spread = 0;
   std::size_t lookahead_steps = 5, headings = 8;
 };
 
@@ -156,6 +156,8 @@ SimulationParams sim_params(const SimOptions& o) {
   p.speed_ratio = o.speed_ratio;
   p.lookahead_steps = o.lookahead_steps;
   p.lookahead_headings = o.headings;
+  p.start_spread = o.start_spread;
+  p.heading_spread = o.heading_spread * M_PI / 180;
   if (o.aggregation == "plain") p.tracker.aggregation = Aggregation::Plain;
   else if (o.aggregation != "recursive") throw InputError("--aggregation: expected recursive or plain, got \"" + o.aggregation + "\"");
   return p;
@@ -302,6 +304,7 @@ void run_evaluate(const std::vector<std::string>& files, const EvaluationParams&
       rows.push_back(row);
     }
     json out = {{"seeds", ep.seeds}, {"steps", ep.steps}, {"accel", ep.accel}, {"alpha", ep.alpha},
+                {"start_spread", ep.start_spread}, {"heading_spread_degrees", ep.heading_spread * 180 / M_PI},
                 {"speed_ratio", ep.speed_ratio}, {"lookahead_steps", ep.lookahead_steps},
                 {"lookahead_headings", ep.lookahead_headings}, {"cells", rows}};
     print_json(out);
@@ -330,7 +333,8 @@ void run_evaluate(const std::vector<std::string>& files, const EvaluationParams&
     std::cout << " " << tv << " |\n";
   }
   std::cout << "(" << ep.seeds << " seeds per cell, " << ep.steps / 10.0 << " s each; a run never lost counts "
-            << ep.steps / 10.0 << " s; dynamics: accel " << ep.accel << " m/s^2, alpha " << ep.alpha << " rad/s^2)\n";
+            << ep.steps / 10.0 << " s; starts spread " << ep.start_spread << " m and " << ep.heading_spread * 180 / M_PI
+            << " deg; dynamics: accel " << ep.accel << " m/s^2, alpha " << ep.alpha << " rad/s^2)\n";
 }
 
 // zlib says Z_BUF_ERROR ("unexpected end of file") when a gzip stream stops before its end.
@@ -447,6 +451,9 @@ void add_track_commands(CLI::App& app) {
       ->check(number_in(0, 10, true))->capture_default_str();
   add_count(s, "--lookahead-steps", so.lookahead_steps, 1, 50, "steps the lookahead target simulates ahead");
   add_count(s, "--headings", so.headings, 1, 360, "headings the lookahead target tries");
+  s->add_option("--start-spread", so.start_spread, "start observer and target up to this far off the scene's start, m (as evaluate does per seed)")
+      ->check(number_in(0, 100));
+  s->add_option("--heading-spread", so.heading_spread, "start heading up to this far off the scene's, degrees")->check(number_in(0, 180));
   s->add_flag("--json", s_json, "JSON output with both trajectories and the commands");
   s->add_option("--svg", s_svg, "draw both paths to this SVG file");
   s->add_option("--log", s_log, "per step, one JSON line: tree, risk terms, gradient (and its check on the exact map), command");
@@ -473,10 +480,16 @@ void add_track_commands(CLI::App& app) {
       ->check(number_in(0, 10, true))->capture_default_str();
   add_count(v, "--lookahead-steps", ep.lookahead_steps, 1, 50, "steps the lookahead target simulates ahead");
   add_count(v, "--headings", ep.lookahead_headings, 1, 360, "headings the lookahead target tries");
+  static double v_heading_spread = 15;
+  v->add_option("--start-spread", ep.start_spread, "each seed starts observer and target up to this far off the scene's start, m")
+      ->check(number_in(0, 100))->capture_default_str();
+  v->add_option("--heading-spread", v_heading_spread, "and the heading up to this far off, degrees")
+      ->check(number_in(0, 180))->capture_default_str();
   add_count(v, "--jobs", ep.jobs, 1, 256, "worker threads (default: the cores)");
   v->add_flag("--json", v_json, "JSON output: every cell with its escape times");
   v->add_option("--cdf-svg", v_cdf, "draw the escape-time CDFs to this SVG file");
   v->callback([] {
+    ep.heading_spread = v_heading_spread * M_PI / 180;
     ep.fovs = v_fovs;
     ep.dynamics.clear();
     for (const auto& d : v_dynamics) ep.dynamics.push_back(d == "on");

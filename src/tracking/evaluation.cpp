@@ -114,6 +114,8 @@ std::vector<CellResult> evaluate(const std::vector<TrackingScenario>& scenarios,
         p.speed_ratio = ep.speed_ratio;
         p.lookahead_headings = ep.lookahead_headings;
         p.lookahead_steps = ep.lookahead_steps;
+        p.start_spread = ep.start_spread;
+        p.heading_spread = ep.heading_spread;
         if (c.dynamics) {
           p.accel = ep.accel;
           p.alpha = ep.alpha;

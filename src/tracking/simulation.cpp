@@ -383,8 +383,35 @@ SimulationResult simulate(const TrackingScenario& sc, const SimulationParams& sp
   std::mt19937_64 rng(sp.seed);
   SimulationResult out;
   out.dt = sp.dt;
-  World::Observer o{sc.observer, Command{}, sc.target.center};  // it starts knowing where the target is
+  Pose start = sc.observer;
   Point t = sc.target.center;
+  if (sp.start_spread > 0 || sp.heading_spread > 0) {
+    // Where this seed starts: both up to start_spread off the scene's start (uniform in a
+    // disc), the heading up to heading_spread off, drawn from their own stream (so the
+    // range noise is the same as without) until the observer sees the target, clear of it,
+    // and a scripted target can walk straight to its first waypoint.
+    std::mt19937_64 jitter(sp.seed ^ 0x9e3779b97f4a7c15ull);
+    std::uniform_real_distribution<double> U(-1, 1);
+    auto disc = [&](const Point& p) {
+      for (;;) {
+        const Vec2 d{U(jitter), U(jitter)};
+        if (d.dot(d) <= 1) return offset(p, d * sp.start_spread);
+      }
+    };
+    for (int tries = 0; tries < 1000; ++tries) {
+      const Pose o{disc(sc.observer.position), sc.observer.heading + sp.heading_spread * U(jitter)};
+      const Point q = disc(sc.target.center);
+      if (!world.interior(o.position) || !world.interior(q) || dist(o.position, q) < sc.target.radius + 0.35 ||
+          !world.sees(o, q))
+        continue;
+      if (sp.policy == TargetPolicy::Scripted && !sc.target_path.empty() && !world.can_step(q, sc.target_path.front()))
+        continue;
+      start = o;
+      t = q;
+      break;
+    }
+  }
+  World::Observer o{start, Command{}, t};  // it starts knowing where the target is
 
   std::vector<Point> plan;  // the target's remaining path
   auto random_free = [&]() {

@@ -39,6 +39,27 @@ Aligned aligned(const Point& o, const Point& corner, const Point& target, const 
   return {RiskAverage{r.phi, g}, to_sensor(pose, target)};
 }
 
+// The fixture box_target_touching_the_box.json with the target swept round the box corner
+// (3.5, 3.9) at its radius + 5 mm, wherever its centre is in view: f(observer, target, a
+// noisy scan of it). Returns how many positions were tried.
+template <class F>
+int around_the_box_corner(const scene::Scene& sc, F f) {
+  const auto& env = sc.require_environment();
+  const Pose o{*sc.tracking->observer, sc.tracking->heading * M_PI / 180};
+  const Point corner(3.5, 3.9);
+  int tried = 0;
+  for (double a = 0; a <= M_PI / 2 + 1e-9; a += M_PI / 40) {
+    const Point t(corner.x() + 0.205 * std::cos(a), corner.y() + 0.205 * std::sin(a));
+    if (!geometry::visible(env, o.position, t)) continue;
+    LaserSpec laser;
+    laser.noise_sigma = 0.01;
+    std::mt19937_64 noise(static_cast<std::uint64_t>(a * 1000));
+    f(o, t, simulate_scan(env, o, laser, Disc{t, 0.2}, &noise));
+    ++tried;
+  }
+  return tried;
+}
+
 }  // namespace
 
 TEST(RiskControl, SpeedDoesNotVanishNearTheOccludingCorner) {
@@ -213,21 +234,11 @@ TEST(Detection, TargetTouchingAnObstacleIsFoundNearItsEstimate) {
   // a target whose centre it could see. Sweep the target round the box corner at its
   // radius + 5 mm, with 1 cm range noise and an estimate 5 cm off.
   const auto sc = scene::load_scene(fixture("box_target_touching_the_box.json"));
-  const auto& env = sc.require_environment();
-  const Pose o{*sc.tracking->observer, sc.tracking->heading * M_PI / 180};
-  const Point corner(3.5, 3.9);
-  int found = 0, tried = 0;
-  for (double a = 0; a <= M_PI / 2 + 1e-9; a += M_PI / 40) {
-    const Point t(corner.x() + 0.205 * std::cos(a), corner.y() + 0.205 * std::sin(a));
-    if (!geometry::visible(env, o.position, t)) continue;
-    LaserSpec laser;
-    laser.noise_sigma = 0.01;
-    std::mt19937_64 noise(static_cast<std::uint64_t>(a * 1000));
-    const Scan scan = simulate_scan(env, o, laser, Disc{t, 0.2}, &noise);
+  int found = 0;
+  const int tried = around_the_box_corner(sc, [&](const Pose& o, const Point& t, const Scan& scan) {
     const Detection d = detect_target(scan, DetectParams{}, to_sensor(o, Point(t.x() + 0.05, t.y())));
-    ++tried;
-    if (d.found && dist(to_world(o, d.center), t) < 0.03) ++found;
-  }
+    found += d.found && dist(to_world(o, d.center), t) < 0.03;
+  });
   EXPECT_GT(tried, 10);
   EXPECT_EQ(found, tried);
 }
@@ -240,23 +251,13 @@ TEST(Detection, ShadowFillKeepsTheEscapePastTheObstacleTheTargetTouches) {
   // paper assumes (no obstacle in the shadow: the nearer surface ends at its edge), TRACK's
   // map must not hide the escape: its SDE is at most the exact one plus 10 cm.
   const auto sc = scene::load_scene(fixture("box_target_touching_the_box.json"));
-  const auto& env = sc.require_environment();
-  const geometry::VisibilityIndex index(env);
-  const Pose o{*sc.tracking->observer, sc.tracking->heading * M_PI / 180};
-  const Point corner(3.5, 3.9);
-  int tried = 0;
-  for (double a = 0; a <= M_PI / 2 + 1e-9; a += M_PI / 40) {
-    const Point t(corner.x() + 0.205 * std::cos(a), corner.y() + 0.205 * std::sin(a));
-    if (!geometry::visible(env, o.position, t)) continue;
-    LaserSpec laser;
-    laser.noise_sigma = 0.01;
-    std::mt19937_64 noise(static_cast<std::uint64_t>(a * 1000));
-    const TrackStep ts = track(simulate_scan(env, o, laser, Disc{t, 0.2}, &noise), TrackerParams{}, to_sensor(o, t));
-    ASSERT_TRUE(ts.tracked) << "a " << a;
+  const geometry::VisibilityIndex index(sc.require_environment());
+  const int tried = around_the_box_corner(sc, [&](const Pose& o, const Point& t, const Scan& scan) {
+    const TrackStep ts = track(scan, TrackerParams{}, to_sensor(o, t));
+    ASSERT_TRUE(ts.tracked) << t;
     const double exact = escape_path_tree(exact_local_map(index, o.position), t).sde();
-    EXPECT_LE(ts.tree.sde(), exact + 0.1) << "a " << a;
-    ++tried;
-  }
+    EXPECT_LE(ts.tree.sde(), exact + 0.1) << t;
+  });
   EXPECT_GT(tried, 10);
 }
 

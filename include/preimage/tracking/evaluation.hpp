@@ -28,6 +28,9 @@ struct EvaluationParams {
   double accel = 0.5, alpha = 1.5;  // the dynamics of the "with dynamics" cells
   double speed_ratio = 0.5;
   std::size_t lookahead_headings = 8, lookahead_steps = 5;
+  /// Start of each seed's runs (the same for the three strategies): up to this far off
+  /// the scene's start, so that the seeds sample situations, not only range noise.
+  double start_spread = 0.5, heading_spread = 15 * M_PI / 180;
   std::size_t jobs = 1;             // worker threads
 };
 

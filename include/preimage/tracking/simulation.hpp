@@ -78,6 +78,10 @@ struct SimulationParams {
   /// accel dt and alpha dt per period (m/s^2, rad/s^2); 0 leaves that bound off.
   double accel = 0, alpha = 0;
   std::size_t lookahead_headings = 8, lookahead_steps = 5;
+  /// Each seed starts the observer and the target up to start_spread metres off the
+  /// scenario's start (uniform in a disc) and the heading up to heading_spread radians off,
+  /// keeping the target in view; 0 and 0: the scenario's start.
+  double start_spread = 0, heading_spread = 0;
   bool stop_at_escape = false;
   std::function<void(const StepRecord&)> on_step;  // called on every step but the last
 };
