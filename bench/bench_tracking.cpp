@@ -126,7 +126,7 @@ BENCHMARK(stage_gradient)->Name("stage/4-gradient")->ArgName("beams")->Arg(360)-
 BENCHMARK(stage_command)->Name("stage/5-command")->ArgName("beams")->Arg(360)->Unit(benchmark::kMicrosecond);
 BENCHMARK(stage_ept)->Name("escape-paths/preimage")->ArgName("beams")->Arg(720)->Unit(benchmark::kMicrosecond);
 BENCHMARK(ept_brute)->Name("escape-paths/reference")->ArgName("beams")->Arg(720)->Unit(benchmark::kMicrosecond);
-BENCHMARK(scan_batch)->Name("simulated-scan/preimage")->Unit(benchmark::kMicrosecond);
-BENCHMARK(scan_per_beam)->Name("simulated-scan/reference")->Unit(benchmark::kMicrosecond);
+BENCHMARK(scan_batch)->Name("simulated-scan/preimage/lab-360-beams")->Unit(benchmark::kMicrosecond);
+BENCHMARK(scan_per_beam)->Name("simulated-scan/reference/lab-360-beams")->Unit(benchmark::kMicrosecond);
 
 int main(int argc, char** argv) { return preimage::bench::run_with_ratios(argc, argv); }

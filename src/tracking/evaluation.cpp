@@ -205,6 +205,7 @@ std::string escape_time_cdf_figure(const std::vector<CellResult>& cells, const s
     svg.label(at(0, -0.14), "0", 9);
     svg.label(at(head.horizon * 0.92, -0.14), fmt("%.0f s", head.horizon), 9);
     svg.label(at(-0.1 * head.horizon, 0.97), "1", 9);
+    svg.label(at(-0.13 * head.horizon, 0.47), "0.5", 9);
     for (const CellResult* c : panels[i]) {
       std::vector<double> t = c->escape_times;
       std::sort(t.begin(), t.end());

@@ -25,6 +25,8 @@ cli_test(track_simulate_bad_alpha fail "--alpha: expected a number in \\(0, 1000
 cli_test(track_simulate_bad_headings fail "--headings: expected an integer from 1 to 360, got 0" - track simulate ${TRACKING}/box.json --headings 0)
 cli_test(track_simulate_bad_lookahead fail "--lookahead-steps: expected an integer from 1 to 50, got 51" - track simulate ${TRACKING}/box.json --lookahead-steps 51)
 cli_test(track_simulate_bad_speed_ratio fail "--speed-ratio: expected a number in \\(0, 10\\], got 0" - track simulate ${TRACKING}/box.json --speed-ratio 0)
+cli_test(track_simulate_bad_start_spread fail "--start-spread: expected a number in \\[0, 100\\], got -1" - track simulate ${TRACKING}/box.json --start-spread -1)
+cli_test(track_evaluate_bad_heading_spread fail "--heading-spread: expected a number in \\[0, 180\\], got 200" - track evaluate ${TRACKING}/box.json --heading-spread 200)
 cli_test(track_ept_huge_m fail "--m: expected an integer from 0 to 16, got 2147483647" - track ept ${TRACKING}/box.json --m 2147483647)
 cli_test(track_ept_negative_m fail "--m: expected an integer from 0 to 16, got -1" - track ept ${TRACKING}/box.json --m -1)
 cli_test(track_ept_bad_radius fail "--radius: expected a number in \\(0, 100\\], got -0.2" - track ept ${TRACKING}/box.json --radius -0.2)
@@ -53,3 +55,6 @@ endif()
 add_test(NAME cli.track_simulate_huge_steps_progress_interrupted
   COMMAND bash -c "cmd=\"timeout -s INT 2.5 $0 track simulate $1 --steps 1000000\"; out=$(script -qec \"$cmd\" /dev/null); rc=$?; echo \"$out\"; [ $rc -eq 124 ] && grep -Eq 'simulate: [0-9]+ of 1000000' <<<\"$out\""
           $<TARGET_FILE:preimage_cli> ${TRACKING}/corridor.json)
+add_test(NAME cli.track_evaluate_huge_seeds_progress_interrupted
+  COMMAND bash -c "cmd=\"timeout -s INT 2.5 $0 track evaluate $1 --seeds 10000\"; out=$(script -qec \"$cmd\" /dev/null); rc=$?; echo \"$out\"; [ $rc -eq 124 ] && grep -Eq 'evaluate: [0-9]+ of 480000' <<<\"$out\""
+          $<TARGET_FILE:preimage_cli> ${TRACKING}/box.json)
