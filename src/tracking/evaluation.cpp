@@ -125,6 +125,14 @@ std::vector<CellResult> evaluate(const std::vector<TrackingScenario>& scenarios,
         c.escape_times[seed - 1] = r.escape_time >= 0 ? r.escape_time : horizon;  // distinct slots: no lock
         var_v[i] = r.variation_v();
         var_w[i] = r.variation_omega();
+      } catch (const InputError& e) {  // say which run
+        const std::lock_guard<std::mutex> lock(mutex);
+        if (!failure)
+          failure = std::make_exception_ptr(InputError(c.scene + ", " + std::to_string(static_cast<int>(c.fov)) + " deg" +
+                                                       (c.dynamics ? ", dynamics" : "") + ", " + to_string(c.policy) + ", " +
+                                                       to_string(c.strategy) + ", seed " + std::to_string(seed) + ": " + e.what()));
+        next = total;
+        return;
       } catch (...) {
         const std::lock_guard<std::mutex> lock(mutex);
         if (!failure) failure = std::current_exception();
