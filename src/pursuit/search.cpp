@@ -1,0 +1,353 @@
+// SPDX-License-Identifier: Apache-2.0
+// Dijkstra over information states (see search.hpp). A state is a sorted tuple of cells
+// (interned) and one label per unit of that tuple; transitions are compiled once per
+// (tuple, moving slot, boundary) into a filter::ShadowTransition.
+#include <preimage/pursuit/search.hpp>
+
+#include <preimage/error.hpp>
+#include <preimage/geometry/queries.hpp>
+#include <preimage/pursuit/joint.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <queue>
+#include <stdexcept>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace preimage::pursuit {
+
+const char* to_string(SearchResult::Outcome o) {
+  switch (o) {
+    case SearchResult::Outcome::Plan: return "plan";
+    case SearchResult::Outcome::NoPlan: return "no plan";
+    case SearchResult::Outcome::Budget: return "budget exhausted";
+  }
+  return "?";
+}
+
+namespace {
+
+double dist(const Point& a, const Point& b) { return std::hypot(a.x() - b.x(), a.y() - b.y()); }
+
+// Tuples of cells (sorted), their units and compiled transitions.
+class JointSpace {
+ public:
+  struct Step {
+    std::uint32_t to;                   // new tuple
+    std::vector<std::uint32_t> slot_of; // new sorted slot of each old slot
+    filter::ShadowTransition tr;
+  };
+
+  JointSpace(const ConservativeCells& C, std::size_t k) : C_(C), k_(k) {}
+
+  std::uint32_t intern(const std::vector<std::uint32_t>& cells) {
+    auto [it, fresh] = id_.try_emplace(cells, static_cast<std::uint32_t>(tuples_.size()));
+    if (fresh) {
+      tuples_.push_back(cells);
+      units_.push_back(compute_units(cells));
+    }
+    return it->second;
+  }
+  const std::vector<std::uint32_t>& cells(std::uint32_t t) const { return tuples_[t]; }
+  std::size_t num_units(std::uint32_t t) const { return units_[t].size(); }
+
+  const Step& step(std::uint32_t t, std::uint32_t slot, std::uint32_t b) {
+    const std::uint64_t key = (std::uint64_t{t} * k_ + slot) * C_.boundaries().size() + b;
+    auto it = steps_.find(key);
+    if (it != steps_.end()) return it->second;
+    const CellBoundary& B = C_.boundaries()[b];
+    std::vector<std::uint32_t> moved = tuples_[t];
+    const std::uint32_t c = moved[slot];
+    const bool rightward = c == B.left;
+    if (!rightward && c != B.right) throw std::logic_error("pursuit: a move across a boundary of another cell");
+    moved[slot] = rightward ? B.right : B.left;
+    const filter::ShadowEvent& ev = rightward ? B.to_right : B.to_left;
+    std::vector<std::uint32_t> order(k_);
+    std::iota(order.begin(), order.end(), 0u);
+    std::stable_sort(order.begin(), order.end(), [&](auto a, auto b2) { return moved[a] < moved[b2]; });
+    Step s;
+    s.slot_of.assign(k_, 0);
+    std::vector<std::uint32_t> sorted(k_);
+    for (std::uint32_t p = 0; p < k_; ++p) sorted[p] = moved[order[p]], s.slot_of[order[p]] = p;
+    s.to = intern(sorted);
+    const auto& U = units_[t];
+    const auto& U2 = units_[s.to];
+    filter::ShadowEvent e{U.size(), U2.size(), {}};
+    if (k_ == 1) {
+      e.pairs = ev.pairs;
+    } else {
+      std::map<std::vector<std::uint32_t>, std::uint32_t> index;
+      for (std::uint32_t u = 0; u < U.size(); ++u) index.emplace(U[u], u);
+      for (std::uint32_t j = 0; j < U2.size(); ++j) {
+        std::vector<std::uint32_t> old(k_);
+        for (std::uint32_t l = 0; l < k_; ++l) old[l] = U2[j][s.slot_of[l]];
+        const std::uint32_t mine = old[slot];
+        for (auto [a, a2] : ev.pairs) {
+          if (a2 != mine) continue;
+          old[slot] = a;
+          if (auto f = index.find(old); f != index.end()) e.pairs.push_back({f->second, j});
+        }
+      }
+    }
+    s.tr = filter::ShadowTransition(e);
+    return steps_.emplace(key, std::move(s)).first->second;
+  }
+
+ private:
+  std::vector<std::vector<std::uint32_t>> compute_units(const std::vector<std::uint32_t>& cells) const {
+    std::vector<std::vector<std::uint32_t>> units;
+    if (k_ == 1) {
+      for (std::uint32_t c = 0; c < C_.cell(cells[0]).shadows.num_components; ++c) units.push_back({c});
+      return units;
+    }
+    std::vector<Point> at;
+    std::vector<const Shadows*> sh;
+    for (auto c : cells) at.push_back(C_.cell(c).sample), sh.push_back(&C_.cell(c).shadows);
+    return joint_units(overlay_shadows(C_.environment(), at, sh));
+  }
+
+  const ConservativeCells& C_;
+  std::size_t k_;
+  std::map<std::vector<std::uint32_t>, std::uint32_t> id_;
+  std::vector<std::vector<std::uint32_t>> tuples_;
+  std::vector<std::vector<std::vector<std::uint32_t>>> units_;
+  std::unordered_map<std::uint64_t, Step> steps_;
+};
+
+struct StateKey {
+  std::uint32_t tuple;
+  filter::ShadowLabels labels;
+  bool operator==(const StateKey& o) const { return tuple == o.tuple && labels == o.labels; }
+};
+struct StateHash {
+  std::size_t operator()(const StateKey& k) const { return k.labels.hash() ^ (std::size_t{k.tuple} * 0x9e3779b97f4a7c15ull); }
+};
+
+struct Node {
+  StateKey key;
+  double dist;
+  std::uint32_t parent;
+  std::uint32_t slot, boundary;
+};
+
+std::uint32_t start_cell_of(const ConservativeCells& C, const Point& p) {
+  const auto loc = geometry::locate(C.environment(), p);
+  if (!loc.in_free_space())
+    throw InputError("--start " + geometry::format_point(p) + " is not in free space (it is " + geometry::to_string(loc.kind) + ")");
+  const auto c = C.locate(p);
+  if (!c) throw std::logic_error("pursuit: a free-space point in no cell");
+  return *c;
+}
+
+void certify(const geometry::Environment& env, const std::vector<Point>& path, std::size_t pursuer) {
+  for (std::size_t i = 0; i + 1 < path.size(); ++i)
+    if (path[i] != path[i + 1] && !geometry::visible(env, path[i], path[i + 1]))
+      throw std::logic_error("pursuit: plan segment " + std::to_string(i) + " of pursuer " + std::to_string(pursuer) +
+                             " leaves free space");
+}
+
+// Cost of moving from c across b (the walk between the cells' samples).
+double move_cost(const ConservativeCells& C, std::uint32_t c, std::uint32_t b) {
+  const CellBoundary& B = C.boundaries()[b];
+  const bool right = c == B.left;
+  const Point &near_from = right ? B.near_left : B.near_right, &near_to = right ? B.near_right : B.near_left;
+  return dist(C.cell(c).sample, near_from) + dist(near_from, near_to) + dist(near_to, C.cell(right ? B.right : B.left).sample);
+}
+
+Plan build_plan(const ConservativeCells& C, std::size_t k, const Point& start, std::uint32_t c0,
+                const std::vector<std::pair<std::uint32_t, std::uint32_t>>& moves, JointSpace& J, std::uint32_t t0) {
+  Plan plan;
+  plan.start_cell = c0;
+  plan.paths.assign(k, {start});
+  std::vector<std::uint32_t> phys(k);
+  std::iota(phys.begin(), phys.end(), 0u);
+  std::vector<std::uint32_t> cell(k, c0);
+  if (k > 1 && start != C.cell(c0).sample)
+    for (auto& p : plan.paths) p.push_back(C.cell(c0).sample);
+  std::uint32_t t = t0;
+  for (auto [slot, b] : moves) {
+    const CellBoundary& B = C.boundaries()[b];
+    const std::uint32_t who = phys[slot], from = cell[who];
+    const bool right = from == B.left;
+    const std::uint32_t to = right ? B.right : B.left;
+    const Point &nf = right ? B.near_left : B.near_right, &nt = right ? B.near_right : B.near_left;
+    plan.moves.push_back({who, b, from, to});
+    if (k == 1) {
+      plan.paths[0].push_back(nf);
+      plan.paths[0].push_back(nt);
+    } else {
+      for (std::uint32_t p = 0; p < k; ++p) {
+        const Point here = plan.paths[p].back();
+        if (p == who) {
+          plan.paths[p].push_back(nf);
+          plan.paths[p].push_back(nt);
+          plan.paths[p].push_back(C.cell(to).sample);
+        } else {
+          for (int r = 0; r < 3; ++r) plan.paths[p].push_back(here);
+        }
+      }
+    }
+    cell[who] = to;
+    const auto& s = J.step(t, slot, b);
+    std::vector<std::uint32_t> np(k);
+    for (std::uint32_t l = 0; l < k; ++l) np[s.slot_of[l]] = phys[l];
+    phys = np;
+    t = s.to;
+  }
+  for (std::size_t p = 0; p < k; ++p) {
+    certify(C.environment(), plan.paths[p], p);
+    for (std::size_t i = 0; i + 1 < plan.paths[p].size(); ++i) plan.length += dist(plan.paths[p][i], plan.paths[p][i + 1]);
+  }
+  return plan;
+}
+
+}  // namespace
+
+SearchResult search(const ConservativeCells& C, std::size_t k, const SearchOptions& o) {
+  if (k == 0) throw InputError("--pursuers: at least one pursuer is needed");
+  SearchResult res;
+  res.pursuers = k;
+  JointSpace J(C, k);
+  std::vector<Node> nodes;
+  std::unordered_map<StateKey, std::uint32_t, StateHash> seen;
+  using QItem = std::pair<double, std::uint32_t>;
+  std::priority_queue<QItem, std::vector<QItem>, std::greater<>> queue;
+  auto offer = [&](StateKey key, double d, std::uint32_t parent, std::uint32_t slot, std::uint32_t b) -> bool {
+    auto [it, fresh] = seen.try_emplace(key, static_cast<std::uint32_t>(nodes.size()));
+    if (fresh) {
+      if (nodes.size() >= o.max_states) return false;
+      nodes.push_back({std::move(key), d, parent, slot, b});
+      queue.push({d, it->second});
+    } else if (d < nodes[it->second].dist) {
+      nodes[it->second].dist = d, nodes[it->second].parent = parent, nodes[it->second].slot = slot, nodes[it->second].boundary = b;
+      queue.push({d, it->second});
+    }
+    return true;
+  };
+  std::vector<std::uint32_t> sources;
+  std::optional<std::uint32_t> c0;
+  if (o.start) c0 = start_cell_of(C, *o.start);
+  for (std::uint32_t c = 0; c < C.size(); ++c) {
+    if (c0 && c != *c0) continue;
+    const std::uint32_t t = J.intern(std::vector<std::uint32_t>(k, c));
+    const double d0 = o.start && k > 1 ? k * dist(*o.start, C.cell(c).sample) : 0;
+    offer({t, filter::ShadowLabels(J.num_units(t), true)}, d0, kNone, 0, 0);
+  }
+  std::optional<std::uint32_t> goal;
+  bool budget = false;
+  std::vector<char> done;
+  while (!queue.empty() && !goal && !budget) {
+    const auto [d, id] = queue.top();
+    queue.pop();
+    if (d > nodes[id].dist) continue;
+    if (nodes[id].key.labels.all_clear()) {
+      goal = id;
+      break;
+    }
+    const StateKey key = nodes[id].key;  // copy: nodes may grow
+    const auto tuple = J.cells(key.tuple);
+    for (std::uint32_t slot = 0; slot < k && !budget; ++slot) {
+      if (slot > 0 && tuple[slot] == tuple[slot - 1]) continue;  // interchangeable pursuers in one cell
+      for (std::uint32_t b : C.boundaries_of(tuple[slot])) {
+        const auto& s = J.step(key.tuple, slot, b);
+        ++res.transitions;
+        if (!offer({s.to, s.tr.apply(key.labels)}, d + move_cost(C, tuple[slot], b), id, slot, b)) {
+          budget = true;
+          break;
+        }
+      }
+    }
+  }
+  res.states = nodes.size();
+  if (!goal) {
+    res.outcome = budget ? SearchResult::Outcome::Budget : SearchResult::Outcome::NoPlan;
+    return res;
+  }
+  res.outcome = SearchResult::Outcome::Plan;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> moves;
+  std::uint32_t id = *goal;
+  while (nodes[id].parent != kNone) moves.push_back({nodes[id].slot, nodes[id].boundary}), id = nodes[id].parent;
+  std::reverse(moves.begin(), moves.end());
+  const std::uint32_t t0 = nodes[id].key.tuple, start_cell = J.cells(t0)[0];
+  const Point start = o.start ? *o.start : C.cell(start_cell).sample;
+  res.plan = build_plan(C, k, start, start_cell, moves, J, t0);
+  return res;
+}
+
+SearchResult least_pursuers(const ConservativeCells& C, std::size_t max_pursuers, const SearchOptions& o,
+                            std::vector<SearchResult>* results) {
+  SearchResult last;
+  for (std::size_t k = 1; k <= max_pursuers; ++k) {
+    last = search(C, k, o);
+    if (results) results->push_back(last);
+    if (last.outcome == SearchResult::Outcome::Plan) break;
+  }
+  return last;
+}
+
+namespace {
+filter::ShadowLabels cross(const ConservativeCells& C, std::uint32_t c, std::uint32_t b, const filter::ShadowLabels& l,
+                           std::uint32_t& to) {
+  const CellBoundary& B = C.boundaries()[b];
+  const bool right = c == B.left;
+  to = right ? B.right : B.left;
+  return filter::update(l, right ? B.to_right : B.to_left);
+}
+}  // namespace
+
+std::optional<std::size_t> fewest_crossings(const ConservativeCells& C, std::uint32_t start_cell) {
+  std::unordered_set<StateKey, StateHash> seen;
+  std::vector<StateKey> layer{{start_cell, filter::ShadowLabels(C.cell(start_cell).shadows.num_components, true)}};
+  seen.insert(layer[0]);
+  for (std::size_t depth = 0; !layer.empty(); ++depth) {
+    std::vector<StateKey> next;
+    for (auto& s : layer) {
+      if (s.labels.all_clear()) return depth;
+      for (std::uint32_t b : C.boundaries_of(s.tuple)) {
+        std::uint32_t to;
+        StateKey n{0, cross(C, s.tuple, b, s.labels, to)};
+        n.tuple = to;
+        if (seen.insert(n).second) next.push_back(std::move(n));
+      }
+    }
+    layer.swap(next);
+  }
+  return std::nullopt;
+}
+
+std::optional<std::size_t> search_without_merging(const ConservativeCells& C, std::uint32_t start_cell, std::size_t max_depth,
+                                                  std::size_t max_nodes, std::size_t& nodes, bool& complete) {
+  nodes = 0;
+  complete = true;
+  std::optional<std::size_t> best;
+  std::unordered_set<StateKey, StateHash> on_path;
+  // Branch and bound over walks; no table of visited states across walks.
+  auto dfs = [&](auto&& self, const StateKey& s, std::size_t depth) -> void {
+    if (!complete) return;
+    if (++nodes > max_nodes) {
+      complete = false;
+      return;
+    }
+    if (s.labels.all_clear()) {
+      if (!best || depth < *best) best = depth;
+      return;
+    }
+    if (depth == max_depth || (best && depth + 1 >= *best)) return;
+    on_path.insert(s);
+    for (std::uint32_t b : C.boundaries_of(s.tuple)) {
+      std::uint32_t to;
+      StateKey n{0, cross(C, s.tuple, b, s.labels, to)};
+      n.tuple = to;
+      if (on_path.count(n)) continue;
+      self(self, n, depth + 1);
+    }
+    on_path.erase(s);
+  };
+  dfs(dfs, {start_cell, filter::ShadowLabels(C.cell(start_cell).shadows.num_components, true)}, 0);
+  return best;
+}
+
+}  // namespace preimage::pursuit
