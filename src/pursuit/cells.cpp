@@ -48,6 +48,42 @@ std::optional<std::uint32_t> ConservativeCells::locate(const Point& p) const {
   return std::nullopt;
 }
 
+std::optional<std::vector<ConservativeCells::Crossing>> ConservativeCells::walk(const Point& p, const Point& q) const {
+  const auto& A = *arr_;
+  const auto& H = A.half_edges();
+  const auto& V = A.vertices();
+  const ExactPoint ep = geometry::to_exact(p), eq = geometry::to_exact(q);
+  auto c = A.locate(ep);
+  if (!c || !A.locate(eq)) return std::nullopt;
+  std::vector<Crossing> out;
+  for (std::size_t guard = 0; guard <= boundaries_.size() + 1; ++guard) {
+    if (A.strictly_inside(*c, eq)) return out;
+    // The convex cell is left by the half-edge whose origin is right of p -> q and whose
+    // target is left of it.
+    std::uint32_t exit = kNone;
+    for (std::uint32_t h : A.region_half_edges(*c)) {
+      const int oa = orientation(ep, eq, V[H[h].origin]), ob = orientation(ep, eq, V[H[h].target]);
+      if (oa == 0 || ob == 0) {
+        // A vertex of the convex cell ahead on the line is where the segment leaves it.
+        const ExactPoint& w = oa == 0 ? V[H[h].origin] : V[H[h].target];
+        if (CGAL::angle(w, ep, eq) == CGAL::ACUTE) return std::nullopt;
+        continue;
+      }
+      if (oa < 0 && ob > 0) exit = h;
+    }
+    if (exit == kNone) return std::nullopt;
+    // q beyond the exit edge (it is not inside this cell)?
+    if (orientation(V[H[exit].origin], V[H[exit].target], eq) >= 0) return std::nullopt;
+    const std::uint32_t b = boundary_of_[exit];
+    if (b == kNone) return std::nullopt;  // leaves free space
+    const CellBoundary& B = boundaries_[b];
+    const bool rightward = *c == B.left;
+    out.push_back({b, rightward});
+    c = rightward ? B.right : B.left;
+  }
+  throw std::logic_error("pursuit: a walk through the cells does not end");
+}
+
 ConservativeCells ConservativeCells::build(const Environment& env) {
   ConservativeCells C;
   for (std::size_t v = 0; v < env.num_vertices(); ++v) C.reflex_ += env.is_reflex(v);
@@ -108,6 +144,7 @@ ConservativeCells ConservativeCells::build(const Environment& env) {
     }
   }
 
+  C.boundary_of_.assign(H.size(), kNone);
   // Boundaries: every piece of a critical segment, with the transitions both ways and a
   // pair of double points close to it on either side.
   for (std::uint32_t s = 0; s < C.critical_.size(); ++s) {
@@ -139,6 +176,7 @@ ConservativeCells ConservativeCells::build(const Environment& env) {
       b.drawable = ok;  // else a piece next to a cell thinner than double precision
       b.to_right = gap_transition(C.critical_[s], +1, C.cells_[b.left].shadows, C.cells_[b.right].shadows);
       b.to_left = gap_transition(C.critical_[s], -1, C.cells_[b.right].shadows, C.cells_[b.left].shadows);
+      C.boundary_of_[h] = C.boundary_of_[h + 1] = static_cast<std::uint32_t>(C.boundaries_.size());
       C.adjacent_[b.left].push_back(static_cast<std::uint32_t>(C.boundaries_.size()));
       C.adjacent_[b.right].push_back(static_cast<std::uint32_t>(C.boundaries_.size()));
       C.boundaries_.push_back(std::move(b));

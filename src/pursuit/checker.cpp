@@ -100,11 +100,17 @@ Moment take(const Environment& env, const geometry::VisibilityIndex& vis, std::s
       ExactPoint from = A;
       geometry::SegmentEnd from_end = end_of(V, i);
       const Point carrier_q = env.vertex(V.edges[i].reflex);
-      for (auto& [p, v] : cuts) {
-        m.free.push_back({from, p, from_end, {geometry::SegmentEnd::Kind::AtVertex, v}, q, carrier_q});
-        from = p, from_end = {geometry::SegmentEnd::Kind::AtVertex, v};
-      }
-      m.free.push_back({from, B, from_end, end_of(V, (i + 1) % n), q, carrier_q});
+      // Pieces between consecutive contacts; a piece running along an edge (the pursuer in
+      // line with it) lies on the boundary and separates nothing.
+      auto add = [&](const ExactPoint& to, geometry::SegmentEnd to_end) {
+        using K = geometry::SegmentEnd::Kind;
+        const bool along = from_end.kind == K::AtVertex && to_end.kind == K::AtVertex &&
+                           (env.next(from_end.index) == to_end.index || env.next(to_end.index) == from_end.index);
+        if (!along) m.free.push_back({from, to, from_end, to_end, q, carrier_q});
+        from = to, from_end = to_end;
+      };
+      for (auto& [p, v] : cuts) add(p, {geometry::SegmentEnd::Kind::AtVertex, v});
+      add(B, end_of(V, (i + 1) % n));
     }
   }
   return m;
@@ -126,6 +132,7 @@ struct Contamination {
   double area = 0;
   bool recontaminated = false;
   Point recontaminated_at;
+  std::vector<std::vector<std::vector<Point>>> polygons;  // contaminated faces as rings (when asked)
 };
 
 double face_area(const geometry::SegmentArrangement& A, std::size_t r) {
@@ -138,7 +145,8 @@ double face_area(const geometry::SegmentArrangement& A, std::size_t r) {
 }
 
 // One step from `prev` (contamination `cont`, or everything hidden if null) to `next`.
-Contamination step(const Environment& env, const Moment* prev, const Contamination* cont, const Moment& next) {
+Contamination step(const Environment& env, const Moment* prev, const Contamination* cont, const Moment& next,
+                   bool polygons = false) {
   // Overlay: both moments' free edges, equal ones merged.
   struct Item {
     FreeSeg s;
@@ -172,6 +180,12 @@ Contamination step(const Environment& env, const Moment* prev, const Contaminati
   for (std::uint32_t h = 0; h < H.size(); h += 2) {
     const std::uint32_t s = H[h].segment;
     if (s == geometry::kNone) continue;
+    if (A.region_of(h) == geometry::kNone || A.region_of(h + 1) == geometry::kNone)
+      throw std::logic_error("pursuit checker: a free edge outside free space near " +
+                             geometry::format_point(A.approx_vertices()[H[h].origin]) + " (segment " +
+                             geometry::format_point(geometry::to_double(A.segments()[s].from)) + " - " +
+                             geometry::format_point(geometry::to_double(A.segments()[s].to)) + ", pursuer at " +
+                             std::to_string(next.at[0].x()) + "," + std::to_string(next.at[0].y()) + " hex " + [&]{ char b[80]; std::snprintf(b, 80, "%a %a", next.at[0].x(), next.at[0].y()); return std::string(b); }() + ")");
     if (!of_prev[s]) f1.join(A.region_of(h), A.region_of(h + 1));
     if (!of_next[s]) f2.join(A.region_of(h), A.region_of(h + 1));
   }
@@ -202,6 +216,18 @@ Contamination step(const Environment& env, const Moment* prev, const Contaminati
     if (!cont2[root]) continue;
     out.witnesses.push_back(A.sample(r));
     out.area += face_area(A, r);
+    if (polygons) {
+      std::vector<std::vector<Point>> rings;
+      for (std::uint32_t h0 : A.region_cycles(r)) {
+        rings.emplace_back();
+        for (std::uint32_t h = h0;;) {
+          rings.back().push_back(A.approx_vertices()[H[h].origin]);
+          h = H[h].next;
+          if (h == h0) break;
+        }
+      }
+      out.polygons.push_back(std::move(rings));
+    }
     if (!reported[root]) {
       reported[root] = 1;
       out.regions.push_back(geometry::to_double(A.sample(r)));
@@ -249,11 +275,28 @@ CheckResult check_paths(const Environment& env, const Paths& paths, const CheckO
     }
     return at;
   };
+  auto wanted = [&](std::size_t waypoint) {
+    return std::find(options.frames.begin(), options.frames.end(), waypoint) != options.frames.end();
+  };
+  auto record = [&](const Moment& m, const Contamination& c) {
+    CheckFrame f;
+    f.waypoint = m.waypoint;
+    f.pursuers = m.at;
+    for (auto& loop : m.loops) {
+      f.visible.emplace_back();
+      for (auto& p : loop) f.visible.back().push_back(geometry::to_double(p));
+    }
+    f.contaminated = c.polygons;
+    res.frames.push_back(std::move(f));
+  };
   Moment prev = take(env, vis, 0, 0, at_time(0, 0));
-  Contamination cont = step(env, nullptr, nullptr, prev);
+  Contamination cont = step(env, nullptr, nullptr, prev, wanted(0));
+  if (wanted(0)) record(prev, cont);
   res.moments = 1;
   auto advance = [&](Moment next) {
-    Contamination c = step(env, &prev, &cont, next);
+    const bool frame = next.fraction == 0 && wanted(next.waypoint);
+    Contamination c = step(env, &prev, &cont, next, frame);
+    if (frame) record(next, c);
     ++res.moments;
     if (c.recontaminated && !res.first_recontamination)
       res.first_recontamination = CheckResult::Moment{next.waypoint, next.fraction, c.recontaminated_at};
@@ -267,7 +310,10 @@ CheckResult check_paths(const Environment& env, const Paths& paths, const CheckO
     std::vector<std::size_t> moving;
     for (std::size_t l = 0; l < k; ++l)
       if (paths[l][j] != paths[l][j + 1]) moving.push_back(l);
-    if (moving.empty()) continue;
+    if (moving.empty()) {
+      if (wanted(j + 1)) advance(take(env, vis, j + 1, 0, at_time(j + 1, 0)));
+      continue;
+    }
     std::vector<std::pair<ExactFT, std::pair<ExactPoint, ExactPoint>>> ev;
     for (std::size_t l : moving) {
       const Point &a = paths[l][j], &b = paths[l][j + 1];
@@ -280,18 +326,13 @@ CheckResult check_paths(const Environment& env, const Paths& paths, const CheckO
     }
     std::sort(ev.begin(), ev.end(), [](auto& x, auto& y) { return x.first < y.first; });
     ev.erase(std::unique(ev.begin(), ev.end(), [](auto& x, auto& y) { return x.first == y.first; }), ev.end());
-    // Sample fractions: between every two events and next to each; uniform refinement
-    // when several pursuers move together.
+    // Sample fractions: one between every two events (within an interval the shadows only
+    // deform); uniform refinement when several pursuers move together.
     std::vector<double> fr;
     std::vector<double> cuts{0};
     for (auto& e : ev) cuts.push_back(CGAL::to_double(e.first));
     cuts.push_back(1);
-    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
-      const double lo = cuts[i], hi = cuts[i + 1], w = hi - lo;
-      if (i > 0) fr.push_back(lo + w * 1e-3);
-      fr.push_back(lo + w / 2);
-      if (i + 2 < cuts.size()) fr.push_back(hi - w * 1e-3);
-    }
+    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) fr.push_back((cuts[i] + cuts[i + 1]) / 2);
     if (moving.size() > 1)
       for (std::size_t s = 1; s < options.substeps; ++s) fr.push_back(double(s) / options.substeps);
     fr.push_back(1);

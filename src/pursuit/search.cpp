@@ -157,15 +157,150 @@ double move_cost(const ConservativeCells& C, std::uint32_t c, std::uint32_t b) {
   return dist(C.cell(c).sample, near_from) + dist(near_from, near_to) + dist(near_to, C.cell(right ? B.right : B.left).sample);
 }
 
+// Double points strictly inside cell c approaching the middle of boundary b's piece (the
+// last ones closest to it), for crossings next to cells too thin for near points.
+std::vector<Point> toward(const ConservativeCells& C, std::uint32_t c, std::uint32_t b) {
+  const auto& A = C.arrangement();
+  const auto& H = A.half_edges();
+  const std::uint32_t h = C.boundaries()[b].half_edge;
+  const Point &a = A.approx_vertices()[H[h].origin], &z = A.approx_vertices()[H[h].target];
+  const Point s = C.cell(c).sample;
+  std::vector<Point> out;
+  for (double f : {0.5, 0.3, 0.7}) {
+    const Point m(a.x() + f * (z.x() - a.x()), a.y() + f * (z.y() - a.y()));
+    std::vector<Point> inside;
+    double t = 0.5;
+    for (int k = 1; k <= 52; ++k, t = 1 - (1 - t) / 2) {
+      const Point x(s.x() + t * (m.x() - s.x()), s.y() + t * (m.y() - s.y()));
+      if (A.strictly_inside(c, geometry::to_exact(x))) inside.push_back(x);
+    }
+    for (std::size_t i = inside.size(); i-- > 0 && inside.size() - i <= 4;) out.push_back(inside[i]);
+  }
+  return out;
+}
+
+bool at_most(const filter::ShadowLabels& a, const filter::ShadowLabels& b) {
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (a[i] && !b[i]) return false;
+  return true;
+}
+
+// One pursuer: the walk through cells `cells` (boundaries `bs`) drawn as a polyline. A
+// boundary with near points is crossed through them; a stretch through cells too thin for
+// double points is crossed by one straight segment whose exact crossings (walk) leave
+// labels no worse than planned (the transitions are monotone, so the plan still clears).
+Plan build_single(const ConservativeCells& C, const Point& start, std::vector<std::uint32_t> cells, std::vector<std::uint32_t> bs) {
+  auto next_cell = [&](std::uint32_t c, std::uint32_t b) {
+    const auto& B = C.boundaries()[b];
+    return c == B.left ? B.right : B.left;
+  };
+  auto apply = [&](const filter::ShadowLabels& l, std::uint32_t c, std::uint32_t b) {
+    const auto& B = C.boundaries()[b];
+    return filter::update(l, c == B.left ? B.to_right : B.to_left);
+  };
+  // A plan ending in a thin cell walks on (labels all clear stay clear) to a wider one.
+  if (C.cell(cells.back()).tiny) {
+    std::vector<std::uint32_t> from(C.size(), kNone), via(C.size(), kNone);
+    std::vector<std::uint32_t> queue{cells.back()};
+    from[cells.back()] = cells.back();
+    std::uint32_t found = kNone;
+    for (std::size_t q = 0; q < queue.size() && found == kNone; ++q)
+      for (std::uint32_t b : C.boundaries_of(queue[q])) {
+        const std::uint32_t n = next_cell(queue[q], b);
+        if (from[n] != kNone) continue;
+        from[n] = queue[q], via[n] = b, queue.push_back(n);
+        if (!C.cell(n).tiny) {
+          found = n;
+          break;
+        }
+      }
+    std::vector<std::uint32_t> tail;
+    for (std::uint32_t n = found; n != cells.back(); n = from[n]) tail.push_back(via[n]);
+    for (auto it = tail.rbegin(); it != tail.rend(); ++it) cells.push_back(next_cell(cells.back(), *it)), bs.push_back(*it);
+  }
+  std::vector<filter::ShadowLabels> planned{filter::ShadowLabels(C.cell(cells[0]).shadows.num_components, true)};
+  for (std::size_t i = 0; i < bs.size(); ++i) planned.push_back(apply(planned.back(), cells[i], bs[i]));
+  Plan plan;
+  plan.start_cell = cells[0];
+  plan.paths.assign(1, {start});
+  filter::ShadowLabels now = planned[0];
+  for (std::size_t i = 0; i < bs.size();) {
+    const CellBoundary& B = C.boundaries()[bs[i]];
+    const bool right = cells[i] == B.left;
+    if (B.drawable && !C.cell(cells[i + 1]).tiny) {
+      plan.paths[0].push_back(right ? B.near_left : B.near_right);
+      plan.paths[0].push_back(right ? B.near_right : B.near_left);
+      now = apply(now, cells[i], bs[i]);
+      ++i;
+      plan.moves.push_back({0, bs[i - 1], cells[i - 1], cells[i]});
+      continue;
+    }
+    std::size_t j = i + 1;
+    while (C.cell(cells[j]).tiny) ++j;
+    std::vector<Point> ps, qs = toward(C, cells[j], bs[j - 1]);
+    const Point here = plan.paths[0].back();
+    if (C.arrangement().strictly_inside(cells[i], geometry::to_exact(here))) ps.push_back(here);
+    if (B.drawable) ps.push_back(right ? B.near_left : B.near_right);
+    if (!C.cell(cells[i]).tiny)
+      for (auto& p : toward(C, cells[i], bs[i])) ps.push_back(p);
+    if (C.boundaries()[bs[j - 1]].drawable) {
+      const auto& E = C.boundaries()[bs[j - 1]];
+      qs.insert(qs.begin(), cells[j] == E.right ? E.near_right : E.near_left);
+    }
+    bool done = false;
+    for (const Point& p : ps) {
+      for (const Point& q : qs) {
+        const auto seq = C.walk(p, q);
+        if (!seq || seq->empty()) continue;
+        filter::ShadowLabels l = now;
+        std::uint32_t c = cells[i];
+        for (auto [b, rightward] : *seq) {
+          const auto& X = C.boundaries()[b];
+          l = filter::update(l, rightward ? X.to_right : X.to_left);
+          plan.moves.push_back({0, b, c, rightward ? X.right : X.left});
+          c = rightward ? X.right : X.left;
+        }
+        if (c != cells[j] || !at_most(l, planned[j])) {
+          plan.moves.resize(plan.moves.size() - seq->size());
+          continue;
+        }
+        if (p != here) plan.paths[0].push_back(p);
+        plan.paths[0].push_back(q);
+        now = l, i = j, done = true;
+        break;
+      }
+      if (done) break;
+    }
+    if (!done)
+      throw std::runtime_error("pursuit: the plan crosses cells thinner than double precision near " +
+                               geometry::format_point(C.cell(cells[i + 1]).sample) +
+                               " in an order no straight double-precision segment realizes");
+  }
+  if (!now.all_clear()) throw std::logic_error("pursuit: a drawn plan does not clear");
+  return plan;
+}
+
 Plan build_plan(const ConservativeCells& C, std::size_t k, const Point& start, std::uint32_t c0,
                 const std::vector<std::pair<std::uint32_t, std::uint32_t>>& moves, JointSpace& J, std::uint32_t t0) {
+  if (k == 1) {
+    std::vector<std::uint32_t> cells{c0}, bs;
+    for (auto [slot, b] : moves) {
+      const auto& B = C.boundaries()[b];
+      cells.push_back(cells.back() == B.left ? B.right : B.left);
+      bs.push_back(b);
+    }
+    Plan plan = build_single(C, start, std::move(cells), std::move(bs));
+    certify(C.environment(), plan.paths[0], 0);
+    for (std::size_t i = 0; i + 1 < plan.paths[0].size(); ++i) plan.length += dist(plan.paths[0][i], plan.paths[0][i + 1]);
+    return plan;
+  }
   Plan plan;
   plan.start_cell = c0;
   plan.paths.assign(k, {start});
   std::vector<std::uint32_t> phys(k);
   std::iota(phys.begin(), phys.end(), 0u);
   std::vector<std::uint32_t> cell(k, c0);
-  if (k > 1 && start != C.cell(c0).sample)
+  if (start != C.cell(c0).sample)
     for (auto& p : plan.paths) p.push_back(C.cell(c0).sample);
   std::uint32_t t = t0;
   for (auto [slot, b] : moves) {
@@ -175,19 +310,14 @@ Plan build_plan(const ConservativeCells& C, std::size_t k, const Point& start, s
     const std::uint32_t to = right ? B.right : B.left;
     const Point &nf = right ? B.near_left : B.near_right, &nt = right ? B.near_right : B.near_left;
     plan.moves.push_back({who, b, from, to});
-    if (k == 1) {
-      plan.paths[0].push_back(nf);
-      plan.paths[0].push_back(nt);
-    } else {
-      for (std::uint32_t p = 0; p < k; ++p) {
-        const Point here = plan.paths[p].back();
-        if (p == who) {
-          plan.paths[p].push_back(nf);
-          plan.paths[p].push_back(nt);
-          plan.paths[p].push_back(C.cell(to).sample);
-        } else {
-          for (int r = 0; r < 3; ++r) plan.paths[p].push_back(here);
-        }
+    for (std::uint32_t p = 0; p < k; ++p) {
+      const Point here = plan.paths[p].back();
+      if (p == who) {
+        plan.paths[p].push_back(nf);
+        plan.paths[p].push_back(nt);
+        plan.paths[p].push_back(C.cell(to).sample);
+      } else {
+        for (int r = 0; r < 3; ++r) plan.paths[p].push_back(here);
       }
     }
     cell[who] = to;
@@ -215,7 +345,24 @@ SearchResult search(const ConservativeCells& C, std::size_t k, const SearchOptio
   std::unordered_map<StateKey, std::uint32_t, StateHash> seen;
   using QItem = std::pair<double, std::uint32_t>;
   std::priority_queue<QItem, std::vector<QItem>, std::greater<>> queue;
+  // Dominance: labels are monotone under every transition, so a state whose contaminated
+  // components include those of a state already settled in the same cells (at no larger
+  // distance) can do nothing that one cannot; it is not explored.
+  std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> settled;
+  auto dominated = [&](const StateKey& key) {
+    auto it = settled.find(key.tuple);
+    if (it == settled.end()) return false;
+    const auto& w = key.labels.words();
+    for (std::uint32_t s : it->second) {
+      const auto& v = nodes[s].key.labels.words();
+      bool subset = true;
+      for (std::size_t i = 0; i < w.size() && subset; ++i) subset = (v[i] & ~w[i]) == 0;
+      if (subset) return true;
+    }
+    return false;
+  };
   auto offer = [&](StateKey key, double d, std::uint32_t parent, std::uint32_t slot, std::uint32_t b) -> bool {
+    if (dominated(key)) return true;
     auto [it, fresh] = seen.try_emplace(key, static_cast<std::uint32_t>(nodes.size()));
     if (fresh) {
       if (nodes.size() >= o.max_states) return false;
@@ -231,7 +378,7 @@ SearchResult search(const ConservativeCells& C, std::size_t k, const SearchOptio
   std::optional<std::uint32_t> c0;
   if (o.start) c0 = start_cell_of(C, *o.start);
   for (std::uint32_t c = 0; c < C.size(); ++c) {
-    if (c0 && c != *c0) continue;
+    if (c0 ? c != *c0 : C.cell(c).tiny) continue;
     const std::uint32_t t = J.intern(std::vector<std::uint32_t>(k, c));
     const double d0 = o.start && k > 1 ? k * dist(*o.start, C.cell(c).sample) : 0;
     offer({t, filter::ShadowLabels(J.num_units(t), true)}, d0, kNone, 0, 0);
@@ -243,6 +390,9 @@ SearchResult search(const ConservativeCells& C, std::size_t k, const SearchOptio
     const auto [d, id] = queue.top();
     queue.pop();
     if (d > nodes[id].dist) continue;
+    if (dominated(nodes[id].key)) continue;
+    settled[nodes[id].key.tuple].push_back(id);
+    ++res.states;
     if (nodes[id].key.labels.all_clear()) {
       goal = id;
       break;
@@ -252,6 +402,10 @@ SearchResult search(const ConservativeCells& C, std::size_t k, const SearchOptio
     for (std::uint32_t slot = 0; slot < k && !budget; ++slot) {
       if (slot > 0 && tuple[slot] == tuple[slot - 1]) continue;  // interchangeable pursuers in one cell
       for (std::uint32_t b : C.boundaries_of(tuple[slot])) {
+        if (k > 1) {  // several pursuers wait at sample points and cross through near points
+          const auto& B = C.boundaries()[b];
+          if (!B.drawable || C.cell(B.left).tiny || C.cell(B.right).tiny) continue;
+        }
         const auto& s = J.step(key.tuple, slot, b);
         ++res.transitions;
         if (!offer({s.to, s.tr.apply(key.labels)}, d + move_cost(C, tuple[slot], b), id, slot, b)) {
@@ -261,7 +415,7 @@ SearchResult search(const ConservativeCells& C, std::size_t k, const SearchOptio
       }
     }
   }
-  res.states = nodes.size();
+  res.stored = nodes.size();
   if (!goal) {
     res.outcome = budget ? SearchResult::Outcome::Budget : SearchResult::Outcome::NoPlan;
     return res;

@@ -74,6 +74,17 @@ class ConservativeCells {
   std::optional<std::uint32_t> locate(const Point& p) const;
   /// Is p in the closed convex cell c? Exact.
   bool in_closed_cell(std::size_t c, const ExactPoint& p) const;
+  /// Boundary a half-edge of the arrangement lies on, kNone for the environment's boundary.
+  std::uint32_t boundary_of(std::uint32_t half_edge) const { return boundary_of_[half_edge]; }
+
+  /// The boundaries the segment from p to q crosses, in order, each with its direction
+  /// (true: from `left` to `right`), exactly; nullopt if p or q is not strictly inside a
+  /// cell, or the segment passes through a vertex of the arrangement or leaves free space.
+  struct Crossing {
+    std::uint32_t boundary;
+    bool rightward;
+  };
+  std::optional<std::vector<Crossing>> walk(const Point& p, const Point& q) const;
 
  private:
   std::vector<CriticalSegment> critical_;
@@ -82,6 +93,7 @@ class ConservativeCells {
   std::vector<Cell> cells_;
   std::vector<CellBoundary> boundaries_;
   std::vector<std::vector<std::uint32_t>> adjacent_;
+  std::vector<std::uint32_t> boundary_of_;
   std::size_t reflex_ = 0, tiny_ = 0;
 };
 

@@ -10,7 +10,7 @@
 // single moving pursuer, the visibility polygons change combinatorially only where it
 // crosses a line through two mutually visible environment vertices, or through an
 // environment vertex and a vertex of a still pursuer's visibility polygon; the checker
-// samples between every two such crossings and next to each. Between two samples the
+// samples once between every two such crossings. Between two samples the
 // shadow regions only deform, and a region keeps a part near its fixed anchors, so the
 // "meets" rule follows the evader exactly. When several pursuers move at once the
 // crossings of each with the vertex lines are sampled and the steps are refined
@@ -27,6 +27,15 @@ using Paths = std::vector<std::vector<geometry::Point>>;
 
 struct CheckOptions {
   std::size_t substeps = 8;  // samples per segment when several pursuers move together
+  std::vector<std::size_t> frames;  // waypoints at which to record a Frame (for figures)
+};
+
+/// The state at a waypoint, rounded for drawing.
+struct CheckFrame {
+  std::size_t waypoint = 0;
+  std::vector<geometry::Point> pursuers;
+  std::vector<std::vector<geometry::Point>> visible;       // V of each pursuer
+  std::vector<std::vector<std::vector<geometry::Point>>> contaminated;  // regions, each as rings (even-odd)
 };
 
 struct CheckResult {
@@ -47,6 +56,7 @@ struct CheckResult {
   std::vector<geometry::Point> contaminated_at_end;
   std::vector<geometry::ExactPoint> contaminated_exact;  // the same points, exact (strictly inside the regions)
   double contaminated_area = 0;
+  std::vector<CheckFrame> frames;
 };
 
 /// Throws InputError naming the pursuer and point or segment when the paths are not

@@ -5,7 +5,10 @@
 // boundary applies its exact transition (filter::ShadowTransition). From the start (all
 // labels 1) a Dijkstra search by the Euclidean length of the walk explores every
 // reachable information state until one has all labels 0: the plan is the walk, or, when
-// the search runs dry, no plan with one pursuer exists (the search is complete).
+// the search runs dry, no plan with one pursuer exists (the search is complete). The
+// transitions are monotone (fewer contaminated components in, fewer out), so a state
+// whose contaminated set contains that of a state already settled in the same cell is
+// skipped: it cannot lead anywhere the other cannot, sooner.
 //
 // k pursuers: one moves at a time between adjacent cells while the others wait at their
 // cells' sample points; labels belong to the joint units of joint.hpp (sound; see there).
@@ -35,14 +38,15 @@ struct Plan {
 
 struct SearchOptions {
   std::optional<Point> start;          // every pursuer starts here; unset: anywhere (the best cell)
-  std::size_t max_states = 4'000'000;  // information states stored before giving up
+  std::size_t max_states = 4'000'000;  // information states stored before giving up (memory bound)
 };
 
 struct SearchResult {
   enum class Outcome { Plan, NoPlan, Budget };
   Outcome outcome = Outcome::NoPlan;
   std::size_t pursuers = 1;
-  std::size_t states = 0;       // distinct information states reached
+  std::size_t states = 0;       // information states explored (settled, none dominated by another)
+  std::size_t stored = 0;       // information states generated and kept (the budget counts these)
   std::size_t transitions = 0;  // boundary crossings evaluated
   std::optional<Plan> plan;
 };
