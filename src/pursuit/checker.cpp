@@ -287,6 +287,7 @@ CheckResult check_paths(const Environment& env, const Paths& paths, const CheckO
       for (auto& p : loop) f.visible.back().push_back(geometry::to_double(p));
     }
     f.contaminated = c.polygons;
+    f.regions = c.regions.size();
     res.frames.push_back(std::move(f));
   };
   Moment prev = take(env, vis, 0, 0, at_time(0, 0));

@@ -10,10 +10,10 @@ using geometry::Point;
 
 namespace {
 const char* kPursuerColour[] = {"#1a73e8", "#e37400", "#188038", "#a142f4", "#d01884", "#5f6368"};
-CGAL::Bbox_2 padded(const geometry::Environment& env) {
+CGAL::Bbox_2 padded(const geometry::Environment& env, double top = 0.03) {
   const auto b = env.bbox();
-  const double m = 0.03 * std::max(b.xmax() - b.xmin(), b.ymax() - b.ymin());
-  return {b.xmin() - m, b.ymin() - m, b.xmax() + m, b.ymax() + m};
+  const double m = std::max(b.xmax() - b.xmin(), b.ymax() - b.ymin());
+  return {b.xmin() - 0.03 * m, b.ymin() - 0.03 * m, b.xmax() + 0.03 * m, b.ymax() + top * m};
 }
 }  // namespace
 
@@ -67,7 +67,8 @@ std::string plan_frames_figure(const geometry::Environment& env, const Paths& pa
   double width = 0, height = 0, row_h = 0;
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const auto& f = frames[i];
-    render::SvgCanvas c(padded(env), panel, 8);
+    const CGAL::Bbox_2 box = padded(env, 0.1);  // room for the caption above
+    render::SvgCanvas c(box, panel, 8);
     c.environment(env);
     const render::Style bad{"#d93025", "#a50e0e", 0.5, 0.55, ""};
     for (auto& region : f.contaminated) c.rings(region, bad);
@@ -80,8 +81,8 @@ std::string plan_frames_figure(const geometry::Environment& env, const Paths& pa
       c.polyline(walked, {"none", kPursuerColour[l % 6], 1.2, 0.8, "3 2"});
       c.point(f.pursuers[l], 3.5, {kPursuerColour[l % 6], "#000", 0.8, 1.0, ""});
     }
-    c.label(Point(env.bbox().xmin(), env.bbox().ymax()), "waypoint " + std::to_string(f.waypoint) + ": " +
-                                                            (f.contaminated.empty() ? "all clear" : std::to_string(f.contaminated.size()) + " contaminated"),
+ c.label(Point(box.xmin(), env.bbox().ymax() + 0.035 * (box.xmax() - box.xmin())), "waypoint " + std::to_string(f.waypoint) + ": " +
+                                                            (f.regions == 0 ? "all clear" : std::to_string(f.regions) + " contaminated region" + (f.regions > 1 ? "s" : "")),
             11);
     std::string svg = c.str();
     const std::size_t col = i % columns;

@@ -35,7 +35,8 @@ struct CheckFrame {
   std::size_t waypoint = 0;
   std::vector<geometry::Point> pursuers;
   std::vector<std::vector<geometry::Point>> visible;       // V of each pursuer
-  std::vector<std::vector<std::vector<geometry::Point>>> contaminated;  // regions, each as rings (even-odd)
+  std::vector<std::vector<std::vector<geometry::Point>>> contaminated;  // faces, each as rings (even-odd)
+  std::size_t regions = 0;  // contaminated shadow regions (a region may span several faces)
 };
 
 struct CheckResult {
