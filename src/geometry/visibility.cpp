@@ -25,6 +25,10 @@ ExactPoint exact_vertex(const Environment* environment, const ExactPoint& query,
 
 ExactPoint VisibilityPolygon::exact(std::size_t i) const { return exact_vertex(environment, exact_query, vertices[i]); }
 
+ExactPoint exact_point(const Environment& env, const ExactPoint& query, const VisibilityVertex& v) {
+  return exact_vertex(&env, query, v);
+}
+
 std::vector<ExactPoint> VisibilityPolygon::points() const {
   std::vector<ExactPoint> out;
   out.reserve(vertices.size());

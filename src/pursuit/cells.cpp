@@ -149,6 +149,7 @@ ConservativeCells ConservativeCells::build(const Environment& env) {
   // pair of double points close to it on either side.
   for (std::uint32_t s = 0; s < C.critical_.size(); ++s) {
     const auto [first, last] = A.segment_pieces(s);
+    const SegmentSight sight = analyse_sight(C.critical_[s]);
     for (std::uint32_t h = first; h < last; h += 2) {
       CellBoundary b;
       b.half_edge = h, b.segment = s;
@@ -174,8 +175,11 @@ ConservativeCells ConservativeCells::build(const Environment& env) {
         if (ok) break;
       }
       b.drawable = ok;  // else a piece next to a cell thinner than double precision
-      b.to_right = gap_transition(C.critical_[s], +1, C.cells_[b.left].shadows, C.cells_[b.right].shadows);
-      b.to_left = gap_transition(C.critical_[s], -1, C.cells_[b.right].shadows, C.cells_[b.left].shadows);
+      b.to_right = gap_transition(sight, +1, C.cells_[b.left].shadows, C.cells_[b.right].shadows);
+      // The correspondence is symmetric: the other way is its transpose.
+      b.to_left = {b.to_right.after, b.to_right.before, {}};
+      for (auto [x, y] : b.to_right.pairs) b.to_left.pairs.push_back({y, x});
+      std::sort(b.to_left.pairs.begin(), b.to_left.pairs.end());
       C.boundary_of_[h] = C.boundary_of_[h + 1] = static_cast<std::uint32_t>(C.boundaries_.size());
       C.adjacent_[b.left].push_back(static_cast<std::uint32_t>(C.boundaries_.size()));
       C.adjacent_[b.right].push_back(static_cast<std::uint32_t>(C.boundaries_.size()));

@@ -12,6 +12,8 @@
 
 namespace preimage::pursuit {
 
+using geometry::ExactPoint;
+
 namespace {
 
 geometry::SegmentEnd end_of(const geometry::VisibilityVertex& v) {
@@ -37,8 +39,9 @@ ShadowOverlay overlay_shadows(const geometry::Environment& env, std::span<const 
   for (std::uint32_t l = 0; l < shadows.size(); ++l)
     for (const Gap& g : shadows[l]->gaps) {
       // Canonical direction: lexicographically smaller end first, so equal gaps compare equal.
-      const bool fwd = CGAL::compare_xy(g.pa, g.pb) == CGAL::SMALLER;
-      geometry::ArrangementSegment s{fwd ? g.pa : g.pb, fwd ? g.pb : g.pa, end_of(fwd ? g.a : g.b), end_of(fwd ? g.b : g.a),
+      const ExactPoint pa = shadows[l]->end(env, g.a), pb = shadows[l]->end(env, g.b);
+      const bool fwd = CGAL::compare_xy(pa, pb) == CGAL::SMALLER;
+      geometry::ArrangementSegment s{fwd ? pa : pb, fwd ? pb : pa, end_of(fwd ? g.a : g.b), end_of(fwd ? g.b : g.a),
                                      std::make_pair(at[l], env.vertex(g.reflex))};
       items.push_back({std::move(s), {l, g.component, fwd}});
     }

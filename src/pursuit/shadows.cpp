@@ -12,6 +12,8 @@
 
 namespace preimage::pursuit {
 
+using geometry::ExactPoint;
+
 using geometry::VisibilityEdge;
 using geometry::VisibilityVertex;
 
@@ -57,11 +59,29 @@ Shadows shadows_of(const geometry::VisibilityPolygon& V) {
   std::vector<std::vector<Piece>> per_ring(env.num_rings());
   for (std::size_t i = 0; i < m; ++i)
     if (V.edges[i].kind == VisibilityEdge::Kind::Solid) per_ring[env.ring_of(V.edges[i].edge)].push_back({V.edges[i].edge, i});
+  // Boundary points of V compared symbolically: a ray hit lies strictly inside its edge, and
+  // two hits on one edge are the same point iff their rays coincide. Only the pursuer's own
+  // position (on the boundary) needs exact coordinates.
+  using K = VisibilityVertex::Kind;
+  const ExactPoint& q = V.exact_query;
   auto same_point = [&](std::size_t i, std::size_t j) {
     const VisibilityVertex &a = V.vertices[i], &b = V.vertices[j];
-    if (a.kind == VisibilityVertex::Kind::EnvironmentVertex && b.kind == VisibilityVertex::Kind::EnvironmentVertex)
-      return a.vertex == b.vertex;
-    return V.exact(i) == V.exact(j);
+    if (a.kind == K::Query || b.kind == K::Query) return V.exact(i) == V.exact(j);
+    if (a.kind != b.kind) return false;
+    if (a.kind == K::EnvironmentVertex) return a.vertex == b.vertex;
+    return a.edge == b.edge && (a.vertex == b.vertex || CGAL::orientation(q, env.exact_vertex(a.vertex), env.exact_vertex(b.vertex)) == CGAL::COLLINEAR);
+  };
+  // Order of two piece starts along edge e (the pursuer sees the edge from its free side,
+  // so along the edge its points turn counter-clockwise about q).
+  auto before = [&](std::uint32_t e, std::size_t i, std::size_t j) {
+    const VisibilityVertex &a = V.vertices[i], &b = V.vertices[j];
+    if (a.kind == K::EnvironmentVertex && a.vertex == e) return true;
+    if (b.kind == K::EnvironmentVertex && b.vertex == e) return false;
+    if (a.kind == K::RayHit && b.kind == K::RayHit) {
+      const auto o = CGAL::orientation(q, env.exact_vertex(a.vertex), env.exact_vertex(b.vertex));
+      if (o != CGAL::COLLINEAR) return o == CGAL::LEFT_TURN;
+    }
+    return CGAL::compare_distance_to_point(env.exact_vertex(e), V.exact(i), V.exact(j)) == CGAL::SMALLER;
   };
   for (std::size_t r = 0; r < per_ring.size(); ++r) {
     auto& ps = per_ring[r];
@@ -69,8 +89,7 @@ Shadows shadows_of(const geometry::VisibilityPolygon& V) {
     // Ring order: by edge, then along the edge (pieces of one edge run in its direction).
     std::sort(ps.begin(), ps.end(), [&](const Piece& a, const Piece& b) {
       if (a.edge != b.edge) return a.edge < b.edge;
-      return a.index != b.index && CGAL::compare_distance_to_point(env.exact_vertex(a.edge), V.exact(a.index),
-                                                                   V.exact(b.index)) == CGAL::SMALLER;
+      return a.index != b.index && before(a.edge, a.index, b.index);
     });
     for (std::size_t k = 0; k < ps.size(); ++k) {
       const Piece &p = ps[k], &q = ps[(k + 1) % ps.size()];
@@ -87,10 +106,10 @@ Shadows shadows_of(const geometry::VisibilityPolygon& V) {
   }
 
   Shadows out;
+  out.query = V.exact_query;
   for (std::size_t f = 0; f < free_edges.size(); ++f) {
     const std::size_t i = free_edges[f];
-    out.gaps.push_back({V.edges[i].reflex, V.vertices[i], V.vertices[(i + 1) % m], V.exact(i), V.exact((i + 1) % m),
-                        uf.find(static_cast<std::uint32_t>(f))});
+    out.gaps.push_back({V.edges[i].reflex, V.vertices[i], V.vertices[(i + 1) % m], uf.find(static_cast<std::uint32_t>(f))});
   }
   std::sort(out.gaps.begin(), out.gaps.end(), [](const Gap& a, const Gap& b) { return a.reflex < b.reflex; });
   for (std::size_t k = 1; k < out.gaps.size(); ++k)

@@ -35,11 +35,8 @@ namespace {
 
 // For x on side s of the sight line: the gap contacts, and for each strip i (1-based)
 // and side (index 0: side s, 1: side t) that is hidden from b, the gap vertices whose
-// class holds the region K(i, side).
-struct Local {
-  std::vector<std::uint32_t> gaps;
-  std::vector<std::array<std::vector<std::uint32_t>, 2>> tokens;  // tokens[i][side]; empty: not hidden at b
-};
+// class holds the region K(i, side) (empty: not hidden at b).
+using Local = SightSide;
 
 Local analyse(const SightLine& line, int s) {
   const int t = -s;
@@ -138,21 +135,32 @@ std::uint32_t component(const Shadows& sh, const std::vector<std::uint32_t>& gap
 
 }  // namespace
 
-filter::ShadowEvent gap_transition(const CriticalSegment& seg, int side_a, const Shadows& a, const Shadows& b) {
+SegmentSight analyse_sight(const CriticalSegment& seg) {
+  // Relative to the forward look (the segment's direction) a pursuer on the left is on
+  // side +1; looking backward the sides swap.
+  SegmentSight out;
+  for (int i = 0; i < 2; ++i) {
+    const int side = i == 0 ? +1 : -1;
+    out.forward[i] = analyse(seg.forward, side);
+    out.backward[i] = analyse(seg.backward, -side);
+  }
+  return out;
+}
+
+filter::ShadowEvent gap_transition(const SegmentSight& sight, int side_a, const Shadows& a, const Shadows& b) {
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
   // Gaps on both sides: the region behind the same reflex vertex.
   for (const Gap& g : a.gaps)
     if (const std::uint32_t cb = b.component_of(g.reflex); cb != kNone) pairs.push_back({g.component, cb});
-  // Regions touching the line, looking past each end. Relative to the forward look
-  // (the segment's direction) side A is side_a; looking backward the sides swap.
-  for (const auto& [line, sa] : {std::pair<const SightLine*, int>{&seg.forward, side_a}, {&seg.backward, -side_a}}) {
-    if (line->contacts.empty()) continue;
-    const Local la = analyse(*line, sa), lb = analyse(*line, -sa);
+  // Regions touching the line, looking past each end.
+  const int ia = side_a > 0 ? 0 : 1, ib = 1 - ia;
+  for (const auto* dir : {&sight.forward, &sight.backward}) {
+    const Local &la = (*dir)[ia], &lb = (*dir)[ib];
     for (std::uint32_t v : la.gaps) component(a, v, "A");
     for (std::uint32_t v : lb.gaps) component(b, v, "B");
     for (std::size_t i = 1; i < la.tokens.size(); ++i)
       for (int side = 0; side < 2; ++side) {
-        // Side index 0 is "x's own side" in each analysis: side s for A is side t for B.
+        // Side index 0 is "the pursuer's own side" in each analysis: A's side is B's other.
         const auto& ta = la.tokens[i][side];
         const auto& tb = lb.tokens[i][1 - side];
         if (ta.empty() != tb.empty()) throw std::logic_error("pursuit: sides disagree on the shadow at a critical line");

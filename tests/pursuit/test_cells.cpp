@@ -134,7 +134,9 @@ TEST(PursuitCells, TransitionsAreSymmetricAndNearPointsCrossTheirPiece) {
   for (auto& [name, env] : cases()) {
     const auto C = ConservativeCells::build(env);
     for (auto& b : C.boundaries()) {
-      auto fwd = b.to_right.pairs, back = b.to_left.pairs;
+      // Computed from the other side, the correspondence is the transpose.
+      auto fwd = b.to_right.pairs;
+      auto back = pursuit::gap_transition(C.critical()[b.segment], -1, C.cell(b.right).shadows, C.cell(b.left).shadows).pairs;
       for (auto& [x, y] : back) std::swap(x, y);
       std::sort(back.begin(), back.end());
       EXPECT_EQ(fwd, back) << name;

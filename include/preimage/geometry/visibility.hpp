@@ -50,6 +50,9 @@ struct VisibilityPolygon {
   double area() const;
 };
 
+/// Exact coordinates of a visibility vertex of V(query) (lazy-exact construction for ray hits).
+ExactPoint exact_point(const Environment& env, const ExactPoint& query, const VisibilityVertex& v);
+
 /// Preprocesses one environment (triangulation + point-location grid) for many queries.
 class VisibilityIndex {
  public:

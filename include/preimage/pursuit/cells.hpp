@@ -18,6 +18,7 @@
 #include <preimage/pursuit/critical.hpp>
 #include <preimage/pursuit/shadows.hpp>
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -97,10 +98,26 @@ class ConservativeCells {
   std::size_t reflex_ = 0, tiny_ = 0;
 };
 
+/// What a pursuer infinitely close to a critical segment, on one side, sees along it
+/// looking past one end: the contacts that are gaps for it, and for each strip beside the
+/// line that is hidden from the segment itself, the gap vertices whose shadow holds it.
+struct SightSide {
+  std::vector<std::uint32_t> gaps;
+  std::vector<std::array<std::vector<std::uint32_t>, 2>> tokens;  // [strip][0: the pursuer's side, 1: the other]
+};
+/// Both look directions for a pursuer left (index 0) or right (1) of the segment's direction.
+struct SegmentSight {
+  std::array<SightSide, 2> forward, backward;
+};
+SegmentSight analyse_sight(const CriticalSegment& s);
+
 /// The gap transition across a boundary on critical segment s, from the cell with shadows
 /// `a` on side `side_a` (+1: left of the segment's direction) to the cell with shadows `b`
 /// on the other side. Throws std::logic_error when the cells' shadows disagree with the
 /// sight line (a bug: the decomposition would not be conservative).
-filter::ShadowEvent gap_transition(const CriticalSegment& s, int side_a, const Shadows& a, const Shadows& b);
+filter::ShadowEvent gap_transition(const SegmentSight& sight, int side_a, const Shadows& a, const Shadows& b);
+inline filter::ShadowEvent gap_transition(const CriticalSegment& s, int side_a, const Shadows& a, const Shadows& b) {
+  return gap_transition(analyse_sight(s), side_a, a, b);
+}
 
 }  // namespace preimage::pursuit

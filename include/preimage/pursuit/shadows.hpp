@@ -19,18 +19,22 @@ using geometry::kNone;
 struct Gap {
   std::uint32_t reflex;  // occluding vertex
   geometry::VisibilityVertex a, b;
-  geometry::ExactPoint pa, pb;  // exact ends
   std::uint32_t component;
 };
 
 struct Shadows {
+  geometry::ExactPoint query;            // where they were computed
   std::vector<Gap> gaps;                 // sorted by reflex vertex
   std::uint32_t num_components = 0;      // components numbered by their smallest gap vertex
   /// Component whose boundary holds the gap of vertex v, kNone if v is not a gap vertex.
   std::uint32_t component_of(std::uint32_t v) const;
   /// Gap vertices of component c, ascending.
   std::vector<std::uint32_t> gap_vertices(std::uint32_t c) const;
-  bool operator==(const Shadows& o) const;  // same gaps in the same components
+  bool operator==(const Shadows& o) const;  // same gaps in the same components (wherever computed)
+  /// Exact position of a gap's end (constructed on demand).
+  geometry::ExactPoint end(const geometry::Environment& env, const geometry::VisibilityVertex& v) const {
+    return geometry::exact_point(env, query, v);
+  }
 };
 
 /// Shadow components of V(q). Throws std::logic_error if V has two consecutive free
