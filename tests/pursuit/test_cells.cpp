@@ -5,8 +5,11 @@
 #include <preimage/geometry/queries.hpp>
 #include <preimage/geometry/visibility.hpp>
 #include <preimage/pursuit/cells.hpp>
+#include <preimage/pursuit/checker.hpp>
+#include <preimage/pursuit/search.hpp>
 #include <preimage/pursuit/examples.hpp>
 #include <preimage/scene/import.hpp>
+#include <preimage/scene/scene.hpp>
 
 #include <CGAL/Arr_naive_point_location.h>
 #include <CGAL/Arr_segment_traits_2.h>
@@ -43,6 +46,8 @@ std::vector<Case> cases() {
   out.push_back({"three arms", pursuit::examples::three_arms()});
   out.push_back({"corridor with rooms", pursuit::examples::corridor_with_rooms(3)});
   out.push_back({"room with pillar", pursuit::examples::room_with_pillar()});
+  out.push_back({"degenerate fixture",
+                 *scene::load_scene(std::string(PREIMAGE_FIXTURES) + "/scenes/pursuit_degenerate.json").environment});
   return out;
 }
 
@@ -160,4 +165,50 @@ TEST(PursuitCells, HouseExpoFloorPlansBuild) {
     const auto C = ConservativeCells::build(*s.environment);
     EXPECT_GT(C.size(), 10u) << f;
   }
+}
+
+TEST(PursuitCells, WalkMatchesBruteForceCrossings) {
+  std::mt19937_64 rng(5);
+  std::size_t walks = 0;
+  for (auto& [name, env] : cases()) {
+    const auto C = ConservativeCells::build(env);
+    const auto& A = C.arrangement();
+    const auto box = env.bbox();
+    std::uniform_real_distribution<double> X(box.xmin(), box.xmax()), Y(box.ymin(), box.ymax());
+    for (int trial = 0; trial < 40; ++trial) {
+      const Point p(X(rng), Y(rng)), q(X(rng), Y(rng));
+      if (!geometry::visible(env, p, q)) continue;
+      const auto w = C.walk(p, q);
+      if (!w) continue;  // through a vertex of the arrangement, or an end on a boundary
+      // Brute force: every piece the open segment crosses, ordered along it.
+      const auto ep = geometry::to_exact(p), eq = geometry::to_exact(q);
+      std::vector<std::pair<geometry::ExactFT, std::uint32_t>> hits;
+      for (std::uint32_t b = 0; b < C.boundaries().size(); ++b) {
+        const auto& h = A.half_edges()[C.boundaries()[b].half_edge];
+        const auto &a = A.vertices()[h.origin], &z = A.vertices()[h.target];
+        if (geometry::orientation(ep, eq, a) * geometry::orientation(ep, eq, z) >= 0) continue;
+        if (geometry::orientation(a, z, ep) * geometry::orientation(a, z, eq) >= 0) continue;
+        const auto x = CGAL::intersection(geometry::ExactKernel::Line_2(ep, eq), geometry::ExactKernel::Line_2(a, z));
+        hits.push_back({CGAL::squared_distance(ep, *boost::get<geometry::ExactPoint>(&*x)), b});
+      }
+      std::sort(hits.begin(), hits.end());
+      ASSERT_EQ(hits.size(), w->size()) << name;
+      for (std::size_t i = 0; i < hits.size(); ++i) EXPECT_EQ(hits[i].second, (*w)[i].boundary) << name;
+      ++walks;
+    }
+  }
+  EXPECT_GT(walks, 100u);
+}
+
+TEST(PursuitCells, HouseExpoPlanThroughThinCellsPassesTheChecker) {
+  const auto s = scene::import_houseexpo(
+      scene::read_file(std::string(PREIMAGE_SHARED_DATA) + "/floorplans/house_expo_room_0000.json"), "house 0000");
+  const auto C = ConservativeCells::build(*s.environment);
+  EXPECT_GT(C.tiny_cells(), 0u) << "decimal coordinates make rays that nearly meet";
+  const auto r = pursuit::search(C, 1);
+  ASSERT_TRUE(r.plan);
+  std::size_t thin = 0;
+  for (auto& m : r.plan->moves) thin += C.cell(m.to).tiny;
+  EXPECT_GT(thin, 0u) << "the shortest plan crosses a thin cell (drawn by one straight segment)";
+  EXPECT_TRUE(pursuit::check_paths(*s.environment, r.plan->paths).cleared);
 }
