@@ -123,7 +123,7 @@ void write_frames(const std::string& svg, const geometry::Environment& env, cons
 struct PlanFlags {
   std::string file, start, svg;
   std::size_t pursuers = 1, max_states = 4'000'000, frames = 6;
-  bool split = false, no_check = false, as_json = false;
+  bool split = false, no_check = false, as_json = false, any = false;
 };
 
 json plan_json(const pursuit::Plan& p) {
@@ -147,7 +147,7 @@ void run_plan(const PlanFlags& F) {
     // The exact minimum where exhaustive search settles it: one pursuer, or not one (then
     // the split plan with two is optimal).
     const auto C = pursuit::ConservativeCells::build(env);
-    pursuit::SearchOptions o{start, F.max_states};
+    pursuit::SearchOptions o{start, F.max_states, false};  // existence is the question
     const auto one = pursuit::search(C, 1, o);
     std::string minimum = "unknown";
     json min_json = nullptr;
@@ -164,7 +164,7 @@ void run_plan(const PlanFlags& F) {
   } else {
     const auto C = pursuit::ConservativeCells::build(env);
     std::vector<pursuit::SearchResult> attempts;
-    const auto r = pursuit::least_pursuers(C, F.pursuers, {start, F.max_states}, &attempts);
+    const auto r = pursuit::least_pursuers(C, F.pursuers, {start, F.max_states, !F.any}, &attempts);
     json att = json::array();
     for (auto& a : attempts) {
       att.push_back({{"pursuers", a.pursuers}, {"outcome", pursuit::to_string(a.outcome)}, {"states", a.states}});
@@ -282,6 +282,7 @@ void add_pursuit_commands(CLI::App& app) {
     cmd->add_option("--start", F->start, "Every pursuer starts here (default: the scene's \"start\", else anywhere)");
     add_count(cmd, "--max-states", F->max_states, 1, 1'000'000'000, "Information states to store before giving up");
     cmd->add_flag("--split", F->split, "The constructive O(log n) strategy (simply connected scenes), beside the exact minimum");
+    cmd->add_flag("--any", F->any, "Any plan, not the shortest: states with fewer contaminated components first (still complete)");
     cmd->add_flag("--no-check", F->no_check, "Skip the independent contamination check of the plan");
     add_count(cmd, "--frames", F->frames, 1, 24, "Moments drawn in the --svg small multiples");
     cmd->add_flag("--json", F->as_json, "Machine-readable output on stdout");

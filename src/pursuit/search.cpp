@@ -131,6 +131,7 @@ struct Node {
   double dist;
   std::uint32_t parent;
   std::uint32_t slot, boundary;
+  bool closed = false;
 };
 
 std::uint32_t start_cell_of(const ConservativeCells& C, const Point& p) {
@@ -343,8 +344,11 @@ SearchResult search(const ConservativeCells& C, std::size_t k, const SearchOptio
   JointSpace J(C, k);
   std::vector<Node> nodes;
   std::unordered_map<StateKey, std::uint32_t, StateHash> seen;
-  using QItem = std::pair<double, std::uint32_t>;
+  // Queue key: the distance (shortest plan), or the number of contaminated components
+  // first (any plan, found sooner); entries carry the distance they were pushed with.
+  using QItem = std::tuple<double, double, std::uint32_t>;
   std::priority_queue<QItem, std::vector<QItem>, std::greater<>> queue;
+  auto priority = [&](const filter::ShadowLabels& l, double d) { return o.shortest ? d : static_cast<double>(l.contaminated()); };
   // Dominance: labels are monotone under every transition, so a state whose contaminated
   // components include those of a state already settled in the same cells (at no larger
   // distance) can do nothing that one cannot; it is not explored.
@@ -361,16 +365,17 @@ SearchResult search(const ConservativeCells& C, std::size_t k, const SearchOptio
     }
     return false;
   };
-  auto offer = [&](StateKey key, double d, std::uint32_t parent, std::uint32_t slot, std::uint32_t b) -> bool {
-    if (dominated(key)) return true;
-    auto [it, fresh] = seen.try_emplace(key, static_cast<std::uint32_t>(nodes.size()));
+  auto offer = [&](StateKey key_state, double d, std::uint32_t parent, std::uint32_t slot, std::uint32_t b) -> bool {
+    if (dominated(key_state)) return true;
+    auto [it, fresh] = seen.try_emplace(key_state, static_cast<std::uint32_t>(nodes.size()));
     if (fresh) {
       if (nodes.size() >= o.max_states) return false;
-      nodes.push_back({std::move(key), d, parent, slot, b});
-      queue.push({d, it->second});
-    } else if (d < nodes[it->second].dist) {
+      const double pr = priority(key_state.labels, d);
+      nodes.push_back({std::move(key_state), d, parent, slot, b});
+      queue.push({pr, d, it->second});
+    } else if (d < nodes[it->second].dist && !nodes[it->second].closed) {
       nodes[it->second].dist = d, nodes[it->second].parent = parent, nodes[it->second].slot = slot, nodes[it->second].boundary = b;
-      queue.push({d, it->second});
+      queue.push({priority(nodes[it->second].key.labels, d), d, it->second});
     }
     return true;
   };
@@ -387,9 +392,11 @@ SearchResult search(const ConservativeCells& C, std::size_t k, const SearchOptio
   bool budget = false;
   std::vector<char> done;
   while (!queue.empty() && !goal && !budget) {
-    const auto [d, id] = queue.top();
+    const auto [prio, d, id] = queue.top();
+    (void)prio;
     queue.pop();
-    if (d > nodes[id].dist) continue;
+    if (d > nodes[id].dist || nodes[id].closed) continue;
+    nodes[id].closed = true;  // (with the greedy order a closed state may be offered again, shorter)
     if (dominated(nodes[id].key)) continue;
     settled[nodes[id].key.tuple].push_back(id);
     ++res.states;
@@ -452,12 +459,13 @@ filter::ShadowLabels cross(const ConservativeCells& C, std::uint32_t c, std::uin
 }
 }  // namespace
 
-std::optional<std::size_t> fewest_crossings(const ConservativeCells& C, std::uint32_t start_cell) {
+std::optional<std::size_t> fewest_crossings(const ConservativeCells& C, std::uint32_t start_cell, std::size_t* reached) {
   std::unordered_set<StateKey, StateHash> seen;
   std::vector<StateKey> layer{{start_cell, filter::ShadowLabels(C.cell(start_cell).shadows.num_components, true)}};
   seen.insert(layer[0]);
   for (std::size_t depth = 0; !layer.empty(); ++depth) {
     std::vector<StateKey> next;
+    if (reached) *reached = seen.size();
     for (auto& s : layer) {
       if (s.labels.all_clear()) return depth;
       for (std::uint32_t b : C.boundaries_of(s.tuple)) {

@@ -219,7 +219,7 @@ class Splitter {
   std::optional<Plan> one_pursuer_plan(const std::vector<std::uint32_t>& region) const {
     if (!search_regions_ || region.size() > 400) return std::nullopt;
     const auto cells = ConservativeCells::build(sub_environment(region));
-    const auto r = search(cells, 1, {std::nullopt, 200'000});
+    const auto r = search(cells, 1, {std::nullopt, 200'000, false});
     if (r.outcome != SearchResult::Outcome::Plan) return std::nullopt;
     return r.plan;
   }

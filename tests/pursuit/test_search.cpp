@@ -123,3 +123,18 @@ TEST(PursuitSearch, MergedSearchAgreesWithWalksThatDoNotMerge) {
   EXPECT_GT(compared, 12u);
   EXPECT_GE(no_plan, 3u) << "the environments with a hole";
 }
+
+TEST(PursuitSearch, AnyPlanOrderAgreesOnExistence) {
+  std::vector<Environment> envs{pursuit::examples::room_with_pillar(), pursuit::examples::three_arms(),
+                                pursuit::examples::corridor_with_rooms(3), g::random_environment(18, 1, 121)};
+  for (std::uint64_t s = 1; s <= 6; ++s) envs.push_back(Environment::make(g::random_simple_polygon(16 + 2 * s, 700 + s, 10.0), {}));
+  for (std::size_t i = 0; i < envs.size(); ++i) {
+    const auto C = ConservativeCells::build(envs[i]);
+    const auto shortest = pursuit::search(C, 1);
+    pursuit::SearchOptions o;
+    o.shortest = false;
+    const auto any = pursuit::search(C, 1, o);
+    EXPECT_EQ(any.outcome, shortest.outcome) << "environment " << i;
+    if (any.plan) expect_checked(envs[i], any, "any plan, environment " + std::to_string(i));
+  }
+}

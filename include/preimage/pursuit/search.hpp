@@ -39,6 +39,9 @@ struct Plan {
 struct SearchOptions {
   std::optional<Point> start;          // every pursuer starts here; unset: anywhere (the best cell)
   std::size_t max_states = 4'000'000;  // information states stored before giving up (memory bound)
+  /// false: any plan, states with fewer contaminated components first (usually far fewer
+  /// states; still complete, so "no plan" stays a proof; the plan is not the shortest).
+  bool shortest = true;
 };
 
 struct SearchResult {
@@ -71,7 +74,9 @@ std::optional<std::size_t> search_without_merging(const ConservativeCells& cells
                                                   bool& complete);
 
 /// The fewest crossings of a one-pursuer plan from `start_cell` (breadth-first over the
-/// information graph), or nullopt if none exists.
-std::optional<std::size_t> fewest_crossings(const ConservativeCells& cells, std::uint32_t start_cell);
+/// information graph, equal states merged), or nullopt if none exists; `reached` receives
+/// the number of information states reached.
+std::optional<std::size_t> fewest_crossings(const ConservativeCells& cells, std::uint32_t start_cell,
+                                            std::size_t* reached = nullptr);
 
 }  // namespace preimage::pursuit
