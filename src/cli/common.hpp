@@ -52,6 +52,7 @@ void add_beams_homotopy_commands(CLI::App* beams_cmd);  // homotopy, winding
 void add_wallfollow_commands(CLI::App& app);
 void add_landmarks_commands(CLI::App& app);
 void add_track_commands(CLI::App& app);
+void add_pursuit_commands(CLI::App& app);
 void add_demo_command(CLI::App& app);
 
 }  // namespace preimage::cli

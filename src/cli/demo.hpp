@@ -22,5 +22,6 @@ void demo_beams_homotopy(DemoContext& ctx);
 void demo_wallfollow(DemoContext& ctx);
 void demo_landmarks(DemoContext& ctx);
 void demo_tracking(DemoContext& ctx);
+void demo_pursuit(DemoContext& ctx);
 
 }  // namespace preimage::cli

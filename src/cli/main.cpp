@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   preimage::cli::add_wallfollow_commands(app);
   preimage::cli::add_landmarks_commands(app);
   preimage::cli::add_track_commands(app);
+  preimage::cli::add_pursuit_commands(app);
   preimage::cli::add_demo_command(app);
   try {
     app.parse(argc, argv);

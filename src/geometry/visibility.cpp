@@ -25,6 +25,10 @@ ExactPoint exact_vertex(const Environment* environment, const ExactPoint& query,
 
 ExactPoint VisibilityPolygon::exact(std::size_t i) const { return exact_vertex(environment, exact_query, vertices[i]); }
 
+ExactPoint exact_point(const Environment& env, const ExactPoint& query, const VisibilityVertex& v) {
+  return exact_vertex(&env, query, v);
+}
+
 std::vector<ExactPoint> VisibilityPolygon::points() const {
   std::vector<ExactPoint> out;
   out.reserve(vertices.size());
@@ -104,18 +108,36 @@ VisibilityIndex::VisibilityIndex(const Environment& env) : env_(&env), tri_(env)
   }
 }
 
-VisibilityIndex::Located VisibilityIndex::locate_triangle(const Point& q) const {
-  const auto& P = env_->vertices();
+// Environment vertices in the query's number type: input points, or their lazy-exact twins
+// for a constructed query (predicates then mix only like types).
+namespace {
+struct InputVertices {
+  const Environment* env;
+  const Point& operator()(std::uint32_t v) const { return env->vertex(v); }
+};
+struct ExactVertices {
+  const Environment* env;
+  const ExactPoint& operator()(std::uint32_t v) const { return env->exact_vertex(v); }
+};
+InputVertices vertices_for(const Environment* e, const Point*) { return {e}; }
+ExactVertices vertices_for(const Environment* e, const ExactPoint*) { return {e}; }
+ExactPoint exact_of(const Point& q) { return to_exact(q); }
+const ExactPoint& exact_of(const ExactPoint& q) { return q; }
+}  // namespace
+
+template <class Q>
+VisibilityIndex::Located VisibilityIndex::locate_triangle(const Q& q, const Point& approx) const {
+  const auto P = vertices_for(env_, &q);
   const auto& T = tri_.triangles();
   auto test = [&](std::uint32_t t) -> std::optional<Located> {
     const Triangle& tr = T[t];
     int o[3];
     for (int i = 0; i < 3; ++i) {
-      o[i] = orientation(P[tr.v[i]], P[tr.v[(i + 1) % 3]], q);
+      o[i] = orientation(P(tr.v[i]), P(tr.v[(i + 1) % 3]), q);
       if (o[i] < 0) return std::nullopt;
     }
     for (int i = 0; i < 3; ++i)
-      if (q == P[tr.v[i]]) return Located{{Location::Kind::AtVertex, tr.v[i]}, t, i};
+      if (q == P(tr.v[i])) return Located{{Location::Kind::AtVertex, tr.v[i]}, t, i};
     for (int i = 0; i < 3; ++i)
       if (o[i] == 0) {
         if (tr.nbr[i] == kNone) return Located{{Location::Kind::OnEdge, tr.edge[i]}, t, i};
@@ -123,7 +145,7 @@ VisibilityIndex::Located VisibilityIndex::locate_triangle(const Point& q) const 
       }
     return Located{{Location::Kind::Interior, 0}, t, -1};
   };
-  const double fx = (q.x() - x0_) / cw_, fy = (q.y() - y0_) / ch_;
+  const double fx = (approx.x() - x0_) / cw_, fy = (approx.y() - y0_) / ch_;
   if (fx >= -1 && fy >= -1 && fx <= gx_ + 1 && fy <= gy_ + 1) {
     std::uint32_t i = std::min<std::uint32_t>(gx_ - 1, static_cast<std::uint32_t>(std::max(0.0, fx)));
     std::uint32_t j = std::min<std::uint32_t>(gy_ - 1, static_cast<std::uint32_t>(std::max(0.0, fy)));
@@ -131,11 +153,15 @@ VisibilityIndex::Located VisibilityIndex::locate_triangle(const Point& q) const 
     for (auto k = cell_off_[c]; k < cell_off_[c + 1]; ++k)
       if (auto r = test(cell_tris_[k])) return *r;
   }
-  // Not in any triangle: classify with the exact O(n) locator (outside or in a hole).
-  return Located{geometry::locate(*env_, q), kNone, -1};
+  // Not in any triangle: classify with the exact O(n) locator (outside or in a hole; for a
+  // constructed query its rounding names where it lies).
+  Location loc = geometry::locate(*env_, approx);
+  if (loc.in_free_space()) loc = {Location::Kind::Outside, 0};
+  if constexpr (std::is_same_v<Q, Point>) loc = geometry::locate(*env_, q);
+  return Located{loc, kNone, -1};
 }
 
-Location VisibilityIndex::locate(const Point& q) const { return locate_triangle(q).loc; }
+Location VisibilityIndex::locate(const Point& q) const { return locate_triangle(q, q).loc; }
 
 // ---------------------------------------------------------------- expansion
 namespace {
@@ -155,13 +181,22 @@ struct Piece {  // visible part of one boundary edge, between two cone rays
 
 }  // namespace
 
-VisibilityPolygon VisibilityIndex::compute(const Point& q) const {
-  const Located where = locate_triangle(q);
+VisibilityPolygon VisibilityIndex::compute(const Point& q) const { return compute_at(q, q); }
+
+VisibilityPolygon VisibilityIndex::compute(const ExactPoint& q) const {
+  const auto& a = q.approx();
+  return compute_at(q, Point(CGAL::to_double(a.x()), CGAL::to_double(a.y())));
+}
+
+template <class Q>
+VisibilityPolygon VisibilityIndex::compute_at(const Q& q, const Point& approx) const {
+  const Located where = locate_triangle(q, approx);
   if (!where.loc.in_free_space())
-    throw InputError("visibility: query point " + format_point(q) + " is not in free space: it lies " +
+    throw InputError("visibility: query point " + format_point(approx) + " is not in free space: it lies " +
                      (where.loc.kind == Location::Kind::InHole ? "inside " + env_->ring_name(where.loc.index + 1)
                                                                : "outside " + env_->ring_name(0)));
   const auto& P = env_->vertices();
+  const auto Pq = vertices_for(env_, &q);  // vertices in the query's type, for predicates
   const auto& T = tri_.triangles();
   const Environment& E = *env_;
 
@@ -183,8 +218,8 @@ VisibilityPolygon VisibilityIndex::compute(const Point& q) const {
       if (tr.nbr[it.slot] == kNone) {  // boundary: emit the visible piece of this edge
         const std::uint32_t e = tr.edge[it.slot];
         Piece pc{e, it.R, it.L, {}, {}};
-        pc.start = (it.R == r || orientation(q, P[it.R], P[r]) == 0) ? sym_vertex(r) : sym_hit(it.R, e);
-        pc.end = (it.L == l || orientation(q, P[it.L], P[l]) == 0) ? sym_vertex(l) : sym_hit(it.L, e);
+        pc.start = (it.R == r || orientation(q, Pq(it.R), Pq(r)) == 0) ? sym_vertex(r) : sym_hit(it.R, e);
+        pc.end = (it.L == l || orientation(q, Pq(it.L), Pq(l)) == 0) ? sym_vertex(l) : sym_hit(it.L, e);
         pieces.push_back(pc);
         continue;
       }
@@ -194,8 +229,8 @@ VisibilityPolygon VisibilityIndex::compute(const Point& q) const {
       while (nt.v[j] != l) ++j;  // entry edge in u runs l -> r
       const std::uint32_t c = nt.v[(j + 2) % 3];
       const int right_slot = (j + 1) % 3, left_slot = (j + 2) % 3;  // (r, c) and (c, l)
-      const int cr = orientation(q, P[it.R], P[c]);
-      const int cl = orientation(q, P[it.L], P[c]);
+      const int cr = orientation(q, Pq(it.R), Pq(c));
+      const int cl = orientation(q, Pq(it.L), Pq(c));
       if (cr <= 0) {
         stack.push_back({u, left_slot, it.R, it.L});
       } else if (cl >= 0) {
@@ -209,8 +244,8 @@ VisibilityPolygon VisibilityIndex::compute(const Point& q) const {
 
   VisibilityPolygon out;
   out.environment = env_;
-  out.query = q;
-  out.exact_query = to_exact(q);
+  out.query = approx;
+  out.exact_query = exact_of(q);
   out.location = where.loc;
   const Triangle& t0 = T[where.tri];
   switch (where.loc.kind) {
@@ -276,14 +311,15 @@ VisibilityPolygon VisibilityIndex::compute(const Point& q) const {
   auto realise = [&](const Sym& sv) -> VisibilityVertex {
     switch (sv.kind) {
       case VisibilityVertex::Kind::EnvironmentVertex: return {sv.kind, sv.vertex, kNone, P[sv.vertex]};
-      case VisibilityVertex::Kind::Query: return {sv.kind, kNone, kNone, q};
+      case VisibilityVertex::Kind::Query: return {sv.kind, kNone, kNone, approx};
       case VisibilityVertex::Kind::RayHit: break;
     }
     // Double rounding of the hit, for drawing only; decisions never read it.
     const Point &w = P[sv.vertex], &a = P[sv.edge], &b = P[E.next(sv.edge)];
-    const double dx = w.x() - q.x(), dy = w.y() - q.y(), ex = b.x() - a.x(), ey = b.y() - a.y();
-    const double s = ((a.x() - q.x()) * ey - (a.y() - q.y()) * ex) / (dx * ey - dy * ex);
-    return {sv.kind, sv.vertex, sv.edge, Point(q.x() + s * dx, q.y() + s * dy)};
+    const Point& o = approx;
+    const double dx = w.x() - o.x(), dy = w.y() - o.y(), ex = b.x() - a.x(), ey = b.y() - a.y();
+    const double s = ((a.x() - o.x()) * ey - (a.y() - o.y()) * ex) / (dx * ey - dy * ex);
+    return {sv.kind, sv.vertex, sv.edge, Point(o.x() + s * dx, o.y() + s * dy)};
   };
   const std::size_t m = pieces.size();
   out.vertices.reserve(2 * m);
@@ -396,7 +432,7 @@ bool VisibilityIndex::walk(const Point& a, const Point& b, std::uint32_t start, 
   if (start != kNone) {
     step = turn_at(start);
   } else {
-    const Located where = locate_triangle(a);
+    const Located where = locate_triangle(a, a);
     if (!where.loc.in_free_space()) return false;
     if (to_b && a == b) return true;
     const Triangle& t0 = T[where.tri];

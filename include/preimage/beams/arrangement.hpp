@@ -5,8 +5,9 @@
 // point strictly inside, and the directed labelled multigraph G whose edge r1 -> r2
 // carries the observation made when a body crosses from r1 into r2.
 //
-// Built here, with exact predicates on the input coordinates and lazy-exact crossing
-// points; CGAL's Arrangement_2 serves only as a test oracle. A scene without an
+// The subdivision itself is geometry::SegmentArrangement (shared with the pursuit
+// module's conservative cells); this class validates the beams, feeds them to it and
+// builds G. CGAL's Arrangement_2 serves only as a test oracle. A scene without an
 // environment is the unbounded plane with point landmarks: the subdivision is then
 // built inside a box that strictly contains every landmark and beam crossing, which
 // changes no region's combinatorics.
@@ -14,6 +15,7 @@
 #include <preimage/beams/alphabet.hpp>
 #include <preimage/filter/transition_system.hpp>
 #include <preimage/geometry/environment.hpp>
+#include <preimage/geometry/segment_arrangement.hpp>
 #include <preimage/scene/scene.hpp>
 
 #include <optional>
@@ -86,21 +88,21 @@ class BeamArrangement {
   /// The obstacle a vertex lies on, kOuter for the outer boundary, kNone for a crossing of beams.
   std::uint32_t vertex_obstacle(std::uint32_t vertex) const { return vertex_obstacle_[vertex]; }
 
-  const std::vector<ExactPoint>& vertices() const { return vertices_; }
+  const std::vector<ExactPoint>& vertices() const { return arr_.vertices(); }
   const std::vector<HalfEdge>& half_edges() const { return half_edges_; }
   static std::uint32_t twin(std::uint32_t h) { return h ^ 1u; }
   /// Half-edges of beam i's pieces, in order from -> to: [first, last), even ids (step 2).
-  std::pair<std::uint32_t, std::uint32_t> beam_pieces(std::uint32_t i) const { return {beam_he_[i], beam_he_[i + 1]}; }
+  std::pair<std::uint32_t, std::uint32_t> beam_pieces(std::uint32_t i) const { return arr_.segment_pieces(i); }
   /// Half-edges of a region (all its boundary cycles).
-  std::span<const std::uint32_t> region_half_edges(std::uint32_t r) const {
-    return {region_he_.data() + region_he_begin_[r], region_he_.data() + region_he_begin_[r + 1]};
-  }
+  std::span<const std::uint32_t> region_half_edges(std::uint32_t r) const { return arr_.region_half_edges(r); }
   /// Region on the left of half-edge h, kNone for obstacle interiors and the outside.
-  std::uint32_t region_of(std::uint32_t h) const { return face_region_[half_edges_[h].face]; }
+  std::uint32_t region_of(std::uint32_t h) const { return arr_.region_of(h); }
 
   std::size_t num_regions() const { return regions_.size(); }
   const std::vector<Region>& regions() const { return regions_; }
-  std::size_t num_crossings() const { return crossings_; }  // beam-beam crossing points
+  std::size_t num_crossings() const { return arr_.num_crossings(); }  // beam-beam crossing points
+  /// The subdivision (shared representation).
+  const geometry::SegmentArrangement& subdivision() const { return arr_; }
 
   /// G's transition relation over regions: one transition per distinct (from, symbol,
   /// to), which is all a region filter or a region sequence can tell apart.
@@ -111,7 +113,9 @@ class BeamArrangement {
   /// The first edge from -> to observing y (the lowest half-edge), or nullptr.
   const Crossing* find_edge(std::uint32_t from, Symbol y, std::uint32_t to) const;
   /// Number of beam pieces: maximal parts of beams between crossings and ends.
-  std::size_t num_pieces() const { return beam_he_.empty() ? 0 : (beam_he_.back() - beam_he_.front()) / 2; }
+  std::size_t num_pieces() const {
+    return beams_.empty() ? 0 : (arr_.segment_pieces(beams_.size() - 1).second - arr_.segment_pieces(0).first) / 2;
+  }
   /// Which piece half-edge h (of a beam) is: its beam and its index along the beam,
   /// counted from 0 at the beam's `from` end.
   struct Piece {
@@ -121,7 +125,7 @@ class BeamArrangement {
 
   /// Region strictly containing p, or nullopt if p is on a beam, on the boundary or
   /// outside free space. O(edges).
-  std::optional<std::uint32_t> locate(const ExactPoint& p) const;
+  std::optional<std::uint32_t> locate(const ExactPoint& p) const { return arr_.locate(p); }
 
  private:
   Alphabet alphabet_;
@@ -129,16 +133,11 @@ class BeamArrangement {
   geometry::Environment env_;
   bool unbounded_ = false;
   std::vector<geometry::Point> landmarks_;
-  std::vector<ExactPoint> vertices_;
-  std::vector<HalfEdge> half_edges_;
+  geometry::SegmentArrangement arr_;
+  std::vector<HalfEdge> half_edges_;  // arr_'s half-edges with beam ids
   std::vector<std::uint32_t> vertex_obstacle_;
   std::vector<std::string> landmark_labels_;
-  std::vector<std::uint32_t> beam_he_;  // beam i's pieces: half-edges [beam_he_[i], beam_he_[i+1])
-  std::vector<std::uint32_t> out_begin_, out_;  // CSR: outgoing half-edges CCW from east
-  std::vector<std::uint32_t> face_region_;
   std::vector<Region> regions_;
-  std::vector<std::uint32_t> region_he_begin_, region_he_;
-  std::size_t crossings_ = 0;
   filter::TransitionSystem graph_;
   std::vector<Crossing> edges_;
 

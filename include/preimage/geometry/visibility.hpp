@@ -50,6 +50,9 @@ struct VisibilityPolygon {
   double area() const;
 };
 
+/// Exact coordinates of a visibility vertex of V(query) (lazy-exact construction for ray hits).
+ExactPoint exact_point(const Environment& env, const ExactPoint& query, const VisibilityVertex& v);
+
 /// Preprocesses one environment (triangulation + point-location grid) for many queries.
 class VisibilityIndex {
  public:
@@ -62,6 +65,9 @@ class VisibilityIndex {
   /// V(q) for q in the interior, on an edge, or at a vertex; throws InputError if q is
   /// outside free space.
   VisibilityPolygon compute(const Point& q) const;
+  /// V(q) for a constructed (lazy-exact) query, e.g. a point inside a region thinner than
+  /// double precision resolves. The same decisions on lazy-exact predicates: slower.
+  VisibilityPolygon compute(const ExactPoint& q) const;
 
   /// Does the closed segment pq lie in closed free space (grazing the boundary allowed)?
   /// The same answer as geometry::visible, by a walk through the triangles the segment
@@ -74,7 +80,10 @@ class VisibilityIndex {
 
  private:
   struct Located { Location loc; std::uint32_t tri; int slot; };
-  Located locate_triangle(const Point& q) const;
+  template <class Q>
+  Located locate_triangle(const Q& q, const Point& approx) const;
+  template <class Q>
+  VisibilityPolygon compute_at(const Q& q, const Point& approx) const;
   template <class OnVertex>
   bool walk(const Point& a, const Point& b, std::uint32_t start, bool to_b, OnVertex&& on_vertex) const;
 

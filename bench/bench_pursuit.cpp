@@ -1,0 +1,126 @@
+// Visibility-based pursuit: conservative cells + information graph + one-pursuer plan on
+// random simple polygons (20, 50, 100, 200 reflex vertices) and the office, comb and
+// spiral generators; the search beside one that does not merge equal information states
+// (depth-first over cell walks, pruning only cycles on the walk itself), in the same run.
+#include <preimage/geometry/generators.hpp>
+#include <preimage/pursuit/search.hpp>
+
+#include "ratio_reporter.hpp"
+
+#include <map>
+#include <memory>
+
+using namespace preimage;
+namespace g = geometry::generators;
+
+namespace {
+
+// Random simple polygons have about half their vertices reflex: n = 2 r.
+geometry::Environment make(const std::string& name) {
+  if (name == "office") return g::office(2, 2);
+  if (name == "comb") return geometry::Environment::make(g::comb(12), {});
+  if (name == "spiral") return geometry::Environment::make(g::spiral(3, 1.0, 24), {});
+  const std::size_t reflex = std::stoul(name.substr(7));  // "reflex:N"
+  for (std::uint64_t seed = 1;; ++seed) {
+    auto env = geometry::Environment::make(g::random_simple_polygon(2 * reflex + 2, 900 + seed, 100.0), {});
+    std::size_t r = 0;
+    for (std::size_t v = 0; v < env.num_vertices(); ++v) r += env.is_reflex(v);
+    if (r >= reflex) return env;
+  }
+}
+
+struct Case {
+  geometry::Environment env;
+  std::unique_ptr<pursuit::ConservativeCells> cells;
+  pursuit::SearchResult plan;
+};
+
+Case& get(const std::string& name) {
+  static std::map<std::string, std::unique_ptr<Case>> cache;
+  auto& c = cache[name];
+  if (!c) {
+    c = std::make_unique<Case>(Case{make(name), nullptr, {}});
+    c->cells = std::make_unique<pursuit::ConservativeCells>(pursuit::ConservativeCells::build(c->env));
+    c->plan = pursuit::search(*c->cells, 1);
+  }
+  return *c;
+}
+
+const char* kCases[] = {"reflex:20", "reflex:50", "reflex:100", "reflex:200", "office", "comb", "spiral"};
+
+void counters(benchmark::State& state, const Case& c) {
+  state.counters["reflex"] = static_cast<double>(c.cells->reflex_vertices());
+  state.counters["cells"] = static_cast<double>(c.cells->size());
+  state.counters["states"] = static_cast<double>(c.plan.states);
+  state.counters["plan"] = c.plan.outcome == pursuit::SearchResult::Outcome::Plan;
+}
+
+// The whole pipeline: critical rays, cells, shadows, transitions, search, drawn plan.
+void pipeline(benchmark::State& state, std::string name) {
+  const Case& c = get(name);
+  for (auto _ : state) {
+    const auto cells = pursuit::ConservativeCells::build(c.env);
+    auto r = pursuit::search(cells, 1);
+    benchmark::DoNotOptimize(r);
+  }
+  counters(state, c);
+}
+
+void cells_only(benchmark::State& state, std::string name) {
+  const Case& c = get(name);
+  for (auto _ : state) {
+    auto cells = pursuit::ConservativeCells::build(c.env);
+    benchmark::DoNotOptimize(cells);
+  }
+  counters(state, c);
+}
+
+// Search only, on the same cells: breadth-first over the information graph, equal states
+// merged (preimage), against depth-first walks that do not merge them (reference), both
+// asked for the fewest crossings from the same start cell. The reference goes as deep as
+// the answer (or, with no plan, as there are information states) within 5e6 walks.
+void search_merged(benchmark::State& state, std::string name) {
+  const Case& c = get(name);
+  const std::uint32_t start = c.plan.plan ? c.plan.plan->start_cell : 0;
+  std::optional<std::size_t> depth;
+  std::size_t reached = 0;
+  for (auto _ : state) {
+    depth = pursuit::fewest_crossings(*c.cells, start, &reached);
+    benchmark::DoNotOptimize(depth);
+  }
+  state.counters["crossings"] = depth ? static_cast<double>(*depth) : -1;
+  state.counters["states"] = static_cast<double>(reached);
+}
+
+void search_unmerged(benchmark::State& state, std::string name) {
+  const Case& c = get(name);
+  const std::uint32_t start = c.plan.plan ? c.plan.plan->start_cell : 0;
+  std::size_t reached = 0;
+  const auto depth = pursuit::fewest_crossings(*c.cells, start, &reached);
+  std::size_t nodes = 0;
+  bool complete = false;
+  std::optional<std::size_t> found;
+  for (auto _ : state) {
+    found = pursuit::search_without_merging(*c.cells, start, depth ? *depth : reached, 5'000'000, nodes, complete);
+    benchmark::DoNotOptimize(found);
+  }
+  state.counters["walks"] = static_cast<double>(nodes);
+  state.counters["complete"] = complete;
+  state.counters["crossings"] = found ? static_cast<double>(*found) : -1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  for (const char* n : kCases) {
+    benchmark::RegisterBenchmark(("pursuit-pipeline/" + std::string(n)).c_str(), pipeline, std::string(n))->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("pursuit-cells/" + std::string(n)).c_str(), cells_only, std::string(n))->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("fewest-crossings/preimage/" + std::string(n)).c_str(), search_merged, std::string(n))
+        ->Unit(benchmark::kMillisecond)
+        ->Iterations(1);
+    benchmark::RegisterBenchmark(("fewest-crossings/reference/" + std::string(n)).c_str(), search_unmerged, std::string(n))
+        ->Unit(benchmark::kMillisecond)
+        ->Iterations(1);
+  }
+  return preimage::bench::run_with_ratios(argc, argv);
+}

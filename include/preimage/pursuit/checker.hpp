@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: Apache-2.0
+// An independent contamination checker for pursuer paths. It uses neither the cells nor
+// the information graph: it moves the pursuers along their paths, computes every V
+// exactly at each sampled moment, and carries the contaminated set as a union of faces
+// of the arrangement of the current visibility polygons' free edges. A face hidden from
+// every pursuer belongs to a shadow region; a shadow region is contaminated iff it meets
+// the previously contaminated set (at the first moment every shadow region is).
+//
+// Moments are chosen so that no step skips a change of the shadows' structure: for a
+// single moving pursuer, the visibility polygons change combinatorially only where it
+// crosses a line through two mutually visible environment vertices, or through an
+// environment vertex and a vertex of a still pursuer's visibility polygon; the checker
+// samples once between every two such crossings. Between two samples the
+// shadow regions only deform, and a region keeps a part near its fixed anchors, so the
+// "meets" rule follows the evader exactly. When several pursuers move at once the
+// crossings of each with the vertex lines are sampled and the steps are refined
+// uniformly (`substeps`); the result is then as fine as the sampling.
+#pragma once
+#include <preimage/geometry/environment.hpp>
+
+#include <optional>
+#include <vector>
+
+namespace preimage::pursuit {
+
+using Paths = std::vector<std::vector<geometry::Point>>;
+
+struct CheckOptions {
+  std::size_t substeps = 8;  // samples per segment when several pursuers move together
+  std::vector<std::size_t> frames;  // waypoints at which to record a Frame (for figures)
+};
+
+/// The state at a waypoint, rounded for drawing.
+struct CheckFrame {
+  std::size_t waypoint = 0;
+  std::vector<geometry::Point> pursuers;
+  std::vector<std::vector<geometry::Point>> visible;       // V of each pursuer
+  std::vector<std::vector<std::vector<geometry::Point>>> contaminated;  // faces, each as rings (even-odd)
+  std::size_t regions = 0;  // contaminated shadow regions (a region may span several faces)
+};
+
+struct CheckResult {
+  bool cleared = false;
+  std::size_t moments = 0;  // sampled moments
+  /// A moment: on the way from waypoint `waypoint` to the next, at `fraction` of it.
+  struct Moment {
+    std::size_t waypoint = 0;
+    double fraction = 0;
+    geometry::Point where;  // a point of the region concerned
+  };
+  /// The first moment a cleared shadow region was contaminated again (merged with a
+  /// contaminated one), if any.
+  std::optional<Moment> first_recontamination;
+  /// The moment the contaminated set became empty (when cleared).
+  std::optional<Moment> cleared_at;
+  /// A point in each region still contaminated at the end, and their total area.
+  std::vector<geometry::Point> contaminated_at_end;
+  std::vector<geometry::ExactPoint> contaminated_exact;  // the same points, exact (strictly inside the regions)
+  double contaminated_area = 0;
+  std::vector<CheckFrame> frames;
+};
+
+/// Throws InputError naming the pursuer and point or segment when the paths are not
+/// polylines in free space with equally many points.
+void validate_paths(const geometry::Environment& env, const Paths& paths);
+
+/// Runs the check (validate_paths first).
+CheckResult check_paths(const geometry::Environment& env, const Paths& paths, const CheckOptions& options = {});
+
+}  // namespace preimage::pursuit

@@ -1,0 +1,355 @@
+// SPDX-License-Identifier: Apache-2.0
+// The contamination checker (see checker.hpp). Between two sampled moments t1, t2 it
+// overlays the free edges of both moments (shared segment arrangement): every face of
+// the overlay lies in one face of each moment's own subdivision, so "a shadow region at
+// t2 meets the contaminated set at t1" becomes "some face of the overlay is in both".
+// Visibility of a face is decided by an exact point-in-polygon test of its sample point
+// against each V; nothing here knows about gaps, cells or labels.
+#include <preimage/pursuit/checker.hpp>
+
+#include <preimage/error.hpp>
+#include <preimage/geometry/queries.hpp>
+#include <preimage/geometry/segment_arrangement.hpp>
+#include <preimage/geometry/visibility.hpp>
+#include <preimage/union_find.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace preimage::pursuit {
+
+using geometry::Environment;
+using geometry::ExactFT;
+using geometry::ExactPoint;
+using geometry::Point;
+
+void validate_paths(const Environment& env, const Paths& paths) {
+  if (paths.empty()) throw InputError("path: no pursuer");
+  for (std::size_t l = 0; l < paths.size(); ++l) {
+    if (paths[l].empty()) throw InputError("path: pursuer " + std::to_string(l + 1) + " has no points");
+    if (paths[l].size() != paths[0].size())
+      throw InputError("path: pursuer " + std::to_string(l + 1) + " has " + std::to_string(paths[l].size()) +
+                       " points, pursuer 1 has " + std::to_string(paths[0].size()) +
+                       " (pursuers pass their waypoints together: repeat a point to wait)");
+    for (std::size_t i = 0; i < paths[l].size(); ++i) {
+      const auto loc = geometry::locate(env, paths[l][i]);
+      if (!loc.in_free_space())
+        throw InputError("path: pursuer " + std::to_string(l + 1) + " point " + std::to_string(i) + " " +
+                         geometry::format_point(paths[l][i]) + " is not in free space (" + geometry::to_string(loc.kind) + ")");
+      if (i > 0 && !geometry::visible(env, paths[l][i - 1], paths[l][i]))
+        throw InputError("path: pursuer " + std::to_string(l + 1) + " segment " + std::to_string(i - 1) + " from " +
+                         geometry::format_point(paths[l][i - 1]) + " to " + geometry::format_point(paths[l][i]) +
+                         " leaves free space");
+    }
+  }
+}
+
+namespace {
+
+// A free edge of some V, split at environment vertices it grazes.
+struct FreeSeg {
+  ExactPoint a, b;
+  geometry::SegmentEnd ea, eb;
+  Point carrier_p, carrier_q;
+};
+
+struct Moment {
+  std::size_t waypoint;
+  double fraction;
+  std::vector<Point> at;
+  std::vector<std::vector<ExactPoint>> loops;  // V of each pursuer, exact
+  std::vector<std::vector<ExactPoint>> vertices_of_v;  // the same, for event lines
+  std::vector<FreeSeg> free;
+};
+
+geometry::SegmentEnd end_of(const geometry::VisibilityPolygon& V, std::size_t i) {
+  const auto& v = V.vertices[i];
+  using K = geometry::VisibilityVertex::Kind;
+  if (v.kind == K::EnvironmentVertex) return {geometry::SegmentEnd::Kind::AtVertex, v.vertex};
+  if (v.kind == K::RayHit) return {geometry::SegmentEnd::Kind::OnEdge, v.edge};
+  // The pursuer itself, on the boundary.
+  if (V.location.kind == geometry::Location::Kind::AtVertex)
+    return {geometry::SegmentEnd::Kind::AtVertex, static_cast<std::uint32_t>(V.location.index)};
+  return {geometry::SegmentEnd::Kind::OnEdge, static_cast<std::uint32_t>(V.location.index)};
+}
+
+Moment take(const Environment& env, const geometry::VisibilityIndex& vis, std::size_t waypoint, double fraction,
+            std::vector<Point> at) {
+  Moment m{waypoint, fraction, std::move(at), {}, {}, {}};
+  for (const Point& q : m.at) {
+    const auto V = vis.compute(q);
+    m.loops.push_back(V.points());
+    const std::size_t n = V.vertices.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      if (V.edges[i].kind != geometry::VisibilityEdge::Kind::Free) continue;
+      const ExactPoint A = m.loops.back()[i], B = m.loops.back()[(i + 1) % n];
+      // Environment vertices strictly inside the free edge (a degenerate position).
+      std::vector<std::pair<ExactPoint, std::uint32_t>> cuts;
+      const CGAL::Bbox_2 box = A.bbox() + B.bbox();
+      for (std::uint32_t v = 0; v < env.num_vertices(); ++v) {
+        const Point& p = env.vertex(v);
+        if (p.x() < box.xmin() || p.x() > box.xmax() || p.y() < box.ymin() || p.y() > box.ymax()) continue;
+        const ExactPoint& e = env.exact_vertex(v);
+        if (geometry::orientation(A, B, e) == 0 && CGAL::collinear_are_strictly_ordered_along_line(A, e, B))
+          cuts.push_back({e, v});
+      }
+      std::sort(cuts.begin(), cuts.end(), [&](auto& x, auto& y) {
+        return CGAL::compare_distance_to_point(A, x.first, y.first) == CGAL::SMALLER;
+      });
+      ExactPoint from = A;
+      geometry::SegmentEnd from_end = end_of(V, i);
+      const Point carrier_q = env.vertex(V.edges[i].reflex);
+      // Pieces between consecutive contacts; a piece running along an edge (the pursuer in
+      // line with it) lies on the boundary and separates nothing.
+      auto add = [&](const ExactPoint& to, geometry::SegmentEnd to_end) {
+        using K = geometry::SegmentEnd::Kind;
+        const bool along = from_end.kind == K::AtVertex && to_end.kind == K::AtVertex &&
+                           (env.next(from_end.index) == to_end.index || env.next(to_end.index) == from_end.index);
+        if (!along) m.free.push_back({from, to, from_end, to_end, q, carrier_q});
+        from = to, from_end = to_end;
+      };
+      for (auto& [p, v] : cuts) add(p, {geometry::SegmentEnd::Kind::AtVertex, v});
+      add(B, end_of(V, (i + 1) % n));
+    }
+  }
+  return m;
+}
+
+bool in_v(const std::vector<ExactPoint>& loop, const ExactPoint& p) { return geometry::winding_number(loop, p) != 0; }
+
+bool hidden(const Moment& m, const ExactPoint& p) {
+  for (auto& loop : m.loops)
+    if (in_v(loop, p)) return false;
+  return true;
+}
+
+// The contaminated set after a moment: one witness point per face of each contaminated region.
+struct Contamination {
+  std::vector<ExactPoint> witnesses;
+  std::vector<Point> regions;  // one point per contaminated region
+  std::vector<ExactPoint> exact_regions;
+  double area = 0;
+  bool recontaminated = false;
+  Point recontaminated_at;
+  std::vector<std::vector<std::vector<Point>>> polygons;  // contaminated faces as rings (when asked)
+};
+
+double face_area(const geometry::SegmentArrangement& A, std::size_t r) {
+  double twice = 0;
+  for (std::uint32_t h : A.region_half_edges(r)) {
+    const Point &a = A.approx_vertices()[A.half_edges()[h].origin], &b = A.approx_vertices()[A.half_edges()[h].target];
+    twice += a.x() * b.y() - b.x() * a.y();
+  }
+  return twice / 2;
+}
+
+// One step from `prev` (contamination `cont`, or everything hidden if null) to `next`.
+Contamination step(const Environment& env, const Moment* prev, const Contamination* cont, const Moment& next,
+                   bool polygons = false) {
+  // Overlay: both moments' free edges, equal ones merged.
+  struct Item {
+    FreeSeg s;
+    bool in_prev;
+  };
+  std::vector<Item> items;
+  if (prev)
+    for (auto& f : prev->free) items.push_back({f, true});
+  for (auto& f : next.free) items.push_back({f, false});
+  for (auto& it : items)
+    if (CGAL::compare_xy(it.s.a, it.s.b) == CGAL::LARGER) std::swap(it.s.a, it.s.b), std::swap(it.s.ea, it.s.eb);
+  std::sort(items.begin(), items.end(), [](const Item& x, const Item& y) {
+    const auto c = CGAL::compare_xy(x.s.a, y.s.a);
+    if (c != CGAL::EQUAL) return c == CGAL::SMALLER;
+    return CGAL::compare_xy(x.s.b, y.s.b) == CGAL::SMALLER;
+  });
+  std::vector<geometry::ArrangementSegment> segs;
+  std::vector<char> of_prev, of_next;
+  for (auto& it : items) {
+    if (segs.empty() || segs.back().from != it.s.a || segs.back().to != it.s.b) {
+      segs.push_back({it.s.a, it.s.b, it.s.ea, it.s.eb, std::make_pair(it.s.carrier_p, it.s.carrier_q)});
+      of_prev.push_back(0), of_next.push_back(0);
+    }
+    (it.in_prev ? of_prev : of_next).back() = 1;
+  }
+  const auto A = geometry::SegmentArrangement::build(env, std::move(segs));
+  const auto& H = A.half_edges();
+  const std::size_t nr = A.num_regions();
+  // Faces of each moment's own subdivision: join across the other moment's edges only.
+  UnionFind f1(nr), f2(nr);
+  for (std::uint32_t h = 0; h < H.size(); h += 2) {
+    const std::uint32_t s = H[h].segment;
+    if (s == geometry::kNone) continue;
+    if (A.region_of(h) == geometry::kNone || A.region_of(h + 1) == geometry::kNone)
+      throw std::logic_error("pursuit checker: a free edge outside free space near " +
+                             geometry::format_point(A.approx_vertices()[H[h].origin]) + " (segment " +
+                             geometry::format_point(geometry::to_double(A.segments()[s].from)) + " - " +
+                             geometry::format_point(geometry::to_double(A.segments()[s].to)) + ", pursuer at " +
+                             std::to_string(next.at[0].x()) + "," + std::to_string(next.at[0].y()) + " hex " + [&]{ char b[80]; std::snprintf(b, 80, "%a %a", next.at[0].x(), next.at[0].y()); return std::string(b); }() + ")");
+    if (!of_prev[s]) f1.join(A.region_of(h), A.region_of(h + 1));
+    if (!of_next[s]) f2.join(A.region_of(h), A.region_of(h + 1));
+  }
+  // Contaminated faces of the previous moment: those holding a witness.
+  std::vector<char> cont1(nr, 0), clear_shadow1(nr, 0);
+  if (cont) {
+    for (auto& w : cont->witnesses)
+      if (auto r = A.locate_closed(w)) cont1[f1.find(*r)] = 1;
+    for (std::uint32_t r = 0; r < nr; ++r) {
+      const std::uint32_t root = f1.find(r);
+      if (root == r && !cont1[root] && hidden(*prev, A.sample(r))) clear_shadow1[root] = 1;
+    }
+  }
+  // Regions of the next moment hidden from everybody, and whether they meet the old set.
+  std::vector<char> hidden2(nr, 0), cont2(nr, 0), seen(nr, 0);
+  Contamination out;
+  for (std::uint32_t r = 0; r < nr; ++r) {
+    const std::uint32_t root = f2.find(r);
+    if (!seen[root]) seen[root] = 1, hidden2[root] = hidden(next, A.sample(root));
+  }
+  for (std::uint32_t r = 0; r < nr; ++r) {
+    const std::uint32_t root = f2.find(r);
+    if (hidden2[root] && (!cont || cont1[f1.find(r)])) cont2[root] = 1;
+  }
+  std::vector<char> reported(nr, 0);
+  for (std::uint32_t r = 0; r < nr; ++r) {
+    const std::uint32_t root = f2.find(r);
+    if (!cont2[root]) continue;
+    out.witnesses.push_back(A.sample(r));
+    out.area += face_area(A, r);
+    if (polygons) {
+      std::vector<std::vector<Point>> rings;
+      for (std::uint32_t h0 : A.region_cycles(r)) {
+        rings.emplace_back();
+        for (std::uint32_t h = h0;;) {
+          rings.back().push_back(A.approx_vertices()[H[h].origin]);
+          h = H[h].next;
+          if (h == h0) break;
+        }
+      }
+      out.polygons.push_back(std::move(rings));
+    }
+    if (!reported[root]) {
+      reported[root] = 1;
+      out.regions.push_back(geometry::to_double(A.sample(r)));
+      out.exact_regions.push_back(A.sample(r));
+    }
+    if (cont && clear_shadow1[f1.find(r)] && !out.recontaminated)
+      out.recontaminated = true, out.recontaminated_at = geometry::to_double(A.sample(r));
+  }
+  return out;
+}
+
+// Parameters in (0, 1) where segment a -> b crosses the line through p and q.
+void crossings(const Point& a, const Point& b, const ExactPoint& p, const ExactPoint& q,
+               std::vector<std::pair<ExactFT, std::pair<ExactPoint, ExactPoint>>>& out) {
+  const ExactPoint ea = geometry::to_exact(a), eb = geometry::to_exact(b);
+  const int sa = geometry::orientation(p, q, ea), sb = geometry::orientation(p, q, eb);
+  if (sa * sb >= 0) return;
+  const auto d = q - p;
+  const ExactFT ca = d.x() * (ea.y() - p.y()) - d.y() * (ea.x() - p.x());
+  const ExactFT cb = d.x() * (eb.y() - p.y()) - d.y() * (eb.x() - p.x());
+  out.push_back({ca / (ca - cb), {p, q}});
+}
+
+}  // namespace
+
+CheckResult check_paths(const Environment& env, const Paths& paths, const CheckOptions& options) {
+  validate_paths(env, paths);
+  const geometry::VisibilityIndex vis(env);
+  const std::size_t k = paths.size(), steps = paths[0].size();
+  // Lines through a reflex vertex and a vertex it sees: where one pursuer's V changes.
+  std::vector<std::uint32_t> reflex;
+  for (std::uint32_t v = 0; v < env.num_vertices(); ++v)
+    if (env.is_reflex(v)) reflex.push_back(v);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> lines;
+  for (std::uint32_t u : reflex)
+    for (std::uint32_t w = 0; w < env.num_vertices(); ++w)
+      if (w != u && (!env.is_reflex(w) || w > u) && geometry::visible(env, env.vertex(u), env.vertex(w))) lines.push_back({u, w});
+
+  CheckResult res;
+  auto at_time = [&](std::size_t j, double f) {
+    std::vector<Point> at;
+    for (auto& p : paths) {
+      const Point &a = p[j], &b = p[std::min(j + 1, steps - 1)];
+      at.emplace_back(a.x() + f * (b.x() - a.x()), a.y() + f * (b.y() - a.y()));
+    }
+    return at;
+  };
+  auto wanted = [&](std::size_t waypoint) {
+    return std::find(options.frames.begin(), options.frames.end(), waypoint) != options.frames.end();
+  };
+  auto record = [&](const Moment& m, const Contamination& c) {
+    CheckFrame f;
+    f.waypoint = m.waypoint;
+    f.pursuers = m.at;
+    for (auto& loop : m.loops) {
+      f.visible.emplace_back();
+      for (auto& p : loop) f.visible.back().push_back(geometry::to_double(p));
+    }
+    f.contaminated = c.polygons;
+    f.regions = c.regions.size();
+    res.frames.push_back(std::move(f));
+  };
+  Moment prev = take(env, vis, 0, 0, at_time(0, 0));
+  Contamination cont = step(env, nullptr, nullptr, prev, wanted(0));
+  if (wanted(0)) record(prev, cont);
+  res.moments = 1;
+  auto advance = [&](Moment next) {
+    const bool frame = next.fraction == 0 && wanted(next.waypoint);
+    Contamination c = step(env, &prev, &cont, next, frame);
+    if (frame) record(next, c);
+    ++res.moments;
+    if (c.recontaminated && !res.first_recontamination)
+      res.first_recontamination = CheckResult::Moment{next.waypoint, next.fraction, c.recontaminated_at};
+    if (c.regions.empty() && !cont.regions.empty() && !res.cleared_at)
+      res.cleared_at = CheckResult::Moment{next.waypoint, next.fraction, next.at[0]};
+    prev = std::move(next);
+    cont = std::move(c);
+  };
+  if (cont.regions.empty()) res.cleared_at = CheckResult::Moment{0, 0, paths[0][0]};
+  for (std::size_t j = 0; j + 1 < steps; ++j) {
+    std::vector<std::size_t> moving;
+    for (std::size_t l = 0; l < k; ++l)
+      if (paths[l][j] != paths[l][j + 1]) moving.push_back(l);
+    if (moving.empty()) {
+      if (wanted(j + 1)) advance(take(env, vis, j + 1, 0, at_time(j + 1, 0)));
+      continue;
+    }
+    std::vector<std::pair<ExactFT, std::pair<ExactPoint, ExactPoint>>> ev;
+    for (std::size_t l : moving) {
+      const Point &a = paths[l][j], &b = paths[l][j + 1];
+      for (auto [u, w] : lines) crossings(a, b, env.exact_vertex(u), env.exact_vertex(w), ev);
+      if (moving.size() == 1)
+        for (std::size_t s = 0; s < k; ++s)
+          if (s != l)
+            for (auto& z : prev.loops[s])
+              for (std::uint32_t u : reflex) crossings(a, b, env.exact_vertex(u), z, ev);
+    }
+    std::sort(ev.begin(), ev.end(), [](auto& x, auto& y) { return x.first < y.first; });
+    ev.erase(std::unique(ev.begin(), ev.end(), [](auto& x, auto& y) { return x.first == y.first; }), ev.end());
+    // Sample fractions: one between every two events (within an interval the shadows only
+    // deform); uniform refinement when several pursuers move together.
+    std::vector<double> fr;
+    std::vector<double> cuts{0};
+    for (auto& e : ev) cuts.push_back(CGAL::to_double(e.first));
+    cuts.push_back(1);
+    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) fr.push_back((cuts[i] + cuts[i + 1]) / 2);
+    if (moving.size() > 1)
+      for (std::size_t s = 1; s < options.substeps; ++s) fr.push_back(double(s) / options.substeps);
+    fr.push_back(1);
+    std::sort(fr.begin(), fr.end());
+    fr.erase(std::unique(fr.begin(), fr.end()), fr.end());
+    for (double f : fr) {
+      if (f <= 0) continue;
+      auto at = f >= 1 ? at_time(j + 1, 0) : at_time(j, f);
+      advance(take(env, vis, f >= 1 ? j + 1 : j, f >= 1 ? 0 : f, std::move(at)));
+    }
+  }
+  res.cleared = cont.regions.empty();
+  res.contaminated_at_end = cont.regions;
+  res.contaminated_exact = cont.exact_regions;
+  res.contaminated_area = cont.area;
+  return res;
+}
+
+}  // namespace preimage::pursuit

@@ -1,0 +1,38 @@
+# End-to-end tests of the command line: pursuit. Included from tests/CMakeLists.txt,
+# which defines cli_test(), EXPECT, FIX, EXAMPLES, FLOORPLANS and OUT.
+set(PE ${EXAMPLES}/pursuit)
+cli_test(pursuit_cells 0 "12 reflex vertices, 40 critical segments .* 84 cells \\(0 thinner than double precision\\), 132 boundaries" ${OUT}/pursuit-cells.svg
+         pursuit cells ${EXAMPLES}/gallery.json --svg ${OUT}/pursuit-cells.svg)
+cli_test(pursuit_cells_json 0 "\"shadow_components\"" - pursuit cells ${PE}/pillar.json --json)
+cli_test(pursuit_plan_hole 0 "no plan with one pursuer exists \\(complete search, [0-9]+ information states explored\\)" -
+         pursuit plan ${PE}/pillar.json)
+cli_test(pursuit_plan_two 0 "plan with 2 pursuers: [0-9]+ crossings" ${OUT}/pursuit-pillar.svg
+         pursuit plan ${PE}/pillar.json --pursuers 3 --svg ${OUT}/pursuit-pillar.svg)
+cli_test(pursuit_plan_gallery_json 0 "\"cleared\": true" - pursuit plan ${EXAMPLES}/gallery.json --pursuers 2 --json)
+cli_test(pursuit_plan_one 0 "independent check: cleared" - pursuit plan ${PE}/corridor_rooms.json)
+cli_test(pursuit_plan_three_arms_one 0 "no plan with one pursuer exists" - pursuit plan ${PE}/three_arms.json)
+cli_test(pursuit_plan_three_arms 0 "plan with 2 pursuers" - pursuit plan ${PE}/three_arms.json --pursuers 2 --no-check)
+cli_test(pursuit_plan_split 0 "split strategy: 2 pursuers .*exact minimum 2 " -
+         pursuit plan ${PE}/three_arms.json --split)
+cli_test(pursuit_plan_split_holes fail "the split strategy needs simply connected free space" - pursuit plan ${PE}/pillar.json --split)
+cli_test(pursuit_plan_budget 0 "1 pursuer: search stopped after [0-9]+ information states \\(--max-states 5\\)" -
+         pursuit plan ${PE}/three_arms.json --max-states 5)
+cli_test(pursuit_plan_start_outside fail "--start \\(3, 3\\) is not in free space" - pursuit plan ${PE}/pillar.json --start 3,3)
+cli_test(pursuit_plan_zero_pursuers fail "--pursuers" - pursuit plan ${PE}/pillar.json --pursuers 0)
+cli_test(pursuit_plan_negative_pursuers fail "--pursuers" - pursuit plan ${PE}/pillar.json --pursuers -1)
+cli_test(pursuit_check_cleared 0 "2 pursuers, 3 waypoints: cleared" ${OUT}/pursuit-check.svg
+         pursuit check ${PE}/pillar.json --path ${FIX}/pursuit/pillar_two_pursuers.json --svg ${OUT}/pursuit-check.svg)
+cli_test(pursuit_check_loop 0 "NOT cleared: 1 region contaminated at the end" -
+         pursuit check ${PE}/pillar.json --path ${FIX}/pursuit/pillar_one_pursuer_loop.json)
+cli_test(pursuit_check_json 0 "\"cleared\": false" - pursuit check ${PE}/pillar.json --path ${FIX}/pursuit/pillar_one_pursuer_loop.json --json)
+cli_test(pursuit_check_bad_point fail "bad_point.json: \\$\\.paths\\[0\\]\\[1\\]: expected \\[x, y\\]" -
+         pursuit check ${PE}/pillar.json --path ${FIX}/pursuit/bad_point.json)
+cli_test(pursuit_check_through_pillar fail "path: pursuer 1 segment 0 from \\(1, 1\\) to \\(5, 5\\) leaves free space" -
+         pursuit check ${PE}/pillar.json --path ${FIX}/pursuit/through_pillar.json)
+
+if(EXISTS ${FLOORPLANS}/house_expo_room_0000.json)
+  cli_test(pursuit_houseexpo_0000 0 "independent check: cleared" - pursuit plan ${OUT}/house0000.json)
+  cli_test(pursuit_houseexpo_0000_split 0 "split strategy: .*exact minimum 1" - pursuit plan ${OUT}/house0000.json --split --no-check)
+  set_tests_properties(cli.pursuit_houseexpo_0000 cli.pursuit_houseexpo_0000_split PROPERTIES DEPENDS cli.import_houseexpo_0000)
+endif()
+cli_test(pursuit_plan_any 0 "independent check: cleared" - pursuit plan ${PE}/corridor_rooms.json --any)
