@@ -68,7 +68,7 @@ void demo_geometry(DemoContext& ctx) {
   double best = -1;
   for (int i = 0; i < 20;) {
     Point c(X(rng), Y(rng));
-    if (!rindex.locate(c).in_free_space()) continue;
+    if (!rindex.in_free_space(c)) continue;
     ++i;
     const double a = rindex.compute(c).area();
     if (a > best) best = a, q = c;
@@ -78,7 +78,7 @@ void demo_geometry(DemoContext& ctx) {
   int agree = 0, total = 0;
   while (total < 300) {
     Point t(X(rng), Y(rng));
-    if (!rindex.locate(t).in_free_space()) continue;
+    if (!rindex.in_free_space(t)) continue;
     ++total;
     const bool in_v = CGAL::bounded_side_2(poly.begin(), poly.end(), to_exact(t), ExactKernel()) != CGAL::ON_UNBOUNDED_SIDE;
     agree += in_v == visible(rnd, q, t);

@@ -227,7 +227,7 @@ std::optional<Point> onto_edge(const Environment& env, const geometry::Visibilit
   const auto ix = CGAL::to_interval(on.x()), iy = CGAL::to_interval(on.y());
   for (double x : {ix.first, ix.second})
     for (double y : {iy.first, iy.second})
-      if (index.locate(Point(x, y)).in_free_space()) return Point(x, y);
+      if (index.in_free_space(Point(x, y))) return Point(x, y);
   return std::nullopt;
 }
 
@@ -243,7 +243,7 @@ Point to_input_point(const BoustrophedonDecomposition& b, const Environment& env
   std::optional<Point> out;
   if (q.edge != CellChains::kNoVertex) {
     out = onto_edge(env, index, b.input_vertex_id(q.edge), p);
-  } else if (index.locate(p).in_free_space()) {
+  } else if (index.in_free_space(p)) {
     out = p;
   } else {
     std::size_t nearest = 0;

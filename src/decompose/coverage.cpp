@@ -312,7 +312,7 @@ CoverageMetrics measure_coverage(const Environment& env, const CoverageReport& r
   std::vector<std::uint32_t> visits(nx * ny, 0), last(nx * ny, UINT32_MAX);
   std::vector<char> covered(nx * ny, 0);
   for (std::size_t j = 0; j < ny; ++j)
-    for (std::size_t i = 0; i < nx; ++i) target[j * nx + i] = index.locate(centre(i, j)).in_free_space();
+    for (std::size_t i = 0; i < nx; ++i) target[j * nx + i] = index.in_free_space(centre(i, j));
   // Segment by segment: a sample within w/2 of segment s is covered; it gets a new visit
   // when it comes within w/2 - cell/2 of s without having been that close to s - 1 (the
   // margin keeps samples exactly halfway between two laps, covered by both to the last

@@ -15,127 +15,199 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 double euclid(const Point& a, const Point& b) { return std::hypot(a.x() - b.x(), a.y() - b.y()); }
 
+// Settled transit costs by (from, to) node pair: open addressing with linear probing, since
+// the search looks up many pairs that were never settled and misses must be cheap.
+class PairCosts {
+ public:
+  const double* find(std::uint64_t key) const {
+    if (keys_.empty()) return nullptr;
+    for (std::size_t i = slot(key);; i = (i + 1) & mask_) {
+      if (keys_[i] == key) return &values_[i];
+      if (keys_[i] == kEmpty) return nullptr;
+    }
+  }
+  // Inserts key (value 0) if absent; returns the value and whether it was inserted.
+  std::pair<double*, bool> insert(std::uint64_t key) {
+    if ((size_ + 1) * 2 > keys_.size()) grow();
+    for (std::size_t i = slot(key);; i = (i + 1) & mask_) {
+      if (keys_[i] == key) return {&values_[i], false};
+      if (keys_[i] == kEmpty) {
+        keys_[i] = key, values_[i] = 0, ++size_;
+        return {&values_[i], true};
+      }
+    }
+  }
+
+ private:
+  static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
+  std::size_t slot(std::uint64_t key) const { return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 20) & mask_; }
+  void grow() {
+    std::vector<std::uint64_t> keys(std::max<std::size_t>(64, keys_.size() * 2), kEmpty);
+    std::vector<double> values(keys.size());
+    keys.swap(keys_), values.swap(values_), mask_ = keys_.size() - 1, size_ = 0;
+    for (std::size_t i = 0; i < keys.size(); ++i)
+      if (keys[i] != kEmpty) *insert(keys[i]).first = values[i];
+  }
+  std::vector<std::uint64_t> keys_;
+  std::vector<double> values_;
+  std::size_t mask_ = 0, size_ = 0;
+};
+
 // Transit costs between sweeps, computed once each. While searching, a cost not computed
 // yet is estimated by the straight-line distance (a lower bound); the search is repeated
 // with the true costs of every pair its result uses until the result uses only true costs.
+// Settled costs are kept sparsely: a search settles O(cells) of the (4 cells)^2 pairs.
 class Costs {
  public:
+  static constexpr std::uint32_t kStart = UINT32_MAX - 1;  // the start point (as a tail)
+  static constexpr std::uint32_t kNone = UINT32_MAX;       // nothing (the walk's ends)
+
   Costs(const std::vector<std::vector<Sweep>>& cells, const std::optional<Point>& start,
         const std::function<double(const Point&, const Point&)>& transit)
-      : cells_(cells), start_(start), transit_(transit) {
-    for (const auto& c : cells) first_.push_back(static_cast<std::uint32_t>(nodes_.size())), nodes_.insert(nodes_.end(), c.begin(), c.end());
-    const std::size_t n = nodes_.size();
-    cost_.resize(n * n), settled_.assign(n * n, 0);
-    for (std::size_t a = 0; a < n; ++a)
-      for (std::size_t b = 0; b < n; ++b) cost_[a * n + b] = euclid(nodes_[a].exit, nodes_[b].entry);
-    start_cost_.resize(n), start_settled_.assign(n, 0);
-    for (std::size_t b = 0; b < n; ++b) start_cost_[b] = start ? euclid(*start, nodes_[b].entry) : 0;
+      : start_(start), transit_(transit) {
+    for (const auto& c : cells) {
+      first_.push_back(static_cast<std::uint32_t>(nodes_.size()));
+      nodes_.insert(nodes_.end(), c.begin(), c.end());
+      count_.push_back(static_cast<std::uint8_t>(c.size()));
+    }
+    for (const auto& s : nodes_) xy_.push_back({s.entry.x(), s.entry.y(), s.exit.x(), s.exit.y()});
+    start_cost_.resize(nodes_.size()), start_settled_.assign(nodes_.size(), 0);
+    for (std::size_t b = 0; b < nodes_.size(); ++b) start_cost_[b] = start ? euclid(*start, nodes_[b].entry) : 0;
   }
   std::uint32_t node(std::uint32_t cell, std::uint8_t sweep) const { return first_[cell] + sweep; }
   const Sweep& sweep(std::uint32_t node) const { return nodes_[node]; }
-  // Estimated (straight line) or true cost of the transit from a's exit to b's entry.
-  double estimate(std::uint32_t a, std::uint32_t b) const { return cost_[a * nodes_.size() + b]; }
-  double estimate_start(std::uint32_t b) const { return start_cost_[b]; }
-  // Makes the cost exact; returns true if it was only an estimate before.
+  double own(std::uint32_t node) const { return nodes_[node].length; }
+  // Estimated (straight line) or true cost from a's exit to b's entry; a may be kStart or
+  // kNone, b may be kNone (both cost nothing but the start's transit).
+  double estimate(std::uint32_t a, std::uint32_t b) const {
+    if (b == kNone || a == kNone) return 0;
+    if (a == kStart) return start_cost_[b];
+    if (const double* c = settled_.find(key(a, b))) return *c;
+    const auto& p = xy_[a];
+    const auto& q = xy_[b];
+    return std::sqrt((p[2] - q[0]) * (p[2] - q[0]) + (p[3] - q[1]) * (p[3] - q[1]));
+  }
+  // Makes the cost exact; returns true if it was only an estimate before and changed.
   bool settle(std::uint32_t a, std::uint32_t b) {
-    const std::size_t k = a * nodes_.size() + b;
-    if (settled_[k]) return false;
-    settled_[k] = 1;
-    const double c = transit_(nodes_[a].exit, nodes_[b].entry);
-    const bool changed = c != cost_[k];
-    cost_[k] = c;
-    return changed;
+    if (a == kNone || b == kNone) return false;
+    if (a == kStart) {
+      if (!start_ || start_settled_[b]) return false;
+      start_settled_[b] = 1;
+      const double c = transit_(*start_, nodes_[b].entry);
+      const bool changed = longer(c, start_cost_[b]);
+      start_cost_[b] = c;
+      return changed;
+    }
+    const auto [value, fresh] = settled_.insert(key(a, b));
+    if (!fresh) return false;
+    *value = transit_(nodes_[a].exit, nodes_[b].entry);
+    return longer(*value, estimate_straight(a, b));
   }
-  bool settle_start(std::uint32_t b) {
-    if (!start_ || start_settled_[b]) return false;
-    start_settled_[b] = 1;
-    const double c = transit_(*start_, nodes_[b].entry);
-    const bool changed = c != start_cost_[b];
-    start_cost_[b] = c;
-    return changed;
-  }
-  std::size_t sweeps_of(std::uint32_t cell) const { return cells_[cell].size(); }
-  std::size_t num_cells() const { return cells_.size(); }
+  std::size_t sweeps_of(std::uint32_t cell) const { return count_[cell]; }
+  std::size_t num_cells() const { return count_.size(); }
+  bool has_start() const { return start_.has_value(); }
 
  private:
-  const std::vector<std::vector<Sweep>>& cells_;
+  // A transit longer than its straight-line estimate by more than rounding (the two are
+  // computed by different formulas): only then can the search's answer change.
+  static bool longer(double transit, double estimate) { return transit > estimate * (1 + 1e-12); }
+  static std::uint64_t key(std::uint32_t a, std::uint32_t b) { return std::uint64_t{a} << 32 | b; }
+  double estimate_straight(std::uint32_t a, std::uint32_t b) const { return euclid(nodes_[a].exit, nodes_[b].entry); }
   std::optional<Point> start_;
   const std::function<double(const Point&, const Point&)>& transit_;
   std::vector<Sweep> nodes_;
+  std::vector<std::array<double, 4>> xy_;  // entry x, y, exit x, y
   std::vector<std::uint32_t> first_;
-  std::vector<double> cost_, start_cost_;
-  std::vector<char> settled_, start_settled_;
+  std::vector<std::uint8_t> count_;
+  PairCosts settled_;
+  std::vector<double> start_cost_;
+  std::vector<char> start_settled_;
 };
 
 constexpr std::size_t kMaxSweeps = 4;
 
-// Best sweeps for a fixed cell order: a shortest path through the layers of sweeps.
-double best_sweeps(const Costs& C, const std::vector<std::uint32_t>& order, std::vector<std::uint8_t>* choice) {
-  const std::size_t n = order.size();
+// Best sweeps for the cells `cells` (in this order) between the fixed sweeps `a` (a node,
+// kStart or kNone) and `b` (a node or kNone): a shortest path through the layers of sweeps
+// (Costs::estimate). Writes the chosen nodes to `out` when given.
+template <class CellAt>
+double best_between(const Costs& C, std::uint32_t a, std::uint32_t b, std::size_t n, CellAt cell_at,
+                    std::vector<std::uint32_t>* out) {
   std::array<double, kMaxSweeps> f{}, g{};
-  std::vector<std::array<std::uint8_t, kMaxSweeps>> from(choice ? n : 0);
+  std::vector<std::array<std::uint8_t, kMaxSweeps>> from(out ? n : 0);
   std::size_t S_prev = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t S = C.sweeps_of(order[i]);
+    const std::uint32_t cell = cell_at(i);
+    const std::size_t S = C.sweeps_of(cell);
     for (std::uint8_t w = 0; w < S; ++w) {
-      const std::uint32_t node = C.node(order[i], w);
-      const double own = C.sweep(node).length;
+      const std::uint32_t node = C.node(cell, w);
+      const double own = C.own(node);
       if (i == 0) {
-        g[w] = C.estimate_start(node) + own;
+        g[w] = C.estimate(a, node) + own;
         continue;
       }
       g[w] = kInf;
       for (std::uint8_t v = 0; v < S_prev; ++v) {
-        const double c = f[v] + C.estimate(C.node(order[i - 1], v), node) + own;
+        const double c = f[v] + C.estimate(C.node(cell_at(i - 1), v), node) + own;
         if (c < g[w]) {
           g[w] = c;
-          if (choice) from[i][w] = v;
+          if (out) from[i][w] = v;
         }
       }
     }
     f = g, S_prev = S;
   }
   std::uint8_t w = 0;
-  for (std::uint8_t v = 1; v < S_prev; ++v)
+  for (std::uint8_t v = 0; v < S_prev; ++v) {
+    f[v] += C.estimate(C.node(cell_at(n - 1), v), b);
     if (f[v] < f[w]) w = v;
+  }
   const double best = f[w];
-  if (choice) {
-    choice->assign(n, 0);
-    for (std::size_t i = n; i-- > 0;) (*choice)[i] = w, w = from[i][w];
+  if (out) {
+    out->resize(n);
+    for (std::size_t i = n; i-- > 0;) (*out)[i] = C.node(cell_at(i), w), w = from[i][w];
   }
   return best;
 }
 
-// Settles every cost the order's best-sweep computation reads; true if any changed.
-bool settle_order(Costs& C, const std::vector<std::uint32_t>& order) {
-  bool changed = false;
-  for (std::size_t i = 0; i < order.size(); ++i)
-    for (std::uint8_t w = 0; w < C.sweeps_of(order[i]); ++w) {
-      const std::uint32_t node = C.node(order[i], w);
-      if (i == 0) changed |= C.settle_start(node);
-      else
-        for (std::uint8_t v = 0; v < C.sweeps_of(order[i - 1]); ++v) changed |= C.settle(C.node(order[i - 1], v), node);
-    }
+// The walk: cells in visiting order and the sweep (node) used in each.
+struct Tour {
+  std::vector<std::uint32_t> cell, node;
+  double cost(const Costs& C) const {
+    double c = 0;
+    for (std::size_t i = 0; i < node.size(); ++i) c += C.estimate(i ? node[i - 1] : Costs::kStart, node[i]) + C.own(node[i]);
+    return c;
+  }
+  // Best sweeps for this cell order.
+  void choose_sweeps(const Costs& C) {
+    best_between(C, Costs::kStart, Costs::kNone, cell.size(), [&](std::size_t i) { return cell[i]; }, &node);
+  }
+};
+
+// Settles every cost the tour uses; returns the positions whose incoming cost changed.
+std::vector<std::size_t> settle_tour(Costs& C, const Tour& t) {
+  std::vector<std::size_t> changed;
+  for (std::size_t i = 0; i < t.node.size(); ++i)
+    if (C.settle(i ? t.node[i - 1] : Costs::kStart, t.node[i])) changed.push_back(i);
   return changed;
 }
 
 // Exact: dynamic programming over (set of cells covered, last sweep), true costs only.
 SweepOrder exact(Costs& C) {
   const std::size_t N = C.num_cells();
-  std::vector<std::uint32_t> nodes;
+  std::vector<std::uint32_t> nodes, cell_of;
   for (std::uint32_t c = 0; c < N; ++c)
-    for (std::uint8_t w = 0; w < C.sweeps_of(c); ++w) nodes.push_back(C.node(c, w));
-  std::vector<std::uint32_t> cell_of;
-  for (std::uint32_t c = 0; c < N; ++c) cell_of.insert(cell_of.end(), C.sweeps_of(c), c);
-  for (auto a : nodes) {
-    C.settle_start(a);
-    for (auto b : nodes)
-      if (cell_of[a] != cell_of[b]) C.settle(a, b);
-  }
+    for (std::uint8_t w = 0; w < C.sweeps_of(c); ++w) nodes.push_back(C.node(c, w)), cell_of.push_back(c);
   const std::size_t M = nodes.size(), full = (std::size_t{1} << N) - 1;
+  std::vector<double> T(M * M, kInf), from_start(M);
+  for (std::uint32_t a = 0; a < M; ++a) {
+    C.settle(Costs::kStart, nodes[a]);
+    from_start[a] = C.estimate(Costs::kStart, nodes[a]) + C.own(nodes[a]);
+    for (std::uint32_t b = 0; b < M; ++b)
+      if (cell_of[a] != cell_of[b]) C.settle(nodes[a], nodes[b]), T[a * M + b] = C.estimate(nodes[a], nodes[b]) + C.own(nodes[b]);
+  }
   std::vector<double> dp((full + 1) * M, kInf);
   std::vector<std::uint32_t> prev((full + 1) * M, UINT32_MAX);
-  for (std::uint32_t a = 0; a < M; ++a) dp[(std::size_t{1} << cell_of[a]) * M + a] = C.estimate_start(nodes[a]) + C.sweep(nodes[a]).length;
+  for (std::uint32_t a = 0; a < M; ++a) dp[(std::size_t{1} << cell_of[a]) * M + a] = from_start[a];
   for (std::size_t mask = 1; mask <= full; ++mask)
     for (std::uint32_t a = 0; a < M; ++a) {
       const double here = dp[mask * M + a];
@@ -143,7 +215,7 @@ SweepOrder exact(Costs& C) {
       for (std::uint32_t b = 0; b < M; ++b) {
         if (mask >> cell_of[b] & 1) continue;
         const std::size_t to = (mask | std::size_t{1} << cell_of[b]) * M + b;
-        const double c = here + C.estimate(nodes[a], nodes[b]) + C.sweep(nodes[b]).length;
+        const double c = here + T[a * M + b];
         if (c < dp[to]) dp[to] = c, prev[to] = static_cast<std::uint32_t>(mask * M + a);
       }
     }
@@ -164,152 +236,277 @@ SweepOrder exact(Costs& C) {
   return out;
 }
 
-// Local search under the current (partly estimated) costs. Or-opt moves a run of 1-3
-// cells (possibly reversed) next to another cell, 2-opt reverses a stretch; on large
-// instances only next to the cell's nearest cells (candidate lists), as usual for TSPs.
-void improve(const Costs& C, const std::vector<std::vector<std::uint32_t>>& near, std::vector<std::uint32_t>& order) {
-  const std::size_t n = order.size();
-  double best = best_sweeps(C, order, nullptr);
-  std::vector<std::size_t> pos(n);
-  auto try_order = [&](std::vector<std::uint32_t>& cand) {
-    const double c = best_sweeps(C, cand, nullptr);
-    if (c < best - 1e-12 * (1 + best)) {
-      best = c, order.swap(cand);
-      return true;
+// Local search under the current (partly estimated) costs, each move evaluated in time
+// independent of the number of cells: the sweeps outside the cells a move touches stay as
+// they are, the moved cells get their best sweeps between their new neighbours
+// (best_between), and when no move is left all sweeps are re-chosen for the order (a
+// layered shortest path). Or-opt moves a run of 1-3 cells (either way round) next to one of
+// the nearest cells of its ends; 2-opt reverses a stretch of up to kMaxReversal cells so
+// that a cell comes next to one of its nearest cells — candidate lists, as usual for large
+// TSPs. Only cells near a change are looked at again ("don't look bits").
+constexpr std::size_t kMaxReversal = 40;
+constexpr std::size_t kCandidates = 5;
+constexpr int kMaxSweepRounds = 20;
+constexpr int kMaxSettleRounds = 4;
+
+class LocalSearch {
+ public:
+  LocalSearch(const Costs& C, const std::vector<std::vector<std::uint32_t>>& near, Tour& t)
+      : C_(C), near_(near), t_(t), n_(t.cell.size()), pos_(n_), queued_(n_, 0) {
+    reindex();
+  }
+  void activate(std::uint32_t cell) {
+    if (!queued_[cell]) queued_[cell] = 1, queue_.push_back(cell);
+  }
+  // Activates the cells at positions i - 1 .. i + 1.
+  void activate_around(std::size_t i) {
+    for (std::size_t k = i ? i - 1 : 0; k <= i + 1 && k < n_; ++k) activate(t_.cell[k]);
+  }
+  void run() {
+    for (int round = 0; round < kMaxSweepRounds; ++round) {
+      while (!queue_.empty()) {
+        const std::uint32_t c = queue_.back();
+        queue_.pop_back(), queued_[c] = 0;
+        const std::size_t i = pos_[c];
+        for (std::size_t len = 1; len <= 3 && len < n_; ++len)
+          if (i + len <= n_ && or_opt(i, len)) break;
+        if (pos_[c] == i) two_opt(i);
+      }
+      const std::vector<std::uint32_t> before = t_.node;
+      t_.choose_sweeps(C_);
+      for (std::size_t i = 0; i < n_; ++i)
+        if (t_.node[i] != before[i]) activate_around(i);
+      if (queue_.empty()) break;
+    }
+  }
+
+ private:
+  static constexpr double kGain = 1e-9;
+  std::uint32_t tail(std::size_t i) const { return i == 0 ? Costs::kStart : t_.node[i - 1]; }  // before position i
+  std::uint32_t head(std::size_t i) const { return i >= n_ ? Costs::kNone : t_.node[i]; }     // at position i
+  // Cost of positions [i, j) as they are, with their links to i - 1 and j.
+  double span(std::size_t i, std::size_t j) const {
+    double c = C_.estimate(tail(i), t_.node[i]) + C_.estimate(t_.node[j - 1], head(j));
+    for (std::size_t k = i; k < j; ++k) c += C_.own(t_.node[k]) + (k > i ? C_.estimate(t_.node[k - 1], t_.node[k]) : 0);
+    return c;
+  }
+  void reindex() {
+    for (std::size_t k = 0; k < n_; ++k) pos_[t_.cell[k]] = k;
+  }
+  // Moves positions [i, i + len) to the best place next to a nearest cell of its ends.
+  bool or_opt(std::size_t i, std::size_t len) {
+    const double removed = span(i, i + len) - C_.estimate(tail(i), head(i + len));
+    double best_gain = kGain;
+    std::size_t best_at = 0;
+    bool best_rev = false;
+    targets_.clear();
+    for (const std::uint32_t end : {t_.cell[i], t_.cell[i + len - 1]})
+      for (const std::uint32_t m : near_[end])
+        for (const std::size_t at : {pos_[m], pos_[m] + 1})  // insert before position `at`
+          if ((at < i || at > i + len) && std::find(targets_.begin(), targets_.end(), at) == targets_.end()) targets_.push_back(at);
+    for (const std::size_t at : targets_) {
+          const std::uint32_t a = tail(at), b = head(at);
+          const double link = C_.estimate(a, b);
+          for (const bool rev : {false, true}) {
+            const double added =
+                best_between(C_, a, b, len, [&](std::size_t k) { return t_.cell[rev ? i + len - 1 - k : i + k]; }, nullptr) - link;
+            if (removed - added > best_gain) best_gain = removed - added, best_at = at, best_rev = rev;
+          }
+    }
+    if (best_gain <= kGain) return false;
+    best_between(C_, tail(best_at), head(best_at), len, [&](std::size_t k) { return t_.cell[best_rev ? i + len - 1 - k : i + k]; },
+                 &seg_);
+    // Rotate the stretch between the run and its new place; only that stretch moves.
+    const std::uint32_t left = i ? t_.cell[i - 1] : UINT32_MAX, right = i + len < n_ ? t_.cell[i + len] : UINT32_MAX;
+    if (best_rev) std::reverse(t_.cell.begin() + static_cast<long>(i), t_.cell.begin() + static_cast<long>(i + len));
+    std::copy(seg_.begin(), seg_.end(), t_.node.begin() + static_cast<long>(i));
+    const auto b = static_cast<long>(std::min(i, best_at)), e = static_cast<long>(std::max(i + len, best_at));
+    const long mid = best_at < i ? static_cast<long>(i) : static_cast<long>(i + len);
+    std::rotate(t_.cell.begin() + b, t_.cell.begin() + mid, t_.cell.begin() + e);
+    std::rotate(t_.node.begin() + b, t_.node.begin() + mid, t_.node.begin() + e);
+    for (auto k = static_cast<std::size_t>(b); k < static_cast<std::size_t>(e); ++k) pos_[t_.cell[k]] = k;
+    for (const std::uint32_t c : {left, right})
+      if (c != UINT32_MAX) activate_around(pos_[c]);
+    const std::size_t at = best_at < i ? best_at : best_at - len;
+    for (std::size_t k = at; k < at + len; ++k) activate_around(k);
+    return true;
+  }
+  // Reverses a stretch so that the cell at i gets one of its nearest cells as a neighbour.
+  bool two_opt(std::size_t i) {
+    for (const std::uint32_t m : near_[t_.cell[i]]) {
+      const std::size_t j = pos_[m];
+      if (j > i + 1 ? reverse(i + 1, j) : j + 1 < i && reverse(j, i - 1)) return true;
     }
     return false;
+  }
+  bool reverse(std::size_t i, std::size_t j) {
+    if (j - i + 1 > kMaxReversal) return false;
+    const double now = span(i, j + 1);
+    const double then = best_between(C_, tail(i), head(j + 1), j - i + 1, [&](std::size_t k) { return t_.cell[j - k]; }, &seg_);
+    if (now - then <= kGain) return false;
+    std::reverse(t_.cell.begin() + static_cast<long>(i), t_.cell.begin() + static_cast<long>(j + 1));
+    std::copy(seg_.begin(), seg_.end(), t_.node.begin() + static_cast<long>(i));
+    for (std::size_t k = i; k <= j; ++k) pos_[t_.cell[k]] = k;
+    activate_around(i), activate_around(j);
+    return true;
+  }
+
+  const Costs& C_;
+  const std::vector<std::vector<std::uint32_t>>& near_;
+  Tour& t_;
+  std::size_t n_;
+  std::vector<std::size_t> pos_;
+  std::vector<char> queued_;
+  std::vector<std::uint32_t> queue_, seg_;
+  std::vector<std::size_t> targets_;
+};
+
+// Nearest-point queries among points that belong to cells, excluding one cell's own: a
+// uniform grid of about one point per bucket, searched in growing rings.
+class PointGrid {
+ public:
+  struct P {
+    double x, y;
+    std::uint32_t cell;
   };
-  for (int pass = 0; pass < 100; ++pass) {
-    bool better = false;
-    for (std::size_t k = 0; k < n; ++k) pos[order[k]] = k;
-    for (std::size_t len = 1; len <= 3 && len < n; ++len)
-      for (std::size_t i = 0; i + len <= n; ++i) {
-        // Insertion points: next to the nearest cells of the run's ends.
-        std::vector<std::size_t> targets;
-        for (std::uint32_t end : {order[i], order[i + len - 1]})
-          for (std::uint32_t m : near[end]) targets.push_back(pos[m]), targets.push_back(pos[m] + 1);
-        for (std::size_t t : targets) {
-          if (t >= i && t <= i + len) continue;
-          for (int rev = 0; rev < 2; ++rev) {
-            std::vector<std::uint32_t> seg(order.begin() + static_cast<long>(i), order.begin() + static_cast<long>(i + len));
-            if (rev) std::reverse(seg.begin(), seg.end());
-            std::vector<std::uint32_t> cand;
-            cand.reserve(n);
-            for (std::size_t k = 0; k <= n; ++k) {
-              if (k == t) cand.insert(cand.end(), seg.begin(), seg.end());
-              if (k < n && (k < i || k >= i + len)) cand.push_back(order[k]);
-            }
-            if (try_order(cand)) {
-              better = true;
-              for (std::size_t k = 0; k < n; ++k) pos[order[k]] = k;
-              break;
+  explicit PointGrid(std::vector<P> pts) : pts_(std::move(pts)) {
+    double x0 = kInf, y0 = kInf, x1 = -kInf, y1 = -kInf;
+    for (const P& p : pts_) x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+    if (pts_.empty()) x0 = y0 = x1 = y1 = 0;
+    const double side = std::max({x1 - x0, y1 - y0, 1e-300});
+    k_ = std::max<std::size_t>(1, static_cast<std::size_t>(std::sqrt(static_cast<double>(pts_.size()))));
+    x0_ = x0, y0_ = y0, h_ = side / static_cast<double>(k_) * (1 + 1e-12);
+    bucket_.assign(k_ * k_, {});
+    for (std::uint32_t i = 0; i < pts_.size(); ++i) bucket_[col(pts_[i].y, y0_) * k_ + col(pts_[i].x, x0_)].push_back(i);
+  }
+  // The (up to) k nearest points of cells other than `cell`, nearest first, as (distance, point).
+  std::vector<std::pair<double, std::uint32_t>> nearest(double x, double y, std::uint32_t cell, std::size_t k) const {
+    std::vector<std::pair<double, std::uint32_t>> heap;  // max-heap of the best k so far
+    const long cx = static_cast<long>(col(x, x0_)), cy = static_cast<long>(col(y, y0_)), K = static_cast<long>(k_);
+    for (long r = 0; r <= K; ++r) {
+      // Points in ring r are at least (r - 1) * h away (also for a query outside the box,
+      // which is clamped to its nearest bucket).
+      if (heap.size() == k && static_cast<double>(r - 1) * h_ > heap.front().first) break;
+      for (long gy = cy - r; gy <= cy + r; ++gy)
+        for (long gx = cx - r; gx <= cx + r; ++gx) {
+          if (std::max(std::abs(gx - cx), std::abs(gy - cy)) != r || gx < 0 || gy < 0 || gx >= K || gy >= K) continue;
+          for (const std::uint32_t i : bucket_[static_cast<std::size_t>(gy) * k_ + static_cast<std::size_t>(gx)]) {
+            if (pts_[i].cell == cell) continue;
+            const double d = std::hypot(pts_[i].x - x, pts_[i].y - y);
+            if (heap.size() < k) {
+              heap.emplace_back(d, i), std::push_heap(heap.begin(), heap.end());
+            } else if (d < heap.front().first) {
+              std::pop_heap(heap.begin(), heap.end()), heap.back() = {d, i}, std::push_heap(heap.begin(), heap.end());
             }
           }
         }
-      }
-    for (std::size_t i = 0; i + 1 < n; ++i)
-      for (std::uint32_t m : near[order[i]]) {
-        const std::size_t j = pos[m];
-        if (j <= i) continue;
-        std::vector<std::uint32_t> cand = order;
-        std::reverse(cand.begin() + static_cast<long>(i), cand.begin() + static_cast<long>(j + 1));
-        if (try_order(cand)) {
-          better = true;
-          for (std::size_t k = 0; k < n; ++k) pos[order[k]] = k;
-        }
-      }
-    if (!better) break;
-  }
-}
-
-// Lower bound: every sweep's own length at its cheapest, plus a minimum spanning tree over
-// the cells (and the start) with straight-line distances between their closest ends — the
-// transits of any order form a spanning path, and no transit is shorter than a straight line.
-double lower_bound(const std::vector<std::vector<Sweep>>& cells, const std::optional<Point>& start) {
-  const std::size_t N = cells.size(), V = N + (start ? 1 : 0);
-  double own = 0;
-  for (const auto& c : cells) {
-    double m = kInf;
-    for (const auto& s : c) m = std::min(m, s.length);
-    own += m;
-  }
-  auto gap = [&](std::size_t a, std::size_t b) {
-    double m = kInf;
-    if (a == N || b == N) {
-      for (const auto& s : cells[a == N ? b : a]) m = std::min(m, euclid(*start, s.entry));
-      return m;
     }
-    for (const auto& s : cells[a])
-      for (const auto& t : cells[b]) m = std::min({m, euclid(s.exit, t.entry), euclid(t.exit, s.entry)});
-    return m;
-  };
-  std::vector<double> key(V, kInf);
-  std::vector<char> in(V, 0);
-  key[0] = 0;
-  double tree = 0;
-  for (std::size_t it = 0; it < V; ++it) {
-    std::size_t u = V;
-    for (std::size_t k = 0; k < V; ++k)
-      if (!in[k] && (u == V || key[k] < key[u])) u = k;
-    in[u] = 1, tree += key[u];
-    for (std::size_t k = 0; k < V; ++k)
-      if (!in[k]) key[k] = std::min(key[k], gap(u, k));
+    std::sort_heap(heap.begin(), heap.end());
+    return heap;
   }
-  return own + tree;
+  const P& point(std::uint32_t i) const { return pts_[i]; }
+
+ private:
+  std::size_t col(double v, double origin) const {
+    const double f = std::floor((v - origin) / h_);
+    return f <= 0 ? 0 : std::min(k_ - 1, static_cast<std::size_t>(f));
+  }
+  std::vector<P> pts_;
+  std::vector<std::vector<std::uint32_t>> bucket_;
+  std::size_t k_ = 1;
+  double x0_ = 0, y0_ = 0, h_ = 1;
+};
+
+// Lower bound: every sweep's own length at its cheapest, plus every transit at its
+// cheapest: the walk enters every cell but the first from another cell's exit, no closer
+// than the nearest such exit (straight line), and the first from the start, if any.
+double lower_bound(const std::vector<std::vector<Sweep>>& cells, const std::optional<Point>& start) {
+  std::vector<PointGrid::P> exits;
+  for (std::uint32_t c = 0; c < cells.size(); ++c)
+    for (const auto& s : cells[c]) exits.push_back({s.exit.x(), s.exit.y(), c});
+  const PointGrid grid(std::move(exits));
+  double own = 0, in_sum = 0, in_max = 0, from_start = start ? kInf : 0;
+  for (std::uint32_t c = 0; c < cells.size(); ++c) {
+    double m = kInf, in = kInf;
+    for (const auto& s : cells[c]) {
+      m = std::min(m, s.length);
+      const auto near = grid.nearest(s.entry.x(), s.entry.y(), c, 1);
+      if (!near.empty()) in = std::min(in, near.front().first);
+      if (start) from_start = std::min(from_start, euclid(*start, s.entry));
+    }
+    own += m;
+    if (in < kInf) in_sum += in, in_max = std::max(in_max, in);
+  }
+  return own + in_sum - in_max + from_start;
 }
 
 }  // namespace
 
 SweepOrder order_sweeps(const std::vector<std::vector<Sweep>>& cells, const std::optional<Point>& start,
-                        const std::function<double(const Point&, const Point&)>& transit) {
+                        const std::function<double(const Point&, const Point&)>& transit, std::size_t exact_up_to) {
   SweepOrder out;
   if (cells.empty()) return out;
   Costs C(cells, start, transit);
-  if (cells.size() <= kExactClusters) return exact(C);
-  // Greedy start: from the start (or the first cell), always the nearest sweep entry.
+  if (cells.size() <= std::min(exact_up_to, kExactClusters)) return exact(C);
   const std::size_t N = cells.size();
-  std::vector<char> used(N, 0);
-  std::vector<std::uint32_t> order;
-  std::optional<Point> at = start;
-  for (std::size_t k = 0; k < N; ++k) {
-    std::uint32_t pick = UINT32_MAX;
-    double best = kInf;
-    for (std::uint32_t c = 0; c < N; ++c) {
-      if (used[c]) continue;
-      for (const auto& s : cells[c]) {
-        const double d = at ? euclid(*at, s.entry) : 0;
-        if (d < best) best = d, pick = c;
+  // Each cell stands for its sweeps' ends' centre when choosing the first order and the
+  // candidate lists (squared distances: O(N^2) cheap steps, no transit).
+  std::vector<std::array<double, 2>> centre(N, {0.0, 0.0});
+  for (std::size_t c = 0; c < N; ++c) {
+    for (const auto& s : cells[c]) centre[c][0] += s.entry.x() + s.exit.x(), centre[c][1] += s.entry.y() + s.exit.y();
+    centre[c][0] /= 2.0 * static_cast<double>(cells[c].size()), centre[c][1] /= 2.0 * static_cast<double>(cells[c].size());
+  }
+  const auto d2 = [&](std::size_t a, std::size_t b) {
+    const double dx = centre[a][0] - centre[b][0], dy = centre[a][1] - centre[b][1];
+    return dx * dx + dy * dy;
+  };
+  // Greedy start: from the cell nearest the start (or cell 0), always the nearest cell left.
+  Tour t;
+  {
+    std::size_t at = 0;
+    if (start) {
+      double best = kInf;
+      for (std::size_t c = 0; c < N; ++c) {
+        const double dx = centre[c][0] - start->x(), dy = centre[c][1] - start->y();
+        if (dx * dx + dy * dy < best) best = dx * dx + dy * dy, at = c;
       }
-      if (!at) break;
     }
-    used[pick] = 1, order.push_back(pick);
-    std::uint8_t w = 0;
-    if (at)
-      for (std::uint8_t v = 1; v < cells[pick].size(); ++v)
-        if (euclid(*at, cells[pick][v].entry) < euclid(*at, cells[pick][w].entry)) w = v;
-    at = cells[pick][w].exit;
+    std::vector<char> used(N, 0);
+    for (std::size_t k = 0; k < N; ++k) {
+      used[at] = 1, t.cell.push_back(static_cast<std::uint32_t>(at));
+      std::size_t next = N;
+      double best = kInf;
+      for (std::size_t c = 0; c < N; ++c)
+        if (!used[c] && d2(at, c) < best) best = d2(at, c), next = c;
+      at = next;
+    }
   }
-  // Candidate lists: the 8 nearest cells (straight line between their closest ends).
+  // Candidate lists: the kCandidates nearest cells.
   std::vector<std::vector<std::uint32_t>> near(N);
-  for (std::uint32_t a = 0; a < N; ++a) {
-    std::vector<std::pair<double, std::uint32_t>> d;
-    for (std::uint32_t b = 0; b < N; ++b) {
-      if (a == b) continue;
-      double m = kInf;
-      for (const auto& s : cells[a])
-        for (const auto& t : cells[b]) m = std::min({m, euclid(s.exit, t.entry), euclid(t.exit, s.entry)});
-      d.emplace_back(m, b);
-    }
-    const std::size_t keep = std::min<std::size_t>(8, d.size());
-    std::partial_sort(d.begin(), d.begin() + static_cast<long>(keep), d.end());
-    for (std::size_t k = 0; k < keep; ++k) near[a].push_back(d[k].second);
+  {
+    std::vector<PointGrid::P> pts(N);
+    for (std::uint32_t c = 0; c < N; ++c) pts[c] = {centre[c][0], centre[c][1], c};
+    const PointGrid grid(std::move(pts));
+    for (std::uint32_t a = 0; a < N; ++a)
+      for (const auto& [d, i] : grid.nearest(centre[a][0], centre[a][1], a, kCandidates)) near[a].push_back(grid.point(i).cell);
   }
-  // Improve under estimates, make the costs the result uses exact, repeat until it uses
-  // exact costs only (each round settles at least one estimate, and estimates only rise).
-  do improve(C, near, order);
-  while (settle_order(C, order));
-  out.cells = order;
-  out.cost = best_sweeps(C, order, &out.sweeps);
+  // Improve under estimates, make the costs the result uses exact, and look again where an
+  // estimate was wrong, until the result uses exact costs only (each round settles at least
+  // one estimate, and estimates only rise) or kMaxSettleRounds rounds; the cost reported is
+  // always the true cost of the walk returned.
+  t.choose_sweeps(C);
+  LocalSearch search(C, near, t);
+  for (std::uint32_t c = 0; c < N; ++c) search.activate(t.cell[N - 1 - c]);
+  for (int round = 0; round < kMaxSettleRounds; ++round) {
+    search.run();
+    const auto changed = settle_tour(C, t);
+    if (changed.empty()) break;
+    for (const std::size_t i : changed) search.activate_around(i);
+  }
+  settle_tour(C, t);
+  out.cells = t.cell;
+  for (std::size_t i = 0; i < N; ++i) out.sweeps.push_back(static_cast<std::uint8_t>(t.node[i] - C.node(t.cell[i], 0)));
+  out.cost = t.cost(C);
   out.lower_bound = lower_bound(cells, start);
   return out;
 }

@@ -126,7 +126,7 @@ const ExactPoint& exact_of(const ExactPoint& q) { return q; }
 }  // namespace
 
 template <class Q>
-VisibilityIndex::Located VisibilityIndex::locate_triangle(const Q& q, const Point& approx) const {
+VisibilityIndex::Located VisibilityIndex::locate_triangle(const Q& q, const Point& approx, bool name_outside) const {
   const auto P = vertices_for(env_, &q);
   const auto& T = tri_.triangles();
   auto test = [&](std::uint32_t t) -> std::optional<Located> {
@@ -153,8 +153,10 @@ VisibilityIndex::Located VisibilityIndex::locate_triangle(const Q& q, const Poin
     for (auto k = cell_off_[c]; k < cell_off_[c + 1]; ++k)
       if (auto r = test(cell_tris_[k])) return *r;
   }
-  // Not in any triangle: classify with the exact O(n) locator (outside or in a hole; for a
-  // constructed query its rounding names where it lies).
+  // Not in any triangle (the grid lists every triangle meeting each of its cells): classify
+  // with the exact O(n) locator (outside or in a hole; for a constructed query its rounding
+  // names where it lies) when asked to.
+  if (!name_outside) return Located{{Location::Kind::Outside, 0}, kNone, -1};
   Location loc = geometry::locate(*env_, approx);
   if (loc.in_free_space()) loc = {Location::Kind::Outside, 0};
   if constexpr (std::is_same_v<Q, Point>) loc = geometry::locate(*env_, q);
@@ -162,6 +164,8 @@ VisibilityIndex::Located VisibilityIndex::locate_triangle(const Q& q, const Poin
 }
 
 Location VisibilityIndex::locate(const Point& q) const { return locate_triangle(q, q).loc; }
+
+bool VisibilityIndex::in_free_space(const Point& q) const { return locate_triangle(q, q, false).tri != kNone; }
 
 // ---------------------------------------------------------------- expansion
 namespace {

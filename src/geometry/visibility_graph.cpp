@@ -75,7 +75,7 @@ std::vector<std::uint32_t> VisibilityGraph::tangent_reflex_from(const Point& q) 
 
 VisibilityGraph::Path VisibilityGraph::shortest_path(const Point& s, const Point& t) const {
   Path out;
-  if (!index_->locate(s).in_free_space() || !index_->locate(t).in_free_space()) return out;
+  if (!index_->in_free_space(s) || !index_->in_free_space(t)) return out;
   if (index_->visible(s, t)) {
     out.found = true, out.points = {s, t}, out.length = dist(s, t);
     return out;

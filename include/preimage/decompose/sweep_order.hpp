@@ -6,10 +6,13 @@
 // travels from one's exit to the next one's entry at the cost the transit oracle gives
 // (shortest collision-free path length). The walk starts at a given point, or at the first
 // sweep's entry. Solved exactly by dynamic programming over subsets for up to
-// kExactClusters cells; beyond, a greedy start improved by Or-opt and 2-opt moves over the
-// cell order, each evaluated with the best sweeps for that order (a layered shortest path),
-// and a lower bound from a minimum spanning tree over straight-line distances, which no
-// transit can beat.
+// kExactClusters cells. Beyond: a nearest-neighbour start improved by Or-opt and bounded
+// 2-opt moves on candidate lists (the nearest cells), each move re-choosing the sweeps of the
+// cells it touches, all sweeps re-chosen for the order (a layered shortest path) when no
+// move is left. Transit costs are settled lazily: the search runs on straight-line
+// estimates (lower bounds) and true costs of the pairs its answer uses, for a few rounds;
+// the cost returned is always the true cost of the walk. The lower bound reported counts
+// every cell's cheapest sweep and every transit at its cheapest straight line.
 #pragma once
 #include <preimage/geometry/kernel.hpp>
 
@@ -37,8 +40,10 @@ struct SweepOrder {
 
 inline constexpr std::size_t kExactClusters = 12;
 
-/// transit(a, b): cost of travelling from a to b (>= the straight-line distance).
+/// transit(a, b): cost of travelling from a to b (>= the straight-line distance). Instances
+/// of up to `exact_up_to` cells are solved exactly (the DP is O(2^N (4N)^2)).
 SweepOrder order_sweeps(const std::vector<std::vector<Sweep>>& cells, const std::optional<Point>& start,
-                        const std::function<double(const Point&, const Point&)>& transit);
+                        const std::function<double(const Point&, const Point&)>& transit,
+                        std::size_t exact_up_to = kExactClusters);
 
 }  // namespace preimage::decompose

@@ -60,8 +60,11 @@ class VisibilityIndex {
   const Environment& environment() const { return *env_; }
   const Triangulation& triangulation() const { return tri_; }
 
-  /// Where q is, in O(1) expected (grid of triangles).
+  /// Where q is, in O(1) expected (grid of triangles) when q is in free space; naming the
+  /// hole or the outside of a point not in free space takes O(n).
   Location locate(const Point& q) const;
+  /// Whether q is in free space (open free space, an edge or a vertex): O(1) expected.
+  bool in_free_space(const Point& q) const;
   /// V(q) for q in the interior, on an edge, or at a vertex; throws InputError if q is
   /// outside free space.
   VisibilityPolygon compute(const Point& q) const;
@@ -81,7 +84,7 @@ class VisibilityIndex {
  private:
   struct Located { Location loc; std::uint32_t tri; int slot; };
   template <class Q>
-  Located locate_triangle(const Q& q, const Point& approx) const;
+  Located locate_triangle(const Q& q, const Point& approx, bool name_outside = true) const;
   template <class Q>
   VisibilityPolygon compute_at(const Q& q, const Point& approx) const;
   template <class OnVertex>
