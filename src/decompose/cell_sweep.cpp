@@ -161,7 +161,9 @@ std::vector<double> lap_positions(const Chain& floor, const Chain& ceiling, doub
     const double x = std::max(std::min(by_right[next].first, last + w), std::nextafter(last, INFINITY));
     xs.push_back(x);
     last = x;
-    for (std::size_t k = next; k < by_right.size(); ++k) {
+    // A sample this lap covers is within w/2 of it, so its range ends by x + w: stop there
+    // (scanning to the end made many laps quadratic).
+    for (std::size_t k = next; k < by_right.size() && by_right[k].first <= x + w + tol; ++k) {
       const std::size_t i = by_right[k].second;
       if (!done[i] && std::fabs(samples[i].x() - x) <= half + tol && covers(x, samples[i])) done[i] = 1;
     }

@@ -224,6 +224,16 @@ CoverageReport plan_coverage(const Environment& env, const CoverageOptions& o) {
   if (!(o.width >= 0) || !std::isfinite(o.width)) throw InputError("--width: the tool width must be a positive number");
   const double w = o.width > 0 ? o.width : 2 * r;
   if (!(w > 0)) throw InputError("--width: the tool width must be a positive number (or give the robot a radius: it defaults to 2r)");
+  // A path of more than about kMaxLapsAcross laps across the environment is beyond reason
+  // (memory grows with the laps): refuse it up front rather than run for hours.
+  {
+    const auto box = env.bbox();
+    const double across = std::hypot(box.xmax() - box.xmin(), box.ymax() - box.ymin());
+    if (across / w > kMaxLapsAcross)
+      throw InputError("--width " + geometry::format_number(w) + ": the environment is " + geometry::format_number(across) +
+                       " across, which needs more than " + geometry::format_number(kMaxLapsAcross) +
+                       " laps; the tool width must be at least 1e-5 of the environment's diameter");
+  }
   const ConfigurationSpace cs(env, r);
   if (cs.components().empty())
     throw InputError("a robot of radius " + geometry::format_number(r) + " fits nowhere in this environment");

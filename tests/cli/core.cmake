@@ -59,20 +59,29 @@ cli_test(plan_start_in_obstacle fail "start \\(2.5, 2.5\\) is not in free space:
          plan ${EXAMPLES}/gallery.json --start 2.5,2.5)
 cli_test(demo 0 "index\\.html" ${OUT}/demo/index.html demo --out ${OUT}/demo)
 
-# The real floor plans live in ../shared/data beside the checkout (CI has them there).
-if(EXISTS ${FLOORPLANS}/house_expo_room_0000.json)
-  cli_test(import_houseexpo_0000 0 "wrote .*: 147 vertices" ${OUT}/house0000.json
-           import ${FLOORPLANS}/house_expo_room_0000.json --from houseexpo -o ${OUT}/house0000.json)
-  cli_test(import_houseexpo_1451 0 "wrote .*: 434 vertices" ${OUT}/house1451.json
-           import ${FLOORPLANS}/house_expo_room_1451.json --from houseexpo -o ${OUT}/house1451.json)
-  cli_test(validate_imported_houseexpo 0 "ok: .*147 vertices" - validate ${OUT}/house0000.json)
-  set_tests_properties(cli.validate_imported_houseexpo PROPERTIES DEPENDS cli.import_houseexpo_0000)
-  cli_test(visibility_houseexpo 0 "\"location\": \"interior\"" - visibility ${OUT}/house1451.json --from 3,3 --json)
-  set_tests_properties(cli.visibility_houseexpo PROPERTIES DEPENDS cli.import_houseexpo_1451)
-  cli_test(decompose_houseexpo 0 "26 cells \\(225 trapezoids\\), 27 critical points" - decompose ${OUT}/house1451.json --method boustrophedon)
-  cli_test(plan_houseexpo 0 "path from \\(1, 1\\) to \\(9, 7\\)" - plan ${OUT}/house1451.json --start 1,1 --goal 9,7)
-  cli_test(cover_houseexpo 0 "coverage with width 0.4 at" - cover ${OUT}/house1451.json --width 0.4 --angle auto)
-  set_tests_properties(cli.decompose_houseexpo cli.plan_houseexpo cli.cover_houseexpo PROPERTIES DEPENDS cli.import_houseexpo_1451)
-else()
-  message(WARNING "shared data not found at ${FLOORPLANS}: the real floor-plan CLI tests are not registered")
-endif()
+# Real floor plans (HouseExpo, shipped in examples/floorplans).
+cli_test(import_houseexpo_0000 0 "wrote .*: 147 vertices" ${OUT}/house0000.json
+         import ${FLOORPLANS}/house_expo_room_0000.json --from houseexpo -o ${OUT}/house0000.json)
+cli_test(import_houseexpo_1451 0 "wrote .*: 434 vertices" ${OUT}/house1451.json
+         import ${FLOORPLANS}/house_expo_room_1451.json --from houseexpo -o ${OUT}/house1451.json)
+cli_test(validate_imported_houseexpo 0 "ok: .*147 vertices" - validate ${OUT}/house0000.json)
+set_tests_properties(cli.validate_imported_houseexpo PROPERTIES DEPENDS cli.import_houseexpo_0000)
+cli_test(visibility_houseexpo 0 "\"location\": \"interior\"" - visibility ${OUT}/house1451.json --from 3,3 --json)
+set_tests_properties(cli.visibility_houseexpo PROPERTIES DEPENDS cli.import_houseexpo_1451)
+cli_test(decompose_houseexpo 0 "26 cells \\(225 trapezoids\\), 27 critical points" - decompose ${OUT}/house1451.json --method boustrophedon)
+cli_test(plan_houseexpo 0 "path from \\(1, 1\\) to \\(9, 7\\)" - plan ${OUT}/house1451.json --start 1,1 --goal 9,7)
+cli_test(cover_houseexpo 0 "coverage with width 0.4 at" - cover ${OUT}/house1451.json --width 0.4 --angle auto)
+# Issue 24's report: at width 0.3 from (1, 1) the path left the boundary by up to 5 mm.
+cli_test(cover_houseexpo_1451_corners_inside 0 "covered (99\\.[5-9][0-9]*|100)% of the configuration space"
+         - cover ${OUT}/house1451.json --width 0.3 --start 1,1)
+set_tests_properties(cli.decompose_houseexpo cli.plan_houseexpo cli.cover_houseexpo cli.cover_houseexpo_1451_corners_inside
+                     PROPERTIES DEPENDS cli.import_houseexpo_1451)
+
+# README's "Using it" block, as written.
+add_test(NAME cli.readme_examples COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/cli/readme.sh ${PROJECT_SOURCE_DIR} $<TARGET_FILE:preimage_cli>)
+
+# Issue 26: a tiny tool width implied billions of laps (and the lap placement was quadratic
+# in them); widths below 1e-5 of the environment's diameter are refused up front.
+cli_test(cover_width_1e-9_refused fail "--width 1e-09: the environment is .* across, which needs more than 100000 laps" -
+         cover ${EXAMPLES}/gallery.json --width 1e-9)
+cli_test(cover_width_1e-3_many_laps 0 "16[0-9]{3} laps" - cover ${EXAMPLES}/gallery.json --width 1e-3 --angle 0)

@@ -107,10 +107,9 @@ void check_cover(const Environment& env, double width, std::optional<double> ang
 const double kAngles[] = {0, 90, 180, 270, 45, 23.7};
 
 Environment load_houseexpo(const std::string& name) {
-  const std::string path = std::string(PREIMAGE_SHARED_DATA) + "/floorplans/" + name;
+  const std::string path = std::string(PREIMAGE_FLOORPLANS) + "/" + name;
   return *scene::import_houseexpo(scene::read_file(path), path).environment;
 }
-bool have_shared_data() { return static_cast<bool>(std::ifstream(std::string(PREIMAGE_SHARED_DATA) + "/floorplans/house_expo_room_0000.json")); }
 
 }  // namespace
 
@@ -182,7 +181,6 @@ TEST(BoustrophedonCells, OfficeAndCombGenerators) {
 }
 
 TEST(BoustrophedonCells, HouseExpoFloorPlans) {
-  if (!have_shared_data()) GTEST_SKIP() << "shared data not found beside the checkout";
   for (const char* name : {"house_expo_room_0000.json", "house_expo_room_1451.json"}) {
     const Environment env = load_houseexpo(name);
     for (double a : kAngles) check_cells(env, a, std::string(name) + " at " + std::to_string(a));

@@ -122,7 +122,7 @@ TEST(Trapezoidal, DegenerateInputsMatchCgal) {
 
 TEST(Trapezoidal, RealHouseExpoFloorPlansMatchCgal) {
   for (const char* name : {"house_expo_room_0000.json", "house_expo_room_1451.json"}) {
-    const std::string path = std::string(PREIMAGE_SHARED_DATA) + "/floorplans/" + name;
+    const std::string path = std::string(PREIMAGE_FLOORPLANS) + "/" + name;
     if (!std::ifstream(path)) GTEST_SKIP() << "shared data not found beside the checkout: " << path;
     check(*scene::import_houseexpo(scene::read_file(path), path).environment, name);
   }

@@ -161,7 +161,7 @@ TEST(PursuitCells, StarHasACellSeeingEverything) {
 
 TEST(PursuitCells, HouseExpoFloorPlansBuild) {
   for (const char* f : {"house_expo_room_0000.json", "house_expo_room_1451.json"}) {
-    const auto s = scene::import_houseexpo(scene::read_file(std::string(PREIMAGE_SHARED_DATA) + "/floorplans/" + f), f);
+    const auto s = scene::import_houseexpo(scene::read_file(std::string(PREIMAGE_FLOORPLANS) + "/" + f), f);
     const auto C = ConservativeCells::build(*s.environment);
     EXPECT_GT(C.size(), 10u) << f;
   }
@@ -202,7 +202,7 @@ TEST(PursuitCells, WalkMatchesBruteForceCrossings) {
 
 TEST(PursuitCells, HouseExpoPlanThroughThinCellsPassesTheChecker) {
   const auto s = scene::import_houseexpo(
-      scene::read_file(std::string(PREIMAGE_SHARED_DATA) + "/floorplans/house_expo_room_0000.json"), "house 0000");
+      scene::read_file(std::string(PREIMAGE_FLOORPLANS) + "/house_expo_room_0000.json"), "house 0000");
   const auto C = ConservativeCells::build(*s.environment);
   EXPECT_GT(C.tiny_cells(), 0u) << "decimal coordinates make rays that nearly meet";
   const auto r = pursuit::search(C, 1);

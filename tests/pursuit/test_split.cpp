@@ -58,7 +58,7 @@ TEST(PursuitSplit, ClearsSimplyConnectedEnvironments) {
 
 TEST(PursuitSplit, HouseExpoFloorPlan) {
   const auto s = scene::import_houseexpo(
-      scene::read_file(std::string(PREIMAGE_SHARED_DATA) + "/floorplans/house_expo_room_0000.json"), "house 0000");
+      scene::read_file(std::string(PREIMAGE_FLOORPLANS) + "/house_expo_room_0000.json"), "house 0000");
   const auto r = pursuit::split_strategy(*s.environment);
   expect_cleared(*s.environment, r, "house 0000");
 }

@@ -91,7 +91,7 @@ TEST(Import, VisiLibityFiles) {
 // import, triangulate, and give the same visibility polygons as CGAL.
 TEST(Import, RealHouseExpoFloorPlansMatchCgalVisibility) {
   for (const char* name : {"house_expo_room_0000.json", "house_expo_room_1451.json"}) {
-    const std::string path = std::string(PREIMAGE_SHARED_DATA) + "/floorplans/" + name;
+    const std::string path = std::string(PREIMAGE_FLOORPLANS) + "/" + name;
     if (!std::ifstream(path)) GTEST_SKIP() << "shared data not found beside the checkout: " << path;
     auto s = scene::import_houseexpo(scene::read_file(path), path);
     ASSERT_TRUE(s.environment) << name;

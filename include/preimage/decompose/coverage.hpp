@@ -29,6 +29,9 @@ namespace preimage::decompose {
 enum class CellOrder { Optimised, DepthFirst };  // GTSP over sweeps, or 6.2.1's exhaustive walk
 enum class Transit { Shortest, Decomposition };  // visibility-graph shortest paths, or trapezoid midpoints
 
+/// Widths giving more laps than this across the environment's bounding box are refused.
+inline constexpr double kMaxLapsAcross = 1e5;
+
 struct CoverageOptions {
   double width = 0;                  // tool width w: laps are w apart; 0 means 2 * robot_radius
   double robot_radius = 0;           // r: the robot's centre stays r away from every obstacle
