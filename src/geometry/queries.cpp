@@ -17,28 +17,44 @@ const char* to_string(Location::Kind k) {
   return "?";
 }
 
-Location locate(const Environment& env, const Point& q) {
-  const auto& P = env.vertices();
+namespace {
+// Input vertices in the query's number type: doubles for input points, lazy-exact for
+// constructed ones, so every predicate below is exact either way.
+template <class P>
+const P& vertex_as(const Environment& env, std::size_t v);
+template <>
+const Point& vertex_as<Point>(const Environment& env, std::size_t v) { return env.vertex(v); }
+template <>
+const ExactPoint& vertex_as<ExactPoint>(const Environment& env, std::size_t v) { return env.exact_vertex(v); }
+
+template <class P>
+bool strictly_between(const P& a, const P& b, const P& c) {
+  return CGAL::orientation(a, b, c) == CGAL::COLLINEAR && CGAL::collinear_are_strictly_ordered_along_line(a, c, b);
+}
+
+template <class P>
+Location locate_as(const Environment& env, const P& q) {
   std::size_t inside_ring = SIZE_MAX;
   for (std::size_t r = 0; r < env.num_rings(); ++r) {
     int winding = 0;
     for (std::size_t v = env.ring_begin(r); v < env.ring_end(r); ++v) {
-      const Point &a = P[v], &b = P[env.next(v)];
+      const P &a = vertex_as<P>(env, v), &b = vertex_as<P>(env, env.next(v));
       if (q == a) return {Location::Kind::AtVertex, v};
       if (q == b) return {Location::Kind::AtVertex, env.next(v)};
       // Half-open crossing rule with exact comparisons and one orientation test.
-      if (a.y() <= q.y()) {
-        if (b.y() > q.y()) {
-          int o = orientation(a, b, q);
-          if (o > 0) ++winding;
-          else if (o == 0) return {Location::Kind::OnEdge, v};
-        } else if (b.y() == q.y() && strictly_inside_segment(a, b, q)) {
+      const auto ay = CGAL::compare_y(a, q), by = CGAL::compare_y(b, q);
+      if (ay != CGAL::LARGER) {
+        if (by == CGAL::LARGER) {
+          const auto o = CGAL::orientation(a, b, q);
+          if (o == CGAL::LEFT_TURN) ++winding;
+          else if (o == CGAL::COLLINEAR) return {Location::Kind::OnEdge, v};
+        } else if (by == CGAL::EQUAL && strictly_between(a, b, q)) {
           return {Location::Kind::OnEdge, v};
         }
-      } else if (b.y() <= q.y()) {
-        int o = orientation(a, b, q);
-        if (o < 0) --winding;
-        else if (o == 0) return {Location::Kind::OnEdge, v};
+      } else if (by != CGAL::LARGER) {
+        const auto o = CGAL::orientation(a, b, q);
+        if (o == CGAL::RIGHT_TURN) --winding;
+        else if (o == CGAL::COLLINEAR) return {Location::Kind::OnEdge, v};
       }
     }
     if (winding != 0 && r > 0) inside_ring = r;
@@ -48,6 +64,10 @@ Location locate(const Environment& env, const Point& q) {
   if (inside_ring != SIZE_MAX) return {Location::Kind::InHole, inside_ring - 1};
   return {Location::Kind::Interior, 0};
 }
+}  // namespace
+
+Location locate(const Environment& env, const Point& q) { return locate_as(env, q); }
+Location locate(const Environment& env, const ExactPoint& q) { return locate_as(env, q); }
 
 std::optional<RayHit> shoot_ray(const Environment& env, const ExactPoint& o, const ExactKernel::Vector_2& d) {
   // Decisions by orientation predicates on stored points; the hit parameter t is
@@ -96,31 +116,57 @@ std::optional<RayHit> shoot_ray(const Environment& env, const ExactPoint& o, con
   return RayHit{hit, best_e, best_vtx, best_along};
 }
 
-bool in_free_wedge(const Environment& env, std::size_t v, const Point& t) {
-  const Point &u = env.vertex(env.prev(v)), &c = env.vertex(v), &w = env.vertex(env.next(v));
+namespace {
+template <class P>
+bool in_free_wedge_as(const Environment& env, std::size_t v, const P& t) {
+  const P &u = vertex_as<P>(env, env.prev(v)), &c = vertex_as<P>(env, v), &w = vertex_as<P>(env, env.next(v));
   // Free space is to the left of u->c and of c->w.
-  const int turn = orientation(u, c, w);
-  const int left_of_out = orientation(c, w, t);   // >= 0: t on the free side of edge c->w
-  const int left_of_in = orientation(u, c, t);    // >= 0: t on the free side of edge u->c
-  if (turn > 0) return left_of_out >= 0 && left_of_in >= 0;
-  if (turn < 0) return left_of_out >= 0 || left_of_in >= 0;
-  return left_of_out >= 0;
+  const auto turn = CGAL::orientation(u, c, w);
+  const bool left_of_out = CGAL::orientation(c, w, t) != CGAL::RIGHT_TURN;  // t on the free side of edge c->w
+  const bool left_of_in = CGAL::orientation(u, c, t) != CGAL::RIGHT_TURN;   // t on the free side of edge u->c
+  if (turn == CGAL::LEFT_TURN) return left_of_out && left_of_in;
+  if (turn == CGAL::RIGHT_TURN) return left_of_out || left_of_in;
+  return left_of_out;
 }
 
-namespace {
 // Is t on the closed free side of the edge e (whose relative interior contains the point)?
-bool free_side_of_edge(const Environment& env, std::size_t e, const Point& t) {
-  return orientation(env.vertex(e), env.vertex(env.next(e)), t) >= 0;
+template <class P>
+bool free_side_of_edge(const Environment& env, std::size_t e, const P& t) {
+  return CGAL::orientation(vertex_as<P>(env, e), vertex_as<P>(env, env.next(e)), t) != CGAL::RIGHT_TURN;
 }
-bool direction_free(const Environment& env, const Location& at, const Point& t) {
+template <class P>
+bool direction_free(const Environment& env, const Location& at, const P& t) {
   switch (at.kind) {
     case Location::Kind::Interior: return true;
     case Location::Kind::OnEdge: return free_side_of_edge(env, at.index, t);
-    case Location::Kind::AtVertex: return in_free_wedge(env, at.index, t);
+    case Location::Kind::AtVertex: return in_free_wedge_as(env, at.index, t);
     default: return false;
   }
 }
+
+template <class P>
+bool visible_as(const Environment& env, const P& p, const P& q) {
+  const Location lp = locate_as(env, p), lq = locate_as(env, q);
+  if (!lp.in_free_space() || !lq.in_free_space()) return false;
+  if (p == q) return true;
+  if (!direction_free(env, lp, q) || !direction_free(env, lq, p)) return false;
+  for (std::size_t e = 0; e < env.num_vertices(); ++e) {
+    const P &a = vertex_as<P>(env, e), &b = vertex_as<P>(env, env.next(e));
+    const int o1 = CGAL::orientation(p, q, a), o2 = CGAL::orientation(p, q, b);
+    const int o3 = CGAL::orientation(a, b, p), o4 = CGAL::orientation(a, b, q);
+    if (o1 * o2 < 0 && o3 * o4 < 0) return false;  // proper crossing
+    // A vertex strictly inside pq: the segment must pass within the free wedge both ways.
+    if (o1 == 0 && strictly_between(p, q, a))
+      if (!in_free_wedge_as(env, e, p) || !in_free_wedge_as(env, e, q)) return false;
+    // p or q strictly inside edge e while the other lies strictly across it.
+    if (o3 == 0 && strictly_between(a, b, p) && o4 < 0) return false;
+    if (o4 == 0 && strictly_between(a, b, q) && o3 < 0) return false;
+  }
+  return true;
+}
 }  // namespace
+
+bool in_free_wedge(const Environment& env, std::size_t v, const Point& t) { return in_free_wedge_as(env, v, t); }
 
 double ray_range(const Environment& env, const Point& origin, double angle, double max_range) {
   const double dx = std::cos(angle), dy = std::sin(angle), ox = origin.x(), oy = origin.y();
@@ -139,26 +185,8 @@ double ray_range(const Environment& env, const Point& origin, double angle, doub
   return best;
 }
 
-bool visible(const Environment& env, const Point& p, const Point& q) {
-  const Location lp = locate(env, p), lq = locate(env, q);
-  if (!lp.in_free_space() || !lq.in_free_space()) return false;
-  if (p == q) return true;
-  if (!direction_free(env, lp, q) || !direction_free(env, lq, p)) return false;
-  const auto& P = env.vertices();
-  for (std::size_t e = 0; e < P.size(); ++e) {
-    const Point &a = P[e], &b = P[env.next(e)];
-    const int o1 = orientation(p, q, a), o2 = orientation(p, q, b);
-    const int o3 = orientation(a, b, p), o4 = orientation(a, b, q);
-    if (o1 * o2 < 0 && o3 * o4 < 0) return false;  // proper crossing
-    // A vertex strictly inside pq: the segment must pass within the free wedge both ways.
-    if (o1 == 0 && strictly_inside_segment(p, q, a))
-      if (!in_free_wedge(env, e, p) || !in_free_wedge(env, e, q)) return false;
-    // p or q strictly inside edge e while the other lies strictly across it.
-    if (o3 == 0 && strictly_inside_segment(a, b, p) && o4 < 0) return false;
-    if (o4 == 0 && strictly_inside_segment(a, b, q) && o3 < 0) return false;
-  }
-  return true;
-}
+bool visible(const Environment& env, const Point& p, const Point& q) { return visible_as(env, p, q); }
+bool visible(const Environment& env, const ExactPoint& p, const ExactPoint& q) { return visible_as(env, p, q); }
 
 long winding_number(std::span<const ExactPoint> loop, const ExactPoint& c) {
   // Signed crossings of the ray from c towards +x (half-open in y, so a vertex at c's

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 
 namespace preimage::pursuit {
@@ -24,7 +25,7 @@ using geometry::ExactFT;
 using geometry::ExactPoint;
 using geometry::Point;
 
-void validate_paths(const Environment& env, const Paths& paths) {
+void validate_paths(const Environment& env, const ExactPaths& paths) {
   if (paths.empty()) throw InputError("path: no pursuer");
   for (std::size_t l = 0; l < paths.size(); ++l) {
     if (paths[l].empty()) throw InputError("path: pursuer " + std::to_string(l + 1) + " has no points");
@@ -34,16 +35,29 @@ void validate_paths(const Environment& env, const Paths& paths) {
                        " (pursuers pass their waypoints together: repeat a point to wait)");
     for (std::size_t i = 0; i < paths[l].size(); ++i) {
       const auto loc = geometry::locate(env, paths[l][i]);
+      const auto at = [&](std::size_t k) { return geometry::format_point(geometry::to_double(paths[l][k])); };
       if (!loc.in_free_space())
-        throw InputError("path: pursuer " + std::to_string(l + 1) + " point " + std::to_string(i) + " " +
-                         geometry::format_point(paths[l][i]) + " is not in free space (" + geometry::to_string(loc.kind) + ")");
+        throw InputError("path: pursuer " + std::to_string(l + 1) + " point " + std::to_string(i) + " " + at(i) +
+                         " is not in free space (" + geometry::to_string(loc.kind) + ")");
       if (i > 0 && !geometry::visible(env, paths[l][i - 1], paths[l][i]))
         throw InputError("path: pursuer " + std::to_string(l + 1) + " segment " + std::to_string(i - 1) + " from " +
-                         geometry::format_point(paths[l][i - 1]) + " to " + geometry::format_point(paths[l][i]) +
-                         " leaves free space");
+                         at(i - 1) + " to " + at(i) + " leaves free space");
     }
   }
 }
+
+namespace {
+ExactPaths to_exact(const Paths& paths) {
+  ExactPaths out;
+  for (auto& p : paths) {
+    out.emplace_back();
+    for (auto& q : p) out.back().push_back(geometry::to_exact(q));
+  }
+  return out;
+}
+}  // namespace
+
+void validate_paths(const Environment& env, const Paths& paths) { validate_paths(env, to_exact(paths)); }
 
 namespace {
 
@@ -51,13 +65,14 @@ namespace {
 struct FreeSeg {
   ExactPoint a, b;
   geometry::SegmentEnd ea, eb;
-  Point carrier_p, carrier_q;
+  std::optional<std::pair<Point, Point>> carrier;  // input doubles on its line, when the pursuer is one
 };
 
 struct Moment {
   std::size_t waypoint;
   double fraction;
-  std::vector<Point> at;
+  std::vector<ExactPoint> at_exact;
+  std::vector<Point> at;  // rounded
   std::vector<std::vector<ExactPoint>> loops;  // V of each pursuer, exact
   std::vector<std::vector<ExactPoint>> vertices_of_v;  // the same, for event lines
   std::vector<FreeSeg> free;
@@ -74,11 +89,16 @@ geometry::SegmentEnd end_of(const geometry::VisibilityPolygon& V, std::size_t i)
   return {geometry::SegmentEnd::Kind::OnEdge, static_cast<std::uint32_t>(V.location.index)};
 }
 
+// V of every pursuer at one moment. With `exact`, V is computed at the exact positions
+// (constructed points, e.g. on edges); otherwise at their double rounding, which is how
+// double input paths are sampled (a rounded sample stays within its event interval).
 Moment take(const Environment& env, const geometry::VisibilityIndex& vis, std::size_t waypoint, double fraction,
-            std::vector<Point> at) {
-  Moment m{waypoint, fraction, std::move(at), {}, {}, {}};
-  for (const Point& q : m.at) {
-    const auto V = vis.compute(q);
+            std::vector<ExactPoint> at, bool exact) {
+  Moment m{waypoint, fraction, std::move(at), {}, {}, {}, {}};
+  for (const ExactPoint& e : m.at_exact) {
+    const Point q = geometry::to_double(e);
+    m.at.push_back(q);
+    const auto V = exact ? vis.compute(e) : vis.compute(q);
     m.loops.push_back(V.points());
     const std::size_t n = V.vertices.size();
     for (std::size_t i = 0; i < n; ++i) {
@@ -106,7 +126,9 @@ Moment take(const Environment& env, const geometry::VisibilityIndex& vis, std::s
         using K = geometry::SegmentEnd::Kind;
         const bool along = from_end.kind == K::AtVertex && to_end.kind == K::AtVertex &&
                            (env.next(from_end.index) == to_end.index || env.next(to_end.index) == from_end.index);
-        if (!along) m.free.push_back({from, to, from_end, to_end, q, carrier_q});
+        std::optional<std::pair<Point, Point>> carrier;
+        if (!exact) carrier = std::make_pair(q, carrier_q);
+        if (!along) m.free.push_back({from, to, from_end, to_end, carrier});
         from = to, from_end = to_end;
       };
       for (auto& [p, v] : cuts) add(p, {geometry::SegmentEnd::Kind::AtVertex, v});
@@ -115,6 +137,9 @@ Moment take(const Environment& env, const geometry::VisibilityIndex& vis, std::s
   }
   return m;
 }
+
+// Halvings of a step whose regions do not meet one to one (one moving pursuer).
+constexpr int kRefine = 24;
 
 bool in_v(const std::vector<ExactPoint>& loop, const ExactPoint& p) { return geometry::winding_number(loop, p) != 0; }
 
@@ -133,6 +158,9 @@ struct Contamination {
   bool recontaminated = false;
   Point recontaminated_at;
   std::vector<std::vector<std::vector<Point>>> polygons;  // contaminated faces as rings (when asked)
+  /// Every shadow region of the previous moment meets exactly one of this moment and vice
+  /// versa: the step followed each region (the only correspondence without an event).
+  bool one_to_one = true;
 };
 
 double face_area(const geometry::SegmentArrangement& A, std::size_t r) {
@@ -167,7 +195,7 @@ Contamination step(const Environment& env, const Moment* prev, const Contaminati
   std::vector<char> of_prev, of_next;
   for (auto& it : items) {
     if (segs.empty() || segs.back().from != it.s.a || segs.back().to != it.s.b) {
-      segs.push_back({it.s.a, it.s.b, it.s.ea, it.s.eb, std::make_pair(it.s.carrier_p, it.s.carrier_q)});
+      segs.push_back({it.s.a, it.s.b, it.s.ea, it.s.eb, it.s.carrier});
       of_prev.push_back(0), of_next.push_back(0);
     }
     (it.in_prev ? of_prev : of_next).back() = 1;
@@ -185,7 +213,7 @@ Contamination step(const Environment& env, const Moment* prev, const Contaminati
                              geometry::format_point(A.approx_vertices()[H[h].origin]) + " (segment " +
                              geometry::format_point(geometry::to_double(A.segments()[s].from)) + " - " +
                              geometry::format_point(geometry::to_double(A.segments()[s].to)) + ", pursuer at " +
-                             std::to_string(next.at[0].x()) + "," + std::to_string(next.at[0].y()) + " hex " + [&]{ char b[80]; std::snprintf(b, 80, "%a %a", next.at[0].x(), next.at[0].y()); return std::string(b); }() + ")");
+                             geometry::format_point(next.at[0]) + ")");
     if (!of_prev[s]) f1.join(A.region_of(h), A.region_of(h + 1));
     if (!of_next[s]) f2.join(A.region_of(h), A.region_of(h + 1));
   }
@@ -209,6 +237,27 @@ Contamination step(const Environment& env, const Moment* prev, const Contaminati
   for (std::uint32_t r = 0; r < nr; ++r) {
     const std::uint32_t root = f2.find(r);
     if (hidden2[root] && (!cont || cont1[f1.find(r)])) cont2[root] = 1;
+  }
+  if (prev) {
+    // Which shadow regions of the two moments meet (through a face hidden at both).
+    std::vector<char> hidden1(nr, 0), seen1(nr, 0);
+    std::vector<long> partner1(nr, -1), partner2(nr, -1);
+    for (std::uint32_t r = 0; r < nr; ++r) {
+      const std::uint32_t root = f1.find(r);
+      if (!seen1[root]) seen1[root] = 1, hidden1[root] = hidden(*prev, A.sample(root));
+    }
+    auto pair = [&](std::vector<long>& slot, std::uint32_t a, std::uint32_t b) {
+      if (slot[a] == -1) slot[a] = b;
+      else if (slot[a] != static_cast<long>(b)) out.one_to_one = false;
+    };
+    for (std::uint32_t r = 0; r < nr; ++r) {
+      const std::uint32_t a = f1.find(r), b = f2.find(r);
+      if (hidden1[a] && hidden2[b]) pair(partner1, a, b), pair(partner2, b, a);
+    }
+    for (std::uint32_t r = 0; r < nr; ++r) {
+      if (f1.find(r) == r && hidden1[r] && partner1[r] == -1) out.one_to_one = false;
+      if (f2.find(r) == r && hidden2[r] && partner2[r] == -1) out.one_to_one = false;
+    }
   }
   std::vector<char> reported(nr, 0);
   for (std::uint32_t r = 0; r < nr; ++r) {
@@ -240,9 +289,8 @@ Contamination step(const Environment& env, const Moment* prev, const Contaminati
 }
 
 // Parameters in (0, 1) where segment a -> b crosses the line through p and q.
-void crossings(const Point& a, const Point& b, const ExactPoint& p, const ExactPoint& q,
+void crossings(const ExactPoint& ea, const ExactPoint& eb, const ExactPoint& p, const ExactPoint& q,
                std::vector<std::pair<ExactFT, std::pair<ExactPoint, ExactPoint>>>& out) {
-  const ExactPoint ea = geometry::to_exact(a), eb = geometry::to_exact(b);
   const int sa = geometry::orientation(p, q, ea), sb = geometry::orientation(p, q, eb);
   if (sa * sb >= 0) return;
   const auto d = q - p;
@@ -251,10 +299,7 @@ void crossings(const Point& a, const Point& b, const ExactPoint& p, const ExactP
   out.push_back({ca / (ca - cb), {p, q}});
 }
 
-}  // namespace
-
-CheckResult check_paths(const Environment& env, const Paths& paths, const CheckOptions& options) {
-  validate_paths(env, paths);
+CheckResult check(const Environment& env, const ExactPaths& paths, const CheckOptions& options, bool exact) {
   const geometry::VisibilityIndex vis(env);
   const std::size_t k = paths.size(), steps = paths[0].size();
   // Lines through a reflex vertex and a vertex it sees: where one pursuer's V changes.
@@ -267,11 +312,11 @@ CheckResult check_paths(const Environment& env, const Paths& paths, const CheckO
       if (w != u && (!env.is_reflex(w) || w > u) && geometry::visible(env, env.vertex(u), env.vertex(w))) lines.push_back({u, w});
 
   CheckResult res;
-  auto at_time = [&](std::size_t j, double f) {
-    std::vector<Point> at;
+  auto at_time = [&](std::size_t j, const ExactFT& f) {
+    std::vector<ExactPoint> at;
     for (auto& p : paths) {
-      const Point &a = p[j], &b = p[std::min(j + 1, steps - 1)];
-      at.emplace_back(a.x() + f * (b.x() - a.x()), a.y() + f * (b.y() - a.y()));
+      const ExactPoint &a = p[j], &b = p[std::min(j + 1, steps - 1)];
+      at.push_back(f == 0 ? a : a + f * (b - a));
     }
     return at;
   };
@@ -290,13 +335,11 @@ CheckResult check_paths(const Environment& env, const Paths& paths, const CheckO
     f.regions = c.regions.size();
     res.frames.push_back(std::move(f));
   };
-  Moment prev = take(env, vis, 0, 0, at_time(0, 0));
+  Moment prev = take(env, vis, 0, 0, at_time(0, 0), exact);
   Contamination cont = step(env, nullptr, nullptr, prev, wanted(0));
   if (wanted(0)) record(prev, cont);
   res.moments = 1;
-  auto advance = [&](Moment next) {
-    const bool frame = next.fraction == 0 && wanted(next.waypoint);
-    Contamination c = step(env, &prev, &cont, next, frame);
+  auto commit = [&](Moment next, Contamination c, bool frame) {
     if (frame) record(next, c);
     ++res.moments;
     if (c.recontaminated && !res.first_recontamination)
@@ -306,18 +349,40 @@ CheckResult check_paths(const Environment& env, const Paths& paths, const CheckO
     prev = std::move(next);
     cont = std::move(c);
   };
-  if (cont.regions.empty()) res.cleared_at = CheckResult::Moment{0, 0, paths[0][0]};
+  auto advance = [&](Moment next) {
+    const bool frame = next.fraction == 0 && wanted(next.waypoint);
+    commit(next, step(env, &prev, &cont, next, frame), frame);
+  };
+  // Along segment j from fraction f0 (the previous moment) to f1: a step whose shadow
+  // regions do not meet one to one is halved, up to kRefine times. Within an interval
+  // without events each region only deforms, and once the step is short against the
+  // gaps between regions a region meets nothing but its own continuation; over a long
+  // step "meets" can also pair a region with another one that slid into the place it
+  // held (a window onto a wall, its view sliding along the wall), which read a cleared
+  // region as contaminated (found on a wall-following pursuer's plan).
+  std::function<void(std::size_t, const ExactFT&, const ExactFT&, int)> along = [&](std::size_t j, const ExactFT& f0,
+                                                                                   const ExactFT& f1, int depth) {
+    const bool end = f1 >= 1;
+    Moment next = take(env, vis, end ? j + 1 : j, end ? 0 : CGAL::to_double(f1), end ? at_time(j + 1, 0) : at_time(j, f1), exact);
+    const bool frame = next.fraction == 0 && wanted(next.waypoint);
+    Contamination c = step(env, &prev, &cont, next, frame);
+    if (c.one_to_one || depth >= kRefine) return commit(std::move(next), std::move(c), frame);
+    const ExactFT mid = (f0 + f1) / 2;
+    along(j, f0, mid, depth + 1);
+    along(j, mid, f1, depth + 1);
+  };
+  if (cont.regions.empty()) res.cleared_at = CheckResult::Moment{0, 0, prev.at[0]};
   for (std::size_t j = 0; j + 1 < steps; ++j) {
     std::vector<std::size_t> moving;
     for (std::size_t l = 0; l < k; ++l)
       if (paths[l][j] != paths[l][j + 1]) moving.push_back(l);
     if (moving.empty()) {
-      if (wanted(j + 1)) advance(take(env, vis, j + 1, 0, at_time(j + 1, 0)));
+      if (wanted(j + 1)) advance(take(env, vis, j + 1, 0, at_time(j + 1, 0), exact));
       continue;
     }
     std::vector<std::pair<ExactFT, std::pair<ExactPoint, ExactPoint>>> ev;
     for (std::size_t l : moving) {
-      const Point &a = paths[l][j], &b = paths[l][j + 1];
+      const ExactPoint &a = paths[l][j], &b = paths[l][j + 1];
       for (auto [u, w] : lines) crossings(a, b, env.exact_vertex(u), env.exact_vertex(w), ev);
       if (moving.size() == 1)
         for (std::size_t s = 0; s < k; ++s)
@@ -329,20 +394,21 @@ CheckResult check_paths(const Environment& env, const Paths& paths, const CheckO
     ev.erase(std::unique(ev.begin(), ev.end(), [](auto& x, auto& y) { return x.first == y.first; }), ev.end());
     // Sample fractions: one between every two events (within an interval the shadows only
     // deform); uniform refinement when several pursuers move together.
-    std::vector<double> fr;
-    std::vector<double> cuts{0};
-    for (auto& e : ev) cuts.push_back(CGAL::to_double(e.first));
+    std::vector<ExactFT> fr;
+    std::vector<ExactFT> cuts{0};
+    for (auto& e : ev) cuts.push_back(e.first);
     cuts.push_back(1);
     for (std::size_t i = 0; i + 1 < cuts.size(); ++i) fr.push_back((cuts[i] + cuts[i + 1]) / 2);
     if (moving.size() > 1)
-      for (std::size_t s = 1; s < options.substeps; ++s) fr.push_back(double(s) / options.substeps);
+      for (std::size_t s = 1; s < options.substeps; ++s) fr.push_back(ExactFT(double(s) / options.substeps));
     fr.push_back(1);
     std::sort(fr.begin(), fr.end());
     fr.erase(std::unique(fr.begin(), fr.end()), fr.end());
-    for (double f : fr) {
+    ExactFT last = 0;
+    for (const ExactFT& f : fr) {
       if (f <= 0) continue;
-      auto at = f >= 1 ? at_time(j + 1, 0) : at_time(j, f);
-      advance(take(env, vis, f >= 1 ? j + 1 : j, f >= 1 ? 0 : f, std::move(at)));
+      along(j, last, f, moving.size() == 1 ? 0 : kRefine);
+      last = f;
     }
   }
   res.cleared = cont.regions.empty();
@@ -350,6 +416,18 @@ CheckResult check_paths(const Environment& env, const Paths& paths, const CheckO
   res.contaminated_exact = cont.exact_regions;
   res.contaminated_area = cont.area;
   return res;
+}
+
+}  // namespace
+
+CheckResult check_paths(const Environment& env, const Paths& paths, const CheckOptions& options) {
+  validate_paths(env, paths);
+  return check(env, to_exact(paths), options, false);
+}
+
+CheckResult check_exact_paths(const Environment& env, const ExactPaths& paths, const CheckOptions& options) {
+  validate_paths(env, paths);
+  return check(env, paths, options, true);
 }
 
 }  // namespace preimage::pursuit

@@ -150,3 +150,22 @@ TEST(PursuitChecker, PursuerInLineWithAnEdge) {
   ASSERT_TRUE(two.plan);
   EXPECT_TRUE(pursuit::check_paths(env, two.plan->paths).cleared);
 }
+
+TEST(PursuitChecker, ShadowsBesideASlidingWindowAreNotConfused) {
+  // A pursuer moving along a wall and on along the wall's line: the view through a window
+  // slides along a far wall. The first checker paired the shadows on either side of the
+  // window over one long step ("meets" over the slid distance) and failed this plan,
+  // which clears the polygon (a wall-following plan; finer waypoints also clear it).
+  const auto env = *scene::load_scene(std::string(PREIMAGE_FIXTURES) + "/pursuit/sliding_window.json").environment;
+  const geometry::ExactPoint a = env.exact_vertex(10), b = env.exact_vertex(11);
+  const auto hit = geometry::shoot_ray(env, b, b - a);
+  ASSERT_TRUE(hit && !hit->vertex);
+  const auto r = pursuit::check_exact_paths(env, {{a, b, hit->point}});
+  EXPECT_TRUE(r.cleared) << r.contaminated_at_end.size() << " regions left";
+  EXPECT_FALSE(r.first_recontamination.has_value());
+  // The same path in 16 times as many waypoints: the same answer.
+  std::vector<geometry::ExactPoint> fine{a};
+  for (const auto& [p, q] : {std::make_pair(a, b), std::make_pair(b, hit->point)})
+    for (int k = 1; k <= 16; ++k) fine.push_back(p + geometry::ExactFT(k) / 16 * (q - p));
+  EXPECT_TRUE(pursuit::check_exact_paths(env, {fine}).cleared);
+}

@@ -22,6 +22,8 @@ const char* to_string(Location::Kind k);
 /// Where q lies: in the open free space, on the relative interior of edge e, at vertex v,
 /// strictly inside hole h, or outside the outer boundary.
 Location locate(const Environment& env, const Point& q);
+/// The same for a constructed point (e.g. a ray hit on an edge), decided exactly.
+Location locate(const Environment& env, const ExactPoint& q);
 
 struct RayHit {
   ExactPoint point;         // exact first contact
@@ -46,6 +48,8 @@ double ray_range(const Environment& env, const Point& origin, double angle, doub
 /// Does the closed segment pq lie in closed free space (grazing the boundary allowed)?
 /// p and q may be interior points, on edges or at vertices.
 bool visible(const Environment& env, const Point& p, const Point& q);
+/// The same for constructed points (e.g. cut endpoints on edges).
+bool visible(const Environment& env, const ExactPoint& p, const ExactPoint& q);
 
 /// Is direction towards t, from boundary vertex v, inside the closed free-space wedge at v?
 bool in_free_wedge(const Environment& env, std::size_t v, const Point& t);

@@ -24,6 +24,8 @@
 namespace preimage::pursuit {
 
 using Paths = std::vector<std::vector<geometry::Point>>;
+/// Paths through constructed points (a wall-follower's cut endpoints on edges).
+using ExactPaths = std::vector<std::vector<geometry::ExactPoint>>;
 
 struct CheckOptions {
   std::size_t substeps = 8;  // samples per segment when several pursuers move together
@@ -63,8 +65,12 @@ struct CheckResult {
 /// Throws InputError naming the pursuer and point or segment when the paths are not
 /// polylines in free space with equally many points.
 void validate_paths(const geometry::Environment& env, const Paths& paths);
+void validate_paths(const geometry::Environment& env, const ExactPaths& paths);
 
 /// Runs the check (validate_paths first).
 CheckResult check_paths(const geometry::Environment& env, const Paths& paths, const CheckOptions& options = {});
+/// The same for exact waypoints: every moment's V is computed at the exact position (on an
+/// edge, where a path follows the boundary), slower than at double points.
+CheckResult check_exact_paths(const geometry::Environment& env, const ExactPaths& paths, const CheckOptions& options = {});
 
 }  // namespace preimage::pursuit
