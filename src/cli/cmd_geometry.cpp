@@ -34,7 +34,7 @@ void run_validate(const std::string& path, bool as_json) {
                           {"general_position", {{"three_collinear_vertices", collinear.has_value()},
                                                 {"equal_x_coordinates", equal_x.has_value()}}}};
     text += ": " + std::to_string(env.num_vertices()) + " vertices (" + std::to_string(env.ring_size(0)) +
-            " on the boundary), " + std::to_string(env.num_holes()) + " obstacles, free area " + geometry::format_number(env.area());
+            " on the boundary), " + count_of(env.num_holes(), "obstacle") + ", free area " + geometry::format_number(env.area());
     // Every degeneracy the JSON reports is named in the text too.
     std::vector<std::string> degenerate;
     if (collinear)
@@ -67,7 +67,7 @@ void run_import(const std::string& in, const std::string& from, const std::strin
   else throw InputError("--from: unknown format '" + from + "' (expected houseexpo or visilibity)");
   scene::save_scene(s, out);
   const auto& env = s.require_environment();
-  std::cout << "wrote " << out << ": " << env.num_vertices() << " vertices, " << env.num_holes() << " obstacles\n";
+  std::cout << "wrote " << out << ": " << count_of(env.num_vertices(), "vertex", "vertices") << ", " << count_of(env.num_holes(), "obstacle") << "\n";
 }
 
 void run_render(const std::string& path, const std::string& out, bool triangulation) {

@@ -247,7 +247,7 @@ void run_simulate(const std::string& file, const SimulationParams& params, const
   }
   std::cout << s.name << ": strategy " << to_string(p.strategy) << ", target " << to_string(p.policy) << ", "
             << r.observer.size() - 1 << " steps of " << r.dt << " s\n";
-  std::cout << "escape time: " << (r.escape_time < 0 ? std::string("never (kept in sight)") : std::to_string(r.escape_time) + " s")
+  std::cout << "escape time: " << (r.escape_time < 0 ? std::string("never (kept in sight)") : geometry::format_number(r.escape_time) + " s")
             << "\nvisible: " << std::fixed << std::setprecision(1) << 100 * r.visible_fraction << "% of the time\n"
             << "path length: observer " << std::setprecision(2) << r.observer_length << " m, target " << r.target_length << " m\n"
             << "command variation: " << std::setprecision(3) << r.variation_v() << " m/s and " << r.variation_omega()

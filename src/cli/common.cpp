@@ -92,6 +92,10 @@ CLI::Validator number_in(double lo, double hi, bool lo_open, bool hi_open) {
       "NUMBER in " + range);
 }
 
+std::string count_of(std::size_t n, const std::string& singular, const std::string& plural) {
+  return std::to_string(n) + " " + (n == 1 ? singular : plural.empty() ? singular + "s" : plural);
+}
+
 void print_json(const nlohmann::json& j) { std::cout << j.dump(2) << "\n"; }
 
 std::string tuple_string(std::span<const std::int64_t> v) {

@@ -43,6 +43,8 @@ CLI::Option* add_count(CLI::App* cmd, const std::string& name, T& value, std::in
 
 /// Prints JSON to stdout, pretty.
 void print_json(const nlohmann::json& j);
+/// "1 obstacle", "3 obstacles"; "1 vertex", "2 vertices" with the plural given.
+std::string count_of(std::size_t n, const std::string& singular, const std::string& plural = "");
 
 /// Registration of each command group.
 void add_geometry_commands(CLI::App& app);

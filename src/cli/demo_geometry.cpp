@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Demo section of the geometry core: a floor plan, its triangulation, visibility polygons.
+#include "common.hpp"
 #include "demo.hpp"
 
 #include <preimage/geometry/general_position.hpp>
@@ -24,7 +25,7 @@ void demo_geometry(DemoContext& ctx) {
   const VisibilityIndex index(env);
   const Triangulation& tri = index.triangulation();
   R.result("Office floor plan (2 x 3 rooms, walls as obstacles, doors): " + std::to_string(env.num_vertices()) +
-           " vertices, " + std::to_string(env.num_holes()) + " obstacles, " + std::to_string(straight_vertices(env).size()) +
+           " vertices, " + count_of(env.num_holes(), "obstacle") + ", " + std::to_string(straight_vertices(env).size()) +
            " collinear (straight) vertices kept exactly.");
   R.result("Own constrained Delaunay triangulation: " + std::to_string(tri.size()) + " triangles (n + 2h - 2 = " +
            std::to_string(env.num_vertices() + 2 * env.num_holes() - 2) + "), " + std::to_string(tri.non_delaunay_edges()) +

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // preimage: the command line. Each module registers its subcommands here.
 #include "common.hpp"
+#include "suggest.hpp"
 
 #include <preimage/error.hpp>
 
@@ -18,6 +19,10 @@ int main(int argc, char** argv) {
   preimage::cli::add_track_commands(app);
   preimage::cli::add_pursuit_commands(app);
   preimage::cli::add_demo_command(app);
+  if (const auto unknown = preimage::cli::unknown_command(app, argc, argv)) {
+    std::cerr << "preimage: " << *unknown << " (see preimage --help)\n";
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

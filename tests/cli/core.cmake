@@ -15,7 +15,7 @@ cli_test(validate_syntax_error fail "syntax_error\\.json:3:33: JSON syntax error
 cli_test(validate_bad_coordinate fail "\\$\\.environment\\.obstacles\\[0\\]\\[2\\]\\[1\\]: expected a number" -
          validate ${FIX}/scenes/bad_coordinate.json)
 cli_test(validate_missing_file fail "nope\\.json: cannot open file" - validate ${FIX}/nope.json)
-cli_test(import_visilibity 0 "wrote .*: 8 vertices, 1 obstacles" ${OUT}/pillar.json
+cli_test(import_visilibity 0 "wrote .*: 8 vertices, 1 obstacle$" ${OUT}/pillar.json
          import ${FIX}/visilibity/room_with_pillar.txt --from visilibity -o ${OUT}/pillar.json)
 cli_test(import_visilibity_bad_token fail "bad_token\\.txt:3: expected 'x y', got '10 zero'" -
          import ${FIX}/visilibity/bad_token.txt --from visilibity -o ${OUT}/never.json)
@@ -85,3 +85,12 @@ add_test(NAME cli.readme_examples COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/cli/readme
 cli_test(cover_width_1e-9_refused fail "--width 1e-09: the environment is .* across, which needs more than 100000 laps" -
          cover ${EXAMPLES}/gallery.json --width 1e-9)
 cli_test(cover_width_1e-3_many_laps 0 "16[0-9]{3} laps" - cover ${EXAMPLES}/gallery.json --width 1e-3 --angle 0)
+
+# Issue 23: a misspelled command is named, with the closest commands.
+cli_test(unknown_command_did_you_mean fail "unknown command 'visiblity' for 'preimage'. did you mean 'visibility'\\?" -
+         visiblity ${EXAMPLES}/gallery.json --from 1,1)
+cli_test(unknown_subcommand_did_you_mean fail "unknown command 'navigte' for 'preimage landmarks'. did you mean 'navigate'\\?" -
+         landmarks navigte ${EXAMPLES}/gallery.json)
+cli_test(unknown_command_lists_commands fail "unknown command 'xyzzy' for 'preimage'. commands: .*visibility" - xyzzy)
+cli_test(import_plural_obstacles 0 "wrote .*: 147 vertices, 0 obstacles" ${OUT}/house0000_plural.json
+         import ${FLOORPLANS}/house_expo_room_0000.json --from houseexpo -o ${OUT}/house0000_plural.json)
