@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <stdexcept>
 
 namespace preimage::decompose {
 
@@ -53,6 +54,8 @@ class PairCosts {
   std::size_t mask_ = 0, size_ = 0;
 };
 
+constexpr std::size_t kMaxSweeps = 4;
+
 // Transit costs between sweeps, computed once each. While searching, a cost not computed
 // yet is estimated by the straight-line distance (a lower bound); the search is repeated
 // with the true costs of every pair its result uses until the result uses only true costs.
@@ -66,6 +69,7 @@ class Costs {
         const std::function<double(const Point&, const Point&)>& transit)
       : start_(start), transit_(transit) {
     for (const auto& c : cells) {
+      if (c.empty() || c.size() > kMaxSweeps) throw std::invalid_argument("order_sweeps: every cell needs 1 to 4 sweeps");
       first_.push_back(static_cast<std::uint32_t>(nodes_.size()));
       nodes_.insert(nodes_.end(), c.begin(), c.end());
       count_.push_back(static_cast<std::uint8_t>(c.size()));
@@ -75,7 +79,6 @@ class Costs {
     for (std::size_t b = 0; b < nodes_.size(); ++b) start_cost_[b] = start ? euclid(*start, nodes_[b].entry) : 0;
   }
   std::uint32_t node(std::uint32_t cell, std::uint8_t sweep) const { return first_[cell] + sweep; }
-  const Sweep& sweep(std::uint32_t node) const { return nodes_[node]; }
   double own(std::uint32_t node) const { return nodes_[node].length; }
   // Estimated (straight line) or true cost from a's exit to b's entry; a may be kStart or
   // kNone, b may be kNone (both cost nothing but the start's transit).
@@ -83,9 +86,7 @@ class Costs {
     if (b == kNone || a == kNone) return 0;
     if (a == kStart) return start_cost_[b];
     if (const double* c = settled_.find(key(a, b))) return *c;
-    const auto& p = xy_[a];
-    const auto& q = xy_[b];
-    return std::sqrt((p[2] - q[0]) * (p[2] - q[0]) + (p[3] - q[1]) * (p[3] - q[1]));
+    return straight(a, b);
   }
   // Makes the cost exact; returns true if it was only an estimate before and changed.
   bool settle(std::uint32_t a, std::uint32_t b) {
@@ -101,18 +102,21 @@ class Costs {
     const auto [value, fresh] = settled_.insert(key(a, b));
     if (!fresh) return false;
     *value = transit_(nodes_[a].exit, nodes_[b].entry);
-    return longer(*value, estimate_straight(a, b));
+    return longer(*value, straight(a, b));
   }
   std::size_t sweeps_of(std::uint32_t cell) const { return count_[cell]; }
   std::size_t num_cells() const { return count_.size(); }
-  bool has_start() const { return start_.has_value(); }
 
  private:
   // A transit longer than its straight-line estimate by more than rounding (the two are
   // computed by different formulas): only then can the search's answer change.
   static bool longer(double transit, double estimate) { return transit > estimate * (1 + 1e-12); }
   static std::uint64_t key(std::uint32_t a, std::uint32_t b) { return std::uint64_t{a} << 32 | b; }
-  double estimate_straight(std::uint32_t a, std::uint32_t b) const { return euclid(nodes_[a].exit, nodes_[b].entry); }
+  double straight(std::uint32_t a, std::uint32_t b) const {
+    const auto& p = xy_[a];
+    const auto& q = xy_[b];
+    return std::sqrt((p[2] - q[0]) * (p[2] - q[0]) + (p[3] - q[1]) * (p[3] - q[1]));
+  }
   std::optional<Point> start_;
   const std::function<double(const Point&, const Point&)>& transit_;
   std::vector<Sweep> nodes_;
@@ -123,8 +127,6 @@ class Costs {
   std::vector<double> start_cost_;
   std::vector<char> start_settled_;
 };
-
-constexpr std::size_t kMaxSweeps = 4;
 
 // Best sweeps for the cells `cells` (in this order) between the fixed sweeps `a` (a node,
 // kStart or kNone) and `b` (a node or kNone): a shortest path through the layers of sweeps
