@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   CLI::App app{"preimage: exact combinatorial planning and filtering in the plane"};
   app.set_version_flag("--version", std::string("preimage ") + PREIMAGE_VERSION);
   app.require_subcommand(1);
+  app.option_defaults()->always_capture_default();  // every --help shows every default
   preimage::cli::add_geometry_commands(app);
   preimage::cli::add_decompose_commands(app);
   preimage::cli::add_beams_commands(app);
