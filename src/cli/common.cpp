@@ -92,7 +92,8 @@ CLI::Validator number_in(double lo, double hi, bool lo_open, bool hi_open) {
       "NUMBER in " + range);
 }
 
-void print_json(const nlohmann::json& j) { std::cout << j.dump(2) << "\n"; }
+// File names (and other command-line text) need not be UTF-8: stray bytes print as U+FFFD.
+void print_json(const nlohmann::json& j) { std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n"; }
 
 std::string tuple_string(std::span<const std::int64_t> v) {
   std::string s = "(";
