@@ -145,7 +145,7 @@ void for_each_observation(const BeamArrangement& A, const FilterArgs& a, Fn fn) 
 }
 
 // One JSON Lines record per observation of a stream (--stream --json), flushed.
-void print_json_line(const json& j) { std::cout << j.dump() << std::endl; }
+void print_json_line(const json& j) { std::cout << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << std::endl; }
 
 // "2.1 GiB": a byte count for messages about memory bounds.
 std::string bytes_text(double b) {

@@ -207,13 +207,7 @@ void run_plan(const PlanFlags& F) {
 
 // ---------------------------------------------------------------- check
 pursuit::Paths load_paths(const std::string& file) {
-  const std::string text = scene::read_file(file);
-  json j;
-  try {
-    j = json::parse(text);
-  } catch (const json::parse_error& e) {
-    throw InputError(file + ": not JSON (" + std::string(e.what()) + ")");
-  }
+  json j = scene::parse_json(scene::read_file(file), file);
   std::string where = "$";
   if (j.is_object()) {
     if (j.contains("plan") && j["plan"].is_object()) j = j["plan"], where += ".plan";

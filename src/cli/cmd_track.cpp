@@ -221,7 +221,7 @@ void run_simulate(const std::string& file, const SimulationParams& params, const
   }
   Progress progress("simulate");
   p.on_step = [&](const StepRecord& r) {
-    if (log_out.is_open()) log_out << step_json(r, p, *index, s.target.radius).dump() << "\n";
+    if (log_out.is_open()) log_out << step_json(r, p, *index, s.target.radius).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     progress(r.step + 1, p.steps);
   };
   const SimulationResult r = simulate(s, p);
@@ -386,7 +386,7 @@ void run_replay(const std::string& file, bool as_json, double max_range, double 
         j["escape_paths"] = r.escape_paths;
         j["gradient"] = vec_json(r.gradient);
       }
-      std::cout << j.dump() << "\n";
+      std::cout << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     } else {
       std::cout << "scan " << r.index << " t=" << std::fixed << std::setprecision(3) << r.timestamp << ": " << r.vertices
                 << " vertices, free edges " << r.occlusion + r.range << " (occlusion " << r.occlusion << ", range "

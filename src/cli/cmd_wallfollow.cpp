@@ -3,6 +3,7 @@
 #include "common.hpp"
 
 #include <preimage/error.hpp>
+#include <preimage/geometry/coordinates.hpp>
 #include <preimage/scene/scene.hpp>
 #include <preimage/wallfollow/cut_ordering.hpp>
 #include <preimage/wallfollow/environment.hpp>
@@ -32,7 +33,8 @@ Setup load(const std::string& file, const std::string& start, double heading_deg
   require_general_position(s.scene.require_environment());
   s.start = !start.empty() ? parse_point(start, "--start") : s.scene.start ? *s.scene.start : s.scene.environment->vertex(0);
   if (!std::isfinite(heading_deg)) throw InputError("--heading: expected degrees");
-  s.heading = geometry::Vector(std::cos(heading_deg * M_PI / 180), std::sin(heading_deg * M_PI / 180));
+  const double rad = geometry::radians_from_degrees(heading_deg);
+  s.heading = geometry::Vector(std::cos(rad), std::sin(rad));
   return s;
 }
 

@@ -96,7 +96,8 @@ std::string count_of(std::size_t n, const std::string& singular, const std::stri
   return std::to_string(n) + " " + (n == 1 ? singular : plural.empty() ? singular + "s" : plural);
 }
 
-void print_json(const nlohmann::json& j) { std::cout << j.dump(2) << "\n"; }
+// File names (and other command-line text) need not be UTF-8: stray bytes print as U+FFFD.
+void print_json(const nlohmann::json& j) { std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n"; }
 
 std::string tuple_string(std::span<const std::int64_t> v) {
   std::string s = "(";

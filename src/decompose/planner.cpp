@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <queue>
 #include <stdexcept>
 
@@ -27,7 +28,8 @@ Point TrapezoidalPlanner::centroid(std::size_t cell) const {
   return Point(sx / static_cast<double>(poly.size()), sy / static_cast<double>(poly.size()));
 }
 
-Plan TrapezoidalPlanner::plan(const Point& start, const Point& goal, bool shorten) const {
+Plan TrapezoidalPlanner::plan(const Point& start, const Point& goal, bool shorten,
+                              const geometry::VisibilityIndex* index) const {
   const Environment& env = d_->environment();
   auto locate_or_throw = [&](const Point& p, const char* what) {
     if (auto c = locator_.locate(p)) return *c;
@@ -84,14 +86,25 @@ Plan TrapezoidalPlanner::plan(const Point& start, const Point& goal, bool shorte
   }
   out.path.push_back(goal);
   if (shorten && out.path.size() > 2) {
-    // Greedy string pulling: from each kept point jump to the farthest point it sees (exact).
-    std::vector<Point> s{out.path.front()};
-    std::size_t i = 0;
-    while (i + 1 < out.path.size()) {
-      std::size_t j = i + 1;
-      while (j + 1 < out.path.size() && geometry::visible(env, out.path[i], out.path[j + 1])) ++j;
-      s.push_back(out.path[j]);
-      i = j;
+    // String pulling: from each kept point jump to a later point it sees (exact), found by
+    // doubling the jump while the point there is visible and then halving back to the
+    // last visible one. Consecutive points see each other, so every jump is a segment in
+    // free space; galloping asks O(log m) questions per jump where trying each point in
+    // turn asked one per point skipped (24 s on a 64,000-point path in a 10^5-vertex square).
+    std::optional<geometry::VisibilityIndex> own;
+    if (!index) index = &own.emplace(env);
+    if (&index->environment() != &env) throw std::logic_error("plan: the visibility index is of another environment");
+    const std::vector<Point>& p = out.path;
+    std::vector<Point> s{p.front()};
+    for (std::size_t i = 0; i + 1 < p.size();) {
+      std::size_t good = i + 1, step = 1;
+      while (good + step < p.size() && index->visible(p[i], p[good + step])) good += step, step *= 2;
+      for (std::size_t bad = std::min(p.size(), good + step); bad - good > 1;) {
+        const std::size_t mid = good + (bad - good) / 2;
+        (index->visible(p[i], p[mid]) ? good : bad) = mid;
+      }
+      s.push_back(p[good]);
+      i = good;
     }
     out.path.swap(s);
   }
@@ -135,7 +148,7 @@ RobotPlan plan_path(const Environment& env, const Point& start, const Point& goa
   } else {
     const TrapezoidalDecomposition d(E);
     const TrapezoidalPlanner planner(d);
-    const Plan p = planner.plan(s.at, g.at, shorten);
+    const Plan p = planner.plan(s.at, g.at, shorten, &index);
     if (!p.found) throw std::logic_error("plan: the cell graph of one component is not connected");
     middle = p.path, out.decomposition_cells = d.cells().size(), out.cells_crossed = p.cells.size();
   }

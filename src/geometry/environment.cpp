@@ -5,12 +5,12 @@
 #include <preimage/geometry/coordinates.hpp>
 #include <preimage/geometry/segment_sweep.hpp>
 
-#include <CGAL/Polygon_2_algorithms.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numeric>
+#include <type_traits>
+#include <utility>
 
 namespace preimage::geometry {
 
@@ -37,6 +37,70 @@ int ring_orientation(const Ring& r) {
   const std::size_t n = r.size();
   return orientation(r[(k + n - 1) % n], r[k], r[(k + 1) % n]);
 }
+
+// Which rings strictly contain a vertex q of another ring: those a horizontal ray from q to
+// the right crosses an odd number of times (rings are disjoint, so q lies on none). Edges
+// are bucketed by y, so a query reads only the edges near q's height: O(n) to build, and a
+// query costs the edges sharing its bucket, not all n (one bounded_side_2 per pair of
+// rings was quadratic in the number of holes).
+class RingIndex {
+ public:
+  RingIndex(const std::vector<Point>& pts, const std::vector<std::size_t>& begin, const std::vector<std::uint32_t>& ring_of)
+      : pts_(pts), ring_of_(ring_of) {
+    double lo = pts.empty() ? 0 : pts[0].y(), hi = lo;
+    for (const Point& p : pts) lo = std::min(lo, p.y()), hi = std::max(hi, p.y());
+    y0_ = lo;
+    buckets_ = std::max<std::size_t>(pts.size(), 1);
+    scale_ = hi > lo ? static_cast<double>(buckets_) / (hi - lo) : 0;
+    // Bucket k holds the edges whose closed y-range meets its slab. bucket() is monotone
+    // in y, so an edge reaching q.y is in q's bucket whatever the rounding.
+    std::vector<std::uint32_t> count(buckets_ + 1, 0);
+    auto each_edge = [&](auto&& fn) {
+      for (std::size_t r = 0; r + 1 < begin.size(); ++r)
+        for (std::size_t v = begin[r]; v < begin[r + 1]; ++v) {
+          const std::size_t w = v + 1 == begin[r + 1] ? begin[r] : v + 1;
+          if (pts[v].y() == pts[w].y()) continue;  // a horizontal edge never crosses the ray
+          const std::size_t a = bucket(std::min(pts[v].y(), pts[w].y())), b = bucket(std::max(pts[v].y(), pts[w].y()));
+          for (std::size_t k = a; k <= b; ++k) fn(k, static_cast<std::uint32_t>(v), static_cast<std::uint32_t>(w));
+        }
+    };
+    each_edge([&](std::size_t k, std::uint32_t, std::uint32_t) { ++count[k + 1]; });
+    std::partial_sum(count.begin(), count.end(), count.begin());
+    first_ = count;
+    edges_.resize(count.back());
+    each_edge([&](std::size_t k, std::uint32_t v, std::uint32_t w) { edges_[count[k]++] = {v, w}; });
+  }
+
+  std::vector<std::uint32_t> around(std::uint32_t q) const {
+    const Point& p = pts_[q];
+    std::vector<std::uint32_t> odd;  // rings crossed an odd number of times so far
+    const std::size_t k = bucket(p.y());
+    for (std::size_t i = first_[k]; i < first_[k + 1]; ++i) {
+      auto [v, w] = edges_[i];
+      if (ring_of_[v] == ring_of_[q]) continue;
+      const Point *a = &pts_[v], *b = &pts_[w];
+      if (a->y() > b->y()) std::swap(a, b);
+      // Half-open in y, so a ray through a vertex counts the two edges there once.
+      if (!(a->y() <= p.y() && p.y() < b->y()) || orientation(*a, *b, p) <= 0) continue;
+      const auto it = std::find(odd.begin(), odd.end(), ring_of_[v]);
+      if (it == odd.end()) odd.push_back(ring_of_[v]);
+      else odd.erase(it);
+    }
+    return odd;
+  }
+
+ private:
+  std::size_t bucket(double y) const {
+    const double k = std::floor((y - y0_) * scale_);
+    return k <= 0 ? 0 : std::min(static_cast<std::size_t>(k), buckets_ - 1);
+  }
+  const std::vector<Point>& pts_;
+  const std::vector<std::uint32_t>& ring_of_;
+  double y0_ = 0, scale_ = 0;
+  std::size_t buckets_ = 1;
+  std::vector<std::uint32_t> first_;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges_;
+};
 
 }  // namespace
 
@@ -112,13 +176,17 @@ Environment Environment::make(Ring outer, std::vector<Ring> holes, const std::st
 
   // Holes inside the outer boundary and not inside one another (boundaries are disjoint
   // now, so one vertex decides for a whole ring).
-  for (std::size_t h = 0; h < holes.size(); ++h) {
-    if (CGAL::bounded_side_2(outer.begin(), outer.end(), holes[h][0], Kernel()) != CGAL::ON_BOUNDED_SIDE)
-      throw InputError(names[h + 1] + ": lies outside " + outer_name);
-    for (std::size_t g = 0; g < holes.size(); ++g)
-      if (g != h &&
-          CGAL::bounded_side_2(holes[g].begin(), holes[g].end(), holes[h][0], Kernel()) == CGAL::ON_BOUNDED_SIDE)
-        throw InputError(names[h + 1] + ": lies inside " + names[g + 1]);
+  if (!holes.empty()) {
+    const RingIndex index(pts, begin, ring_of);
+    for (std::size_t h = 0; h < holes.size(); ++h) {
+      const std::vector<std::uint32_t> around = index.around(static_cast<std::uint32_t>(begin[h + 1]));
+      if (std::find(around.begin(), around.end(), 0u) == around.end())
+        throw InputError(names[h + 1] + ": lies outside " + outer_name);
+      std::uint32_t inside = 0;  // the first hole holding it, as the message names one
+      for (std::uint32_t g : around)
+        if (g != 0 && (inside == 0 || g < inside)) inside = g;
+      if (inside != 0) throw InputError(names[h + 1] + ": lies inside " + names[inside]);
+    }
   }
 
   // Normalise: outer counter-clockwise, holes clockwise.
@@ -151,12 +219,16 @@ Ring Environment::ring(std::size_t r) const {
 }
 
 ExactFT Environment::exact_area() const {
-  ExactFT twice = 0;
+  // Summed in the exact number type itself: a lazy sum of n terms is a chain n deep, which
+  // CGAL evaluates recursively when a comparison needs it (it overflowed the stack at 10^5
+  // vertices).
+  using Exact = std::decay_t<decltype(CGAL::exact(std::declval<ExactFT>()))>;
+  Exact twice = 0;
   for (std::size_t v = 0; v < pts_.size(); ++v) {
     const Point &a = pts_[v], &b = pts_[next(v)];
-    twice += ExactFT(a.x()) * ExactFT(b.y()) - ExactFT(b.x()) * ExactFT(a.y());
+    twice += Exact(a.x()) * Exact(b.y()) - Exact(b.x()) * Exact(a.y());
   }
-  return twice / 2;  // holes are clockwise, so they subtract themselves
+  return ExactFT(twice / 2);  // holes are clockwise, so they subtract themselves
 }
 
 double Environment::area() const {

@@ -11,6 +11,7 @@ namespace preimage::geometry {
 std::optional<std::array<std::size_t, 3>> find_collinear_triple(const std::vector<Point>& pts) {
   const std::size_t n = pts.size();
   std::vector<std::size_t> others;
+  std::vector<signed char> side(n);
   for (std::size_t c = 0; c < n; ++c) {
     const Point& o = pts[c];
     others.clear();
@@ -18,12 +19,8 @@ std::optional<std::array<std::size_t, 3>> find_collinear_triple(const std::vecto
       if (i != c && pts[i] != o) others.push_back(i);
     // Direction folded into the upper half-plane (plus the +x ray), so a line through o
     // is one direction; sort by exact orientation, neighbours on one line are adjacent.
-    auto upper = [&](const Point& p) { return p.y() > o.y() || (p.y() == o.y() && p.x() > o.x()); };
-    auto before = [&](std::size_t a, std::size_t b) {
-      const Point &pa = pts[a], &pb = pts[b];
-      const int s = (upper(pa) ? 1 : -1) * (upper(pb) ? 1 : -1);
-      return s * orientation(o, pa, pb) > 0;
-    };
+    for (std::size_t i : others) side[i] = pts[i].y() > o.y() || (pts[i].y() == o.y() && pts[i].x() > o.x()) ? 1 : -1;
+    auto before = [&](std::size_t a, std::size_t b) { return side[a] * side[b] * orientation(o, pts[a], pts[b]) > 0; };
     std::sort(others.begin(), others.end(), before);
     for (std::size_t k = 0; k + 1 < others.size(); ++k)
       if (orientation(o, pts[others[k]], pts[others[k + 1]]) == 0) {

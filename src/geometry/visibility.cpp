@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace preimage::geometry {
 
@@ -84,8 +85,11 @@ VisibilityIndex::VisibilityIndex(const Environment& env) : env_(&env), tri_(env)
   cw_ = w / gx_, ch_ = h / gy_;
   auto cx = [&](double x) { return std::min<std::uint32_t>(gx_ - 1, static_cast<std::uint32_t>(std::max(0.0, (x - x0_) / cw_))); };
   auto cy = [&](double y) { return std::min<std::uint32_t>(gy_ - 1, static_cast<std::uint32_t>(std::max(0.0, (y - y0_) / ch_))); };
-  // Two passes (count, fill) into a CSR layout. Cells are widened by one on each side so
-  // rounding in the cell index can never lose a triangle; the containment test is exact.
+  // Two passes (count, fill) into a CSR layout. A triangle goes into the cells its rows
+  // cross, not its whole bounding box (long thin triangles, as a circle's or a square with
+  // collinear sides has, made the boxes' cells gigabytes). Rows and cells are widened by
+  // one on each side so rounding in a cell index can never lose a triangle; the
+  // containment test itself is exact.
   cell_off_.assign(std::size_t(gx_) * gy_ + 1, 0);
   for (int pass = 0; pass < 2; ++pass) {
     std::vector<std::uint32_t> fill;
@@ -95,15 +99,34 @@ VisibilityIndex::VisibilityIndex(const Environment& env) : env_(&env), tri_(env)
       fill.assign(cell_off_.begin(), cell_off_.end() - 1);
     }
     for (std::uint32_t t = 0; t < T.size(); ++t) {
-      CGAL::Bbox_2 b = P[T[t].v[0]].bbox() + P[T[t].v[1]].bbox() + P[T[t].v[2]].bbox();
-      std::uint32_t i0 = cx(b.xmin()), i1 = cx(b.xmax()), j0 = cy(b.ymin()), j1 = cy(b.ymax());
-      i0 = i0 ? i0 - 1 : 0, j0 = j0 ? j0 - 1 : 0, i1 = std::min(gx_ - 1, i1 + 1), j1 = std::min(gy_ - 1, j1 + 1);
-      for (std::uint32_t j = j0; j <= j1; ++j)
+      const Point* V[3] = {&P[T[t].v[0]], &P[T[t].v[1]], &P[T[t].v[2]]};
+      const double ylo = std::min({V[0]->y(), V[1]->y(), V[2]->y()}), yhi = std::max({V[0]->y(), V[1]->y(), V[2]->y()});
+      std::uint32_t j0 = cy(ylo), j1 = cy(yhi);
+      j0 = j0 ? j0 - 1 : 0, j1 = std::min(gy_ - 1, j1 + 1);
+      for (std::uint32_t j = j0; j <= j1; ++j) {
+        // x-extent of the triangle within rows j - 1 .. j + 1 (a slab three rows tall).
+        const double sa = std::max(ylo, y0_ + (static_cast<double>(j) - 1) * ch_);
+        const double sb = std::min(yhi, y0_ + (static_cast<double>(j) + 2) * ch_);
+        double xlo = std::numeric_limits<double>::infinity(), xhi = -xlo;
+        for (int e = 0; e < 3; ++e) {
+          const Point &p = *V[e], &q = *V[(e + 1) % 3];
+          const double lo = std::max(sa, std::min(p.y(), q.y())), hi = std::min(sb, std::max(p.y(), q.y()));
+          if (lo > hi) continue;
+          for (double y : {lo, hi}) {
+            const double x = p.y() == q.y() ? p.x() : p.x() + (q.x() - p.x()) * ((y - p.y()) / (q.y() - p.y()));
+            xlo = std::min(xlo, x), xhi = std::max(xhi, x);
+          }
+          if (p.y() == q.y()) xlo = std::min(xlo, q.x()), xhi = std::max(xhi, q.x());
+        }
+        if (!(xlo <= xhi)) continue;
+        std::uint32_t i0 = cx(xlo), i1 = cx(xhi);
+        i0 = i0 ? i0 - 1 : 0, i1 = std::min(gx_ - 1, i1 + 1);
         for (std::uint32_t i = i0; i <= i1; ++i) {
-          std::size_t c = std::size_t(j) * gx_ + i;
+          const std::size_t c = std::size_t(j) * gx_ + i;
           if (pass == 0) ++cell_off_[c + 1];
           else cell_tris_[fill[c]++] = t;
         }
+      }
     }
   }
 }

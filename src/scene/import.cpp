@@ -9,12 +9,7 @@
 namespace preimage::scene {
 
 Scene import_houseexpo(const std::string& text, const std::string& source) {
-  nlohmann::json doc;
-  try {
-    doc = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(source + ": JSON syntax error at byte " + std::to_string(e.byte));
-  }
+  nlohmann::json doc = parse_json(text, source);
   if (!doc.is_object() || !doc.contains("verts")) throw InputError(source + ": $: not a HouseExpo plan (no \"verts\")");
   const auto& verts = doc["verts"];
   if (!verts.is_array()) throw InputError(source + ": $.verts: expected an array of [x, y]");
@@ -91,5 +86,9 @@ Scene import_visilibity(const std::string& text, const std::string& source) {
   }
   return s;
 }
+
+Scene import_houseexpo(const std::string& path) { return import_houseexpo(read_file(path), path); }
+
+Scene import_visilibity(const std::string& path) { return import_visilibity(read_file(path), path); }
 
 }  // namespace preimage::scene

@@ -90,25 +90,7 @@ json point_json(const Point& p) { return json::array({p.x(), p.y()}); }
 }  // namespace
 
 Scene parse_scene(const std::string& text, const std::string& source) {
-  json doc;
-  try {
-    doc = json::parse(text);
-  } catch (const json::parse_error& e) {
-    // byte is 1-based position of the error: turn it into line:column.
-    std::size_t line = 1, col = 1;
-    for (std::size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) {
-      if (text[i] == '\n') ++line, col = 1;
-      else ++col;
-    }
-    std::string what = e.what();
-    auto colon = what.rfind(": ");
-    throw InputError(source + ":" + std::to_string(line) + ":" + std::to_string(col) + ": JSON syntax error: " +
-                     (colon == std::string::npos ? what : what.substr(colon + 2)));
-  } catch (const json::exception& e) {  // e.g. a number too large for a double
-    std::string what = e.what();
-    auto bracket = what.find("] ");
-    throw InputError(source + ": JSON error: " + (bracket == std::string::npos ? what : what.substr(bracket + 2)));
-  }
+  json doc = parse_json(text, source);
   Scene s;
   s.source = source;
   allow_keys(doc, "$", {"name", "description", "environment", "start", "goal", "robot", "landmarks", "beams", "imaginary_beams", "tracking"});
@@ -260,7 +242,8 @@ json to_json(const Scene& s) {
 void save_scene(const Scene& s, const std::string& path) {
   std::ofstream out(path);
   if (!out) throw InputError(path + ": cannot write file");
-  out << to_json(s).dump(2) << "\n";
+  // A name taken from a file name may not be UTF-8: its stray bytes become U+FFFD.
+  out << to_json(s).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
   if (!out) throw InputError(path + ": write error");
 }
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <preimage/error.hpp>
+#include <preimage/geometry/coordinates.hpp>
 #include <preimage/geometry/queries.hpp>
 #include <preimage/tracking/simulation.hpp>
 
@@ -56,7 +57,7 @@ TrackingScenario TrackingScenario::from_scene(const scene::Scene& sc) {
   TrackingScenario s;
   s.name = sc.name.empty() ? sc.source : sc.name;
   s.environment = &env;
-  s.observer = Pose{*t.observer, t.heading * M_PI / 180};
+  s.observer = Pose{*t.observer, geometry::radians_from_degrees(t.heading)};
   s.target = Disc{*t.target, t.target_radius};
   s.target_speed = t.target_speed;
   s.target_path = t.target_path;

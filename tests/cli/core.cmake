@@ -94,3 +94,13 @@ cli_test(unknown_subcommand_did_you_mean fail "unknown command 'navigte' for 'pr
 cli_test(unknown_command_lists_commands fail "unknown command 'xyzzy' for 'preimage'. commands: .*visibility" - xyzzy)
 cli_test(import_plural_obstacles 0 "wrote .*: 147 vertices, 0 obstacles" ${OUT}/house0000_plural.json
          import ${FLOORPLANS}/house_expo_room_0000.json --from houseexpo -o ${OUT}/house0000_plural.json)
+
+# Issue 26: file names that are not UTF-8 went through JSON unescaped (internal error).
+add_test(NAME cli.non_utf8_file_names COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/cli/non_utf8_name.sh $<TARGET_FILE:preimage_cli> ${FIX} ${OUT}/non-utf8)
+# Issue 26: a number beyond the range of doubles was an internal error; now an input error naming its JSON path.
+cli_test(import_houseexpo_number_overflow fail "number_overflow\\.json: \\$\\.verts\\[2\\]\\[1\\]: number 1e400 is outside the range of doubles$" -
+         import ${FIX}/houseexpo/number_overflow.json --from houseexpo -o ${OUT}/never.json)
+cli_test(validate_number_overflow fail "\\$\\.environment\\.boundary\\[1\\]\\[0\\]: number -1e400 is outside the range of doubles$" -
+         validate ${FIX}/scenes/number_overflow.json)
+cli_test(import_houseexpo 0 "wrote .*: 6 vertices, 0 obstacles" ${OUT}/l_shape.json import ${FIX}/houseexpo/l_shape.json --from houseexpo -o ${OUT}/l_shape.json)
+cli_test(import_missing_file fail "nope\\.json: cannot open file$" - import ${FIX}/nope.json --from houseexpo -o ${OUT}/never.json)

@@ -19,3 +19,6 @@ cli_test(wallfollow_collinear fail "vertices 0, 1 and 2 are collinear" - wallfol
 cli_test(wallfollow_obstacles fail "needs a simply connected environment" - wallfollow count ${EXAMPLES}/gallery.json)
 cli_test(wallfollow_start_outside fail "start \\(9, 9\\) is not in the environment" - wallfollow count ${WF}/fig03_two_reflex.json --start 9,9)
 cli_test(wallfollow_bad_sort fail "--sort: expected quick or all-pairs" - wallfollow cut-ordering ${WF}/fig03_two_reflex.json --learn --sort bubble)
+# Issue 26: 1e308 degrees overflowed to an infinite angle in radians (NaN heading, SIGFPE in GMP).
+cli_test(wallfollow_count_huge_heading 0 "vertex count 6 \\(k8, Prop. 2\\)" - wallfollow count ${WF}/fig03_two_reflex.json --heading 1e308)
+cli_test(wallfollow_simulate_huge_heading 0 "stage 2: " - wallfollow simulate ${WF}/fig03_two_reflex.json --start 3,2 --heading -1e308 --actions "INIT")

@@ -2,8 +2,13 @@
 #include <preimage/error.hpp>
 #include <preimage/geometry/generators.hpp>
 
+#include <CGAL/Polygon_2_algorithms.h>
+
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <random>
+#include <set>
 
 using namespace preimage;
 using namespace preimage::geometry;
@@ -84,4 +89,56 @@ TEST(Environment, EdgesKeepTheirInputNumbersWhenARingIsReversed) {
     const Point &p = env.vertex(e), &q = env.vertex(env.next(e));
     EXPECT_TRUE((a == p && b == q) || (a == q && b == p)) << "edge " << e << " reported as input edge " << k;
   }
+}
+
+// Which ring holds a hole is decided by rays through y-buckets (it was one CGAL
+// bounded_side_2 per pair of rings, quadratic in the holes: an office of 16,640 walls took
+// minutes). Against that definition on grids of small squares where some squares sit inside
+// others or outside the boundary, with vertices level with other holes' vertices (the
+// half-open rule of the ray test).
+TEST(Environment, HoleNestingMatchesBoundedSideOnEveryPair) {
+  std::mt19937_64 rng(11);
+  int refused = 0, accepted = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const Ring outer{{0, 0}, {40, 0}, {40, 40}, {20, 41}, {0, 40}};
+    std::vector<Ring> holes;
+    std::uniform_int_distribution<int> cell(0, 9), coin(0, 19);
+    std::set<std::pair<int, int>> used;
+    const int count = 1 + static_cast<int>(rng() % 12);
+    for (int k = 0; k < count; ++k) {
+      const int cx = cell(rng), cy = cell(rng);
+      if (!used.insert({cx, cy}).second) continue;
+      const double x = 4 * cx + 0.5, y = 4 * cy + 0.5;
+      holes.push_back({{x, y}, {x + 3, y}, {x + 3, y + 3}, {x, y + 3}});
+      const int c = coin(rng);
+      if (c == 0) holes.push_back({{x + 1, y + 1}, {x + 2, y + 1}, {x + 1.5, y + 2}});  // inside the square just added
+      if (c == 1) holes.push_back({{x + 50, y}, {x + 51, y}, {x + 50, y + 1}});           // outside the boundary
+    }
+    std::shuffle(holes.begin(), holes.end(), rng);
+    // The definition: the first hole (in input order) with a vertex outside the boundary or
+    // strictly inside another hole, the smallest such other hole.
+    std::string want;
+    for (std::size_t h = 0; h < holes.size() && want.empty(); ++h) {
+      if (CGAL::bounded_side_2(outer.begin(), outer.end(), holes[h][0], Kernel()) != CGAL::ON_BOUNDED_SIDE) {
+        want = "obstacles[" + std::to_string(h) + "]: lies outside boundary";
+        break;
+      }
+      for (std::size_t g = 0; g < holes.size(); ++g)
+        if (g != h && CGAL::bounded_side_2(holes[g].begin(), holes[g].end(), holes[h][0], Kernel()) == CGAL::ON_BOUNDED_SIDE) {
+          want = "obstacles[" + std::to_string(h) + "]: lies inside obstacles[" + std::to_string(g) + "]";
+          break;
+        }
+    }
+    EXPECT_EQ(error_of(outer, holes), want) << "trial " << trial;
+    (want.empty() ? accepted : refused)++;
+  }
+  EXPECT_GT(accepted, 50);
+  EXPECT_GT(refused, 50);
+}
+
+TEST(Environment, OfficeOfSixteenThousandWallsIsBuiltAndItsAreaIsExact) {
+  const auto office = generators::office(65, 65);
+  EXPECT_EQ(office.num_holes(), 16640u);
+  // 260 x 260 less 16,640 walls of 1 x 0.2 (generators::office with rooms of side 4).
+  EXPECT_NEAR(CGAL::to_double(office.exact_area()), 260.0 * 260.0 - 16640 * 0.2, 1e-6);
 }

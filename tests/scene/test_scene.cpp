@@ -38,7 +38,7 @@ TEST(Scene, ErrorsNameTheJsonPath) {
   EXPECT_EQ(error_of(R"({"environment": {"boundary": [[0,0],[1,0],[1]]}})"),
             "$.environment.boundary[2]: expected [x, y], got an array of 1");
   EXPECT_EQ(error_of(R"({"environment": {}})"), "$.environment: missing key \"boundary\"");
-  EXPECT_EQ(error_of(R"({"start": [0, 1e999]})"), "t.json: JSON error: number overflow parsing '1e999'");
+  EXPECT_EQ(error_of(R"({"start": [0, 1e999]})"), "t.json: $.start[1]: number 1e999 is outside the range of doubles");
   EXPECT_EQ(error_of(R"({"robot": {"radius": -1}})"), "$.robot.radius: must not be negative");
   EXPECT_EQ(error_of(R"({"beams": [{"label": "a", "from": [0,0]}]})"), "$.beams[0]: missing key \"to\"");
   EXPECT_EQ(error_of(R"({"beams": [{"label": "a", "from": [0,0], "to": [1,1], "directed": "yes"}]})"),
@@ -109,4 +109,48 @@ TEST(Import, RealHouseExpoFloorPlansMatchCgalVisibility) {
     }
     EXPECT_EQ(compared, 230);
   }
+}
+
+// A number beyond the range of doubles is found by the JSON parser, which gives no path:
+// parse_json finds it (issue 26: "internal error: number overflow parsing '1e400'").
+TEST(Scene, NumberOverflowNamesTheJsonPath) {
+  auto error = [](const std::string& text) {
+    try {
+      scene::parse_json(text, "t.json");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(error("1e400"), "t.json: $: number 1e400 is outside the range of doubles");
+  EXPECT_EQ(error("[1e400]"), "t.json: $[0]: number 1e400 is outside the range of doubles");
+  EXPECT_EQ(error(R"({"x": -1e999})"), "t.json: $.x: number -1e999 is outside the range of doubles");
+  EXPECT_EQ(error(R"({"a": {"b": [1, [2, 1.5e308, 1e309]]}})"), "t.json: $.a.b[1][2]: number 1e309 is outside the range of doubles");
+  EXPECT_EQ(error(R"({"a": [{"b": 1}, {"c": [], "d": 2E+400}]})"), "t.json: $.a[1].d: number 2E+400 is outside the range of doubles");
+  EXPECT_EQ(error(R"([[], {}, "1e400", null, true, 7, -1, 1e400])"), "t.json: $[7]: number 1e400 is outside the range of doubles");
+  EXPECT_EQ(error("{\n  \"a\": 1,\n  oops\n}").rfind("t.json:3:3: JSON syntax error", 0), 0u);
+  EXPECT_EQ(scene::parse_json("[1e308, 1e-400]", "t.json")[0].get<double>(), 1e308);
+}
+
+TEST(Import, HouseExpoNumberOverflowNamesTheJsonPath) {
+  const std::string path = fixture("houseexpo/number_overflow.json");
+  try {
+    scene::import_houseexpo(path);
+    ADD_FAILURE() << "imported " << path;
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), path + ": $.verts[2][1]: number 1e400 is outside the range of doubles");
+  }
+}
+
+// The one-argument importers read the file (issue 25, defect 6: a path given to the text
+// form was "JSON syntax error at byte 1").
+TEST(Import, HouseExpoFromAPath) {
+  const auto s = scene::import_houseexpo(fixture("houseexpo/l_shape.json"));
+  ASSERT_TRUE(s.environment);
+  EXPECT_EQ(s.name, "l_shape");
+  EXPECT_EQ(s.description, "HouseExpo floor plan (kitchen)");
+  EXPECT_EQ(s.environment->num_vertices(), 6u);  // the repeated closing vertex dropped
+  EXPECT_EQ(s.environment->exact_area(), geometry::ExactFT(12));
+  EXPECT_EQ(scene::import_houseexpo(scene::read_file(fixture("houseexpo/l_shape.json")), "x").environment->vertices(),
+            s.environment->vertices());
 }

@@ -58,6 +58,7 @@ class Alphabet {
 class WordReader {
  public:
   WordReader(const Alphabet& alphabet, std::istream& in) : alpha_(&alphabet), in_(&in) {}
+  WordReader(Alphabet&&, std::istream&) = delete;  // keeps a pointer to the alphabet
   /// Next observation, or false at end of stream.
   bool next(Symbol& y, std::string* token = nullptr);
   std::size_t observations() const { return count_; }

@@ -113,6 +113,7 @@ class LoopBasis {
 class BasisWordFilter {
  public:
   explicit BasisWordFilter(const LoopBasis& basis);
+  BasisWordFilter(LoopBasis&&) = delete;  // keeps a pointer to the basis
   void step(Symbol y) {
     const Letter x = basis_->letter(y);
     if (x == 0) return;
@@ -142,6 +143,10 @@ class GraphEmbedding {
  public:
   /// Needs a sufficient collection (require_sufficient) for the classes to be right.
   GraphEmbedding(const BeamArrangement& arrangement, const LoopBasis& basis);
+  // Keeps pointers to both.
+  GraphEmbedding(BeamArrangement&&, const LoopBasis&) = delete;
+  GraphEmbedding(const BeamArrangement&, LoopBasis&&) = delete;
+  GraphEmbedding(BeamArrangement&&, LoopBasis&&) = delete;
   const BeamArrangement& arrangement() const { return *A_; }
   const LoopBasis& basis() const { return *basis_; }
   /// Crossings from `region` observing y, one per distinct (to, word).

@@ -38,6 +38,8 @@ class RegionFilter {
  public:
   RegionFilter(const BeamArrangement& arrangement, const std::vector<std::uint32_t>& initial = {},
                FilterMode mode = FilterMode::Plain, std::size_t cache_bytes = std::size_t(64) << 20);
+  // Keeps a pointer to the arrangement's transition system.
+  RegionFilter(BeamArrangement&&, const std::vector<std::uint32_t>& = {}, FilterMode = FilterMode::Plain, std::size_t = 0) = delete;
   /// One observation; false once no region explains the word so far.
   bool step(Symbol y);
   std::vector<std::uint32_t> regions() const;

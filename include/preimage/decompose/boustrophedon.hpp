@@ -51,6 +51,7 @@ class BoustrophedonDecomposition {
   /// of 90 degrees rotate exactly; others rotate the input coordinates once, in double,
   /// and decompose that environment exactly (its validity is re-checked).
   explicit BoustrophedonDecomposition(const Environment& env, double angle_deg = 0);
+  BoustrophedonDecomposition(Environment&&, double = 0) = delete;  // keeps a pointer to the input
 
   /// The environment actually swept (the input rotated by -angle into sweep coordinates).
   const Environment& sweep_environment() const { return *rotated_; }

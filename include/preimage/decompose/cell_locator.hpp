@@ -13,6 +13,7 @@ namespace preimage::decompose {
 class CellLocator {
  public:
   explicit CellLocator(const TrapezoidalDecomposition& d);
+  CellLocator(TrapezoidalDecomposition&&) = delete;  // keeps a pointer to the decomposition
   /// The cell whose closure contains q, or none when q is not in closed free space.
   /// A point on an extension belongs to two cells; either may be returned.
   std::optional<std::uint32_t> locate(const Point& q) const;

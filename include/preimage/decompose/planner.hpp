@@ -4,6 +4,7 @@
 // a collision-free polyline; optionally shortened with exact visibility checks.
 #pragma once
 #include <preimage/decompose/cell_locator.hpp>
+#include <preimage/geometry/visibility.hpp>
 
 #include <optional>
 #include <string>
@@ -24,7 +25,9 @@ class TrapezoidalPlanner {
   /// Throws InputError when start or goal is not in free space (naming which and where).
   /// `found` is false when the cell graph does not connect them (the free space of a valid
   /// Environment is connected, so today that means start and goal were both rejected first).
-  Plan plan(const Point& start, const Point& goal, bool shorten = true) const;
+  /// Shortening asks exact visibility of `index` (of the same environment) when given,
+  /// else of one it builds: O(k) per segment for the k triangles it crosses, not O(n).
+  Plan plan(const Point& start, const Point& goal, bool shorten = true, const geometry::VisibilityIndex* index = nullptr) const;
 
   const CellLocator& locator() const { return locator_; }
   /// Double approximations used for the path (midpoint of an extension, cell centroid).

@@ -41,6 +41,7 @@ struct Extension {
 class TrapezoidalDecomposition {
  public:
   explicit TrapezoidalDecomposition(const Environment& env);
+  TrapezoidalDecomposition(Environment&&) = delete;  // keeps a pointer to the environment
 
   const Environment& environment() const { return *env_; }
   const std::vector<Trapezoid>& cells() const { return cells_; }

@@ -21,6 +21,8 @@ class ProductFilter {
   /// empty (then the number of states must keep that set small).
   ProductFilter(const TransitionSystem& system, std::size_t bodies, bool distinguishable,
                 const std::vector<Assignment>& initial = {});
+  // Keeps a pointer to the system.
+  ProductFilter(TransitionSystem&&, std::size_t, bool, const std::vector<Assignment>& = {}) = delete;
 
   /// Every tuple of `bodies` states drawn from `states` (the n-fold product).
   static std::vector<Assignment> all_assignments(const std::vector<State>& states, std::size_t bodies);

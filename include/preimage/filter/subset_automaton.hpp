@@ -20,6 +20,7 @@ class SubsetAutomaton {
 
   /// `max_bytes` bounds the table rows plus the stored I-states (at least one row).
   explicit SubsetAutomaton(const TransitionSystem& system, std::size_t max_bytes = std::size_t(64) << 20);
+  SubsetAutomaton(TransitionSystem&&, std::size_t = 0) = delete;  // keeps a pointer to the system
 
   /// Id of the I-state `sorted_states` (sorted, no duplicates), interning it if new.
   Id intern(const std::vector<State>& sorted_states);

@@ -14,6 +14,7 @@ class SubsetFilter {
  public:
   /// Starts from `initial` (any order, duplicates ignored) or, if empty, from all states.
   explicit SubsetFilter(const TransitionSystem& system, const std::vector<State>& initial = {});
+  SubsetFilter(TransitionSystem&&, const std::vector<State>& = {}) = delete;  // keeps a pointer to the system
 
   /// One observation. Returns false if the I-state became empty (no state explains it).
   bool step(Symbol y);

@@ -26,6 +26,7 @@ class ConfigurationSpace {
   /// r >= 0; r == 0 gives the free space itself (one component, the environment). Throws
   /// InputError if r is negative or not finite.
   ConfigurationSpace(const Environment& workspace, double radius);
+  ConfigurationSpace(Environment&&, double) = delete;  // keeps a pointer to the workspace
   ~ConfigurationSpace();
   ConfigurationSpace(ConfigurationSpace&&) noexcept;
   ConfigurationSpace& operator=(ConfigurationSpace&&) noexcept;

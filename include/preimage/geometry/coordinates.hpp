@@ -29,4 +29,8 @@ inline std::string coordinate_problem(double v) {
   return {};
 }
 
+/// Degrees to radians for any finite angle: reduced modulo 360 first (fmod is exact), since
+/// 1e308 degrees in radians overflows to infinity, whose sine and cosine are NaN.
+inline double radians_from_degrees(double degrees) { return std::fmod(degrees, 360.0) * (M_PI / 180); }
+
 }  // namespace preimage::geometry

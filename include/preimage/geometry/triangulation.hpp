@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 // Constrained Delaunay triangulation of an Environment (outer boundary with holes),
-// built without CGAL's GPL triangulation packages:
-//   1. y-monotone partition by plane sweep (de Berg et al., Computational Geometry,
-//      ch. 3), ties broken lexicographically so equal y and horizontal edges are fine;
-//   2. each monotone piece ear-clipped with strict exact tests, so collinear vertices
-//      never yield zero-area triangles;
-//   3. Lawson edge flips with the exact in-circle predicate until every interior
-//      edge is locally Delaunay.
+// built without CGAL's GPL triangulation packages (src/geometry/constrained_delaunay.cpp):
+//   1. Delaunay triangulation of the vertices by randomised incremental insertion with
+//      Lawson flips, exact in-circle and orientation predicates;
+//   2. every environment edge forced in, the pseudo-polygons on its sides re-triangulated
+//      by their Delaunay vertices (Anglada);
+//   3. the triangles outside free space dropped.
+// O(n log n) expected, collinear runs and cocircular vertices included.
 #pragma once
 #include <preimage/geometry/environment.hpp>
 
@@ -27,6 +27,7 @@ struct Triangle {
 class Triangulation {
  public:
   explicit Triangulation(const Environment& env);
+  Triangulation(Environment&&) = delete;  // keeps a pointer to the environment
 
   const Environment& environment() const { return *env_; }
   const std::vector<Triangle>& triangles() const { return tris_; }
@@ -42,12 +43,7 @@ class Triangulation {
   std::size_t non_delaunay_edges() const;
 
  private:
-  void monotone_partition(std::vector<std::pair<std::uint32_t, std::uint32_t>>& diagonals) const;
-  void triangulate_pieces(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& diagonals);
   void link();
-  void make_delaunay();
-  bool illegal(std::uint32_t t, int i) const;
-  void flip(std::uint32_t t, int i);
 
   const Environment* env_;
   std::vector<Triangle> tris_;

@@ -57,6 +57,7 @@ ExactPoint exact_point(const Environment& env, const ExactPoint& query, const Vi
 class VisibilityIndex {
  public:
   explicit VisibilityIndex(const Environment& env);
+  VisibilityIndex(Environment&&) = delete;  // keeps a pointer to the environment
   const Environment& environment() const { return *env_; }
   const Triangulation& triangulation() const { return tri_; }
 

@@ -77,4 +77,9 @@ void save_scene(const Scene& scene, const std::string& path);
 /// Reads a whole file, or throws InputError naming it.
 std::string read_file(const std::string& path);
 
+/// JSON text to a document. Throws InputError "source:line:column: JSON syntax error: ..."
+/// or, for a number a double cannot hold, "source: $.verts[3][1]: number 1e400 is outside
+/// the range of doubles". Every reader of JSON input goes through it.
+nlohmann::json parse_json(const std::string& text, const std::string& source);
+
 }  // namespace preimage::scene

@@ -51,6 +51,7 @@ struct TrackingScenario {
   double target_speed = 0.5;
   std::vector<Point> target_path;
   static TrackingScenario from_scene(const scene::Scene& scene);
+  static TrackingScenario from_scene(scene::Scene&&) = delete;  // keeps a pointer to the environment
 };
 
 /// What the observer computed on one step, handed to SimulationParams::on_step.

@@ -67,6 +67,8 @@ class Simulator final : public RobotInterface {
   /// require_general_position (checked by the callers that load scenes).
   Simulator(const geometry::Environment& env, const geometry::Point& start, const geometry::Vector& heading,
             std::optional<Place> pebble = std::nullopt);
+  // Keeps a pointer to the environment.
+  Simulator(geometry::Environment&&, const geometry::Point&, const geometry::Vector&, std::optional<Place> = std::nullopt) = delete;
 
   Observation apply(Action u) override;
   Observation sense() const override;
