@@ -63,16 +63,22 @@ void search(const Position& start, const OrderingMap& m, Crossings&& crossings, 
   rep.outcome = r.outcome;
   rep.plan = r.plan;
   rep.states = r.states;
+  rep.labels_along.clear();
   for (auto& b : r.along) rep.labels_along.push_back(describe(m, b));
 }
 
 }  // namespace
 
 void search_compounds(const Position& start, const OrderingMap& m, const std::vector<KnownBitangent>& bitangents,
-                     std::size_t max_states, PursuitReport& rep) {
+                      std::size_t max_states, PursuitReport& rep) {
   rep.bitangents = bitangents.size();
-  search(start, m, [&](const Position& from, Action, const Position& to) { return crossings_of(m, bitangents, from.at, to.at); },
-         max_states, rep);
+  // The crossings of each move depend on its ends only: decided once.
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<RayCrossing>> memo;
+  search(start, m, [&](const Position& from, Action, const Position& to) -> const std::vector<RayCrossing>& {
+    auto [it, fresh] = memo.try_emplace({from.at, to.at});
+    if (fresh) it->second = crossings_of(m, bitangents, from.at, to.at);
+    return it->second;
+  }, max_states, rep);
 }
 
 void bitangent_sensor_strategy(Navigator& nav, const OrderingMap& m, std::size_t max_states, PursuitReport& rep) {

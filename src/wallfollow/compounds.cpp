@@ -48,7 +48,7 @@ std::pair<std::vector<PrimitiveId>, std::vector<PrimitiveId>> proposition9_sets(
 
 CompoundState compound_transition(const OrderingMap& m, std::uint32_t from, const CompoundState& s, std::uint32_t to,
                                   const std::vector<RayCrossing>& crossings) {
-  const std::vector<PrimitiveId> A = m.active(from);
+  const std::vector<PrimitiveId>& A = m.active(from);
   if (s.compound.size() != A.size()) throw std::invalid_argument("compound_transition: state does not match the active set");
   // Working form: a compound id per active primitive and a label per id.
   std::vector<std::uint32_t> id(s.compound.begin(), s.compound.end());
@@ -73,7 +73,7 @@ CompoundState compound_transition(const OrderingMap& m, std::uint32_t from, cons
     }
   }
   // 2. Primitives that became active are clear; inactive ones leave their compounds.
-  const std::vector<PrimitiveId> B = m.active(to);
+  const std::vector<PrimitiveId>& B = m.active(to);
   std::vector<std::uint32_t> id2(B.size());
   for (std::size_t k = 0; k < B.size(); ++k) {
     const long a = index_in(A, B[k]);

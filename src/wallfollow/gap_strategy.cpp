@@ -61,28 +61,35 @@ void gap_strategy(Navigator& nav, const OrderingMap& m, std::size_t max_states, 
     note(to.at, y.gaps);
     events[mo] = y.gap_events;
   });
-  std::map<Motion, filter::ShadowTransition> T;
+  auto table = std::make_shared<GapTable>();
+  table->gaps_at = gaps_at;
   for (auto& [mo, ev] : events) {
     if (gaps_at[mo.at] < 0) throw std::logic_error("gap strategy: a motion from a point never reached");
     const auto e = compose(static_cast<std::size_t>(gaps_at[mo.at]), ev);
     const Position to = *m.move(Position{mo.at, static_cast<std::int8_t>(mo.u == Action::Jump ? mo.arrived : 0)}, mo.u);
     if (e.after != static_cast<std::size_t>(gaps_at[to.at])) throw std::runtime_error("gap sensor: a motion ends with a wrong count");
-    T.emplace(mo, filter::ShadowTransition(e));
+    table->transitions.emplace(mo, filter::ShadowTransition(e));
   }
-  const GapState start{nav.at(), filter::ShadowLabels(static_cast<std::size_t>(gaps_at[nav.at().at]), true)};
+  search_gap(nav.at(), m, *table, max_states, rep);
+  rep.gap_table = std::move(table);
+}
+
+void search_gap(const Position& start_at, const OrderingMap& m, const GapTable& table, std::size_t max_states, PursuitReport& rep) {
+  const GapState start{start_at, filter::ShadowLabels(static_cast<std::size_t>(table.gaps_at.at(start_at.at)), true)};
   auto r = breadth_first<GapState, GapStateHash>(
       start,
       [&](const GapState& s, auto&& emit) {
         for (Action u : {Action::RFollow, Action::LFollow, Action::Jump}) {
           const auto q = m.move(s.p, u);
           if (!q) continue;
-          emit(u, GapState{*q, T.at(motion_of(s.p, u)).apply(s.labels)});
+          emit(u, GapState{*q, table.transitions.at(motion_of(s.p, u)).apply(s.labels)});
         }
       },
       [](const GapState& s) { return s.labels.all_clear(); }, max_states);
   rep.outcome = r.outcome;
   rep.plan = r.plan;
   rep.states = r.states;
+  rep.labels_along.clear();
   for (auto& s : r.along) rep.labels_along.push_back(m.name(s.p.at) + " " + s.labels.str());
 }
 

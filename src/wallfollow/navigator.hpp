@@ -11,15 +11,6 @@
 
 namespace preimage::wallfollow {
 
-/// A motion: from point `at` by `u`; for JUMP also the arrival that picks the cut.
-struct Motion {
-  std::uint32_t at = 0;
-  Action u = Action::RFollow;
-  std::int8_t arrived = 0;  // JUMP only
-  auto operator<=>(const Motion&) const = default;
-};
-Motion motion_of(const Position& p, Action u);
-
 class Navigator {
  public:
   Navigator(RobotInterface& robot, const OrderingMap& map, Position at, std::optional<std::uint32_t> pebble);

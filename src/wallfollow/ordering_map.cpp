@@ -31,6 +31,15 @@ OrderingMap::OrderingMap(CutOrdering o) : o_(std::move(o)) {
     if (!o_.reflex[(v + 1) % n]) primitives_.push_back(2 * v);
   }
   std::sort(primitives_.begin(), primitives_.end());
+  active_.resize(o_.points.size());
+  for (std::uint32_t k = 0; k < o_.points.size(); ++k) {
+    const std::uint64_t x = key(k);
+    for (PrimitiveId p : primitives_) {
+      const std::uint32_t v = p / 2;
+      const bool on = p % 2 ? in_arc(x, key(vertex(v)), key(cut(v, false))) : in_arc(x, key(cut(v, true)), key(vertex(v)));
+      if (on) active_[k].push_back(p);
+    }
+  }
 }
 
 std::string OrderingMap::name(std::uint32_t k) const {
@@ -72,16 +81,6 @@ bool OrderingMap::in_arc(std::uint64_t x, std::uint64_t a, std::uint64_t b) cons
   return ax > 0 && ax < ccw(a, b);
 }
 
-std::vector<PrimitiveId> OrderingMap::active(std::uint32_t k) const {
-  std::vector<PrimitiveId> out;
-  const std::uint64_t x = key(k);
-  for (PrimitiveId p : primitives_) {
-    const std::uint32_t v = p / 2;
-    const bool on = p % 2 ? in_arc(x, key(vertex(v)), key(cut(v, false))) : in_arc(x, key(cut(v, true)), key(vertex(v)));
-    if (on) out.push_back(p);
-  }
-  return out;
-}
 
 bool OrderingMap::on_right_side(std::uint32_t i, std::uint32_t j) const {
   return in_arc(key(vertex(j)), key(vertex(i)), key(cut(i, false)));

@@ -6,6 +6,8 @@
 #include <preimage/wallfollow/sensors.hpp>
 
 #include <cctype>
+#include <climits>
+#include <map>
 #include <cmath>
 
 namespace preimage::wallfollow {
@@ -100,6 +102,13 @@ struct SensorState {
   std::vector<VertexLine> lines;
   std::vector<Bitangent> bitangents;
   TrueCuts cuts;
+  struct Cached {
+    std::size_t gaps = 0;
+    std::vector<filter::ShadowEvent> gap_events;
+    std::vector<BitangentCrossing> bitangents;
+    bool has_gap = false, has_bitangent = false;
+  };
+  std::map<std::pair<long, long>, Cached> readings;  // by (start, end) place
 };
 
 Simulator::Simulator(const geometry::Environment& env, const geometry::Point& start, const geometry::Vector& heading,
@@ -206,6 +215,7 @@ Observation Simulator::apply(Action u) {
   const auto& E = *env_;
   const std::size_t from = path_.size() - 1;
   const bool held_before = holding_;
+  const Place start = robot_;
   switch (u) {
     case Action::Init:
       if (robot_.kind == Place::Kind::Interior) {
@@ -263,13 +273,13 @@ Observation Simulator::apply(Action u) {
   }
   ++actions_;
   if (!(path_.back() == robot_.point)) path_.push_back(robot_.point);
-  read_sensors(std::vector<geometry::ExactPoint>(path_.begin() + static_cast<long>(from), path_.end()), held_before);
+  read_sensors(std::vector<geometry::ExactPoint>(path_.begin() + static_cast<long>(from), path_.end()), held_before, start);
   return sense();
 }
 
 // The section VI readings of the action whose motion is `motion` (a polyline; one point
 // when the robot did not move).
-void Simulator::read_sensors(const std::vector<geometry::ExactPoint>& motion, bool held_before) {
+void Simulator::read_sensors(const std::vector<geometry::ExactPoint>& motion, bool held_before, const Place& start) {
   reading_ = Observation{};
   if (!state_) return;
   const auto& E = *env_;
@@ -286,6 +296,23 @@ void Simulator::read_sensors(const std::vector<geometry::ExactPoint>& motion, bo
     const auto V = state_->vis.compute(pebble_->point);
     reading_.pebble_visible = sees_during(V, robot_.point, robot_.point);
     reading_.pebble_seen = held_before || seen_along(pebble_->point);
+  }
+  // Gap and bitangent readings depend on the motion only: kept for motions between
+  // vertices and cut endpoints, which strategies repeat while walking about.
+  auto id = [](const Place& p) -> long {
+    if (p.kind == Place::Kind::Vertex) return static_cast<long>(p.index);
+    if (p.kind == Place::Kind::Edge && p.mark >= 0) return -2 - p.mark;
+    return LONG_MIN;
+  };
+  const auto key = std::make_pair(id(start), id(robot_));
+  const bool cacheable = key.first != LONG_MIN && key.second != LONG_MIN;
+  if (cacheable) {
+    const auto it = state_->readings.find(key);
+    if (it != state_->readings.end()) {
+      if (sensors_.gap) reading_.gaps = it->second.gaps, reading_.gap_events = it->second.gap_events;
+      if (sensors_.bitangent) reading_.bitangents = it->second.bitangents;
+      if ((!sensors_.gap || it->second.has_gap) && (!sensors_.bitangent || it->second.has_bitangent)) return;
+    }
   }
   if (sensors_.gap) {
     auto g = gap_reading(state_->vis, state_->lines, motion);
@@ -308,6 +335,11 @@ void Simulator::read_sensors(const std::vector<geometry::ExactPoint>& motion, bo
           if (c.edge == other.edge && CGAL::has_smaller_distance_to_point(E.exact_vertex(other.edge), c.end, other.point)) ++before;
         reading_.bitangents.push_back({rel(at_j ? t.j : t.i), rel(at_j ? t.i : t.j), rel(other.edge), before});
       }
+  }
+  if (cacheable) {
+    auto& c = state_->readings[key];
+    if (sensors_.gap) c.gaps = reading_.gaps, c.gap_events = reading_.gap_events, c.has_gap = true;
+    if (sensors_.bitangent) c.bitangents = reading_.bitangents, c.has_bitangent = true;
   }
 }
 

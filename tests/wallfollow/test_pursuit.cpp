@@ -6,6 +6,7 @@
 #include <preimage/geometry/queries.hpp>
 #include <preimage/pursuit/checker.hpp>
 #include <preimage/pursuit/search.hpp>
+#include <preimage/scene/scene.hpp>
 #include <preimage/wallfollow/environment.hpp>
 #include <preimage/wallfollow/pursuit.hpp>
 #include <preimage/wallfollow/sensors.hpp>
@@ -13,7 +14,10 @@
 #include <gtest/gtest.h>
 
 #include <iostream>
+#include <map>
 #include <random>
+#include <set>
+#include <sstream>
 
 using namespace preimage;
 using namespace preimage::wallfollow;
@@ -270,4 +274,190 @@ TEST(WallFollowPursuit, EveryStaticEvaderIsDetected) {
     }
   }
   EXPECT_GT(evaders, 30u);
+}
+
+namespace {
+// A room with two discs hanging from its floor and ceiling on necks: each disc's boundary
+// is a reflex chain of `k` vertices (its vertices on a circle at random angles).
+Environment two_discs(std::mt19937_64& rng, std::size_t k) {
+  std::uniform_real_distribution<double> u(0, 1);
+  geometry::Ring ring{{0, 0}};
+  auto disc = [&](double cx, double cy, double r, double from, double to) {
+    std::vector<double> a;
+    for (std::size_t s = 0; s < k; ++s) a.push_back(from + (to - from) * (s + 0.1 + 0.8 * u(rng)) / static_cast<double>(k));
+    std::sort(a.begin(), a.end(), [&](double x, double y) { return from < to ? x < y : x > y; });
+    for (double t : a) ring.emplace_back(cx + r * std::cos(t), cy + r * std::sin(t));
+  };
+  const double xa = 20 + 20 * u(rng), ra = 5 + 8 * u(rng), ya = 8 + ra + 10 * u(rng);
+  const double xb = 60 + 20 * u(rng), rb = 5 + 8 * u(rng), yb = 92 - rb - 10 * u(rng);
+  // Floor: up the neck's left side, clockwise around disc A, down its right side.
+  ring.emplace_back(xa - 1.3, 0);
+  disc(xa, ya, ra, 1.5 * M_PI - 0.25, -0.5 * M_PI + 0.25);
+  ring.emplace_back(xa + 1.3, 0);
+  ring.emplace_back(100, 0);
+  ring.emplace_back(100, 100);
+  // Ceiling, right to left: down the neck's right side, clockwise around disc B, up.
+  ring.emplace_back(xb + 1.1, 100);
+  disc(xb, yb, rb, 0.5 * M_PI - 0.25, -1.5 * M_PI + 0.25);
+  ring.emplace_back(xb - 1.1, 100);
+  ring.emplace_back(0, 100);
+  return Environment::make(ring, {});
+}
+
+// Maximal runs of consecutive reflex vertices (cyclic), as vertex lists.
+std::vector<std::vector<std::uint32_t>> reflex_chains(const Environment& env) {
+  const std::size_t n = env.num_vertices();
+  std::vector<std::vector<std::uint32_t>> out;
+  std::size_t s = 0;
+  while (s < n && env.is_reflex(s)) ++s;
+  for (std::size_t k = 1; k <= n; ++k) {
+    const std::uint32_t v = static_cast<std::uint32_t>((s + k) % n);
+    if (!env.is_reflex(v)) continue;
+    if (!env.is_reflex((v + n - 1) % n) || out.empty()) out.emplace_back();
+    out.back().push_back(v);
+  }
+  return out;
+}
+
+std::size_t most_bitangents_between_chains(const Environment& env) {
+  const auto chains = reflex_chains(env);
+  std::vector<long> chain_of(env.num_vertices(), -1);
+  for (std::size_t c = 0; c < chains.size(); ++c)
+    for (auto v : chains[c]) chain_of[v] = static_cast<long>(c);
+  std::map<std::pair<long, long>, std::size_t> count;
+  for (const Bitangent& b : bitangents(env))
+    if (chain_of[b.i] != chain_of[b.j]) ++count[{std::min(chain_of[b.i], chain_of[b.j]), std::max(chain_of[b.i], chain_of[b.j])}];
+  std::size_t most = 0;
+  for (auto& [pair, c] : count) most = std::max(most, c);
+  return most;
+}
+}  // namespace
+
+namespace {
+// A room with two curled hooks (spiral peninsulas, a few units thick) growing from its
+// floor and ceiling, each curling either way by 0.6 to 1.8 half-turns while its radius
+// shrinks: the outer side of each is a reflex chain turning more than half a turn, whose
+// tangent lines can cut through its own hull. Empty when the draw is not in general position.
+std::optional<Environment> two_hooks(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0, 1);
+  geometry::Ring ring{{0, 0}};
+  auto hook = [&](double bx, double by, double dir, bool floor) {
+    const double turn = M_PI * (0.6 + 1.2 * u(rng)), r0 = 15 + 15 * u(rng), shrink = 0.2 + 0.5 * u(rng), w = 1.5 + 2 * u(rng);
+    const std::size_t k = 8 + static_cast<std::size_t>(u(rng) * 14);
+    const double cx = bx, cy = by + (floor ? r0 : -r0), start = floor ? -M_PI / 2 : M_PI / 2;
+    std::vector<geometry::Point> outer, inner;
+    for (std::size_t s = 0; s <= k; ++s) {
+      const double f = static_cast<double>(s) / static_cast<double>(k), a = start + dir * turn * f, r = r0 * (1 - shrink * f);
+      outer.emplace_back(cx + r * std::cos(a) + 1e-3 * u(rng), cy + r * std::sin(a) + 1e-3 * u(rng));
+      inner.emplace_back(cx + (r - w) * std::cos(a) + 1e-3 * u(rng), cy + (r - w) * std::sin(a) + 1e-3 * u(rng));
+    }
+    // Out along one side and back along the other, free space on the left.
+    if (dir < 0) std::swap(outer, inner);
+    for (auto& p : inner) ring.push_back(p);
+    for (auto it = outer.rbegin(); it != outer.rend(); ++it) ring.push_back(*it);
+  };
+  hook(25 + 10 * u(rng), 0, u(rng) < 0.5 ? 1 : -1, true);
+  ring.emplace_back(100, 0);
+  ring.emplace_back(100, 100);
+  hook(65 + 10 * u(rng), 100, u(rng) < 0.5 ? 1 : -1, false);
+  ring.emplace_back(0, 100);
+  try {
+    auto env = Environment::make(ring, {});
+    require_general_position(env);
+    return env;
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+}
+}  // namespace
+
+TEST(WallFollowBitangents, Proposition18AtMostFourBetweenTwoReflexChains) {
+  std::mt19937_64 rng(18);
+  std::size_t four = 0, tried = 0;
+  for (int t = 0; t < 60; ++t) {
+    const auto env = two_discs(rng, 6 + static_cast<std::size_t>(t % 20));
+    ASSERT_EQ(reflex_chains(env).size(), 2u);
+    const std::size_t most = most_bitangents_between_chains(env);
+    EXPECT_LE(most, 4u) << "two discs, trial " << t;
+    four += most == 4;
+    ++tried;
+  }
+  EXPECT_GT(four, tried / 4) << "the bound is attained when the discs see each other";
+  std::size_t hooks = 0;
+  for (int t = 0; t < 300; ++t)
+    if (const auto env = two_hooks(rng)) {
+      ++hooks;
+      EXPECT_LE(most_bitangents_between_chains(*env), 4u) << "two hooks, trial " << t;
+    }
+  EXPECT_GT(hooks, 250u);
+  for (std::uint64_t seed = 1; seed <= 150; ++seed) {
+    const auto env = random_polygon(8 + seed % 60, 7000 + seed);
+    if (env) {
+      EXPECT_LE(most_bitangents_between_chains(*env), 4u) << "random polygon, seed " << 7000 + seed;
+    }
+  }
+}
+
+
+namespace {
+Environment example(const std::string& file) {
+  return scene::load_scene(std::string(PREIMAGE_EXAMPLES) + "/wallfollow/" + file).require_environment();
+}
+// "{L3 L6} {R9}": the true partition of the active primitives at point k.
+std::string partition_at(const Environment& env, const OrderingMap& m, const TrueCuts& cuts, std::uint32_t k) {
+  const geometry::VisibilityIndex vis(env);
+  std::string problem;
+  const auto part = true_partition(env, vis, m, cuts, k, problem);
+  const auto A = m.active(k);
+  std::ostringstream out;
+  for (std::uint16_t c = 0; c < A.size(); ++c) {
+    std::ostringstream group;
+    bool any = false;
+    for (std::size_t i = 0; i < A.size(); ++i)
+      if (part[i] == c) group << (any ? " " : "") << (A[i] % 2 ? 'R' : 'L') << A[i] / 2 + 1, any = true;
+    if (any) out << (out.tellp() > 0 ? " {" : "{") << group.str() << "}";
+  }
+  return out.str();
+}
+}  // namespace
+
+TEST(WallFollowPursuit, Fig9ThreeTeethShowEveryKindOfPartition) {
+  // Fig. 9 in spirit (the paper gives no coordinates): three isolated reflex vertices, the
+  // tips of teeth on the floor; from points along the walls their primitives are all
+  // apart, two merged, or all three merged, on the left and on the right.
+  const auto env = example("fig09_three_teeth.json");
+  const auto cuts = true_cut_ordering(env);
+  const OrderingMap m(cuts.ordering);
+  std::set<std::string> seen;
+  for (std::uint32_t k = 0; k < m.size(); ++k) seen.insert(partition_at(env, m, cuts, k));
+  // Fig. 9 lists nine partitions of three primitives; these are their counterparts here.
+  for (const char* want : {"{L3} {L6} {L9}", "{L6 L9}", "{L3 L6 L9}", "{R3} {L6 L9}", "{R3 R6} {L9}", "{R3} {L9}", "{R3 R6}",
+                           "{R3 R6 R9}", "{R3} {R6} {R9}"})
+    EXPECT_TRUE(seen.count(want)) << want;
+}
+
+TEST(WallFollowPursuit, Fig10SlidingPrimitiveIsNoGapEvent) {
+  // Fig. 10 in spirit: v5 and v6 are consecutive reflex vertices. Following edge v3-v4 the
+  // robot crosses l5, the cut extending edge v6-v5 (not an inflection: v6 is reflex). The
+  // shadow holding L6's pocket changes its gap from v6 to v5, yet the gap sensor reports
+  // no event, and Strategy 3 keeps the primitive L6 (no crossing changes A or pi(A)).
+  const auto env = example("fig10_sliding.json");
+  const auto cuts = true_cut_ordering(env);
+  const OrderingMap m(cuts.ordering);
+  ASSERT_EQ(m.ordering().str(), "(v1, r5, l6, v2, v3, l5, v4, v5, v6, v7, v8, r6)");
+  const geometry::VisibilityIndex vis(env);
+  auto gap_of_l6 = [&](std::uint32_t v) {  // the vertex at an end of the arc holding L6's germ
+    const BoundaryPoint g = boundary_vertex(env, 5, +1);
+    for (auto& arc : shadow_arcs(env, vis.compute(env.exact_vertex(v))))
+      if (in_open_arc(env, g, arc.from, arc.to))
+        for (std::uint32_t w : {4u, 5u})
+          if (arc.from.point == env.exact_vertex(w) || arc.to.point == env.exact_vertex(w)) return static_cast<int>(w);
+    return -1;
+  };
+  EXPECT_EQ(gap_of_l6(2), 5);  // from v3: the gap at v6
+  EXPECT_EQ(gap_of_l6(3), 4);  // from v4: the gap at v5
+  const auto reading = gap_reading(vis, vertex_lines(env), {env.exact_vertex(2), env.exact_vertex(3)});
+  EXPECT_TRUE(reading.events.empty()) << reading.events.size() << " events";
+  EXPECT_EQ(m.active(m.vertex(2)), m.active(m.vertex(3)));
+  EXPECT_TRUE(crossings_of(m, true_bitangents(env, m), m.vertex(2), m.vertex(3)).empty());
 }

@@ -25,6 +25,8 @@
 #include <preimage/wallfollow/robot.hpp>
 
 #include <cstdint>
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,6 +40,23 @@ struct Position {
   std::uint32_t at = 0;
   std::int8_t arrived = 0;
   bool operator==(const Position&) const = default;
+};
+
+/// A motion: from point `at` by `u`; for JUMP also the arrival that picks the cut.
+struct Motion {
+  std::uint32_t at = 0;
+  Action u = Action::RFollow;
+  std::int8_t arrived = 0;  // JUMP only
+  auto operator<=>(const Motion&) const = default;
+};
+Motion motion_of(const Position& p, Action u);
+
+/// What the gap sensor said about every motion (Strategy 2's exploration): the number of
+/// shadow components at each point, and each motion's events composed into one
+/// correspondence.
+struct GapTable {
+  std::vector<long> gaps_at;  // per point of the ordering
+  std::map<Motion, filter::ShadowTransition> transitions;
 };
 
 /// A primitive shadow component (VI.C): R_v or L_v of a reflex vertex v whose neighbour
@@ -80,7 +99,7 @@ class OrderingMap {
   /// The boundary germ inside the primitive (next to its vertex's edge it hides).
   std::uint64_t germ(PrimitiveId p) const { return p % 2 ? before_vertex(p / 2) : after_vertex(p / 2); }
   /// A(x): primitives active at point k (R_v on (v, r_v), L_v on (l_v, v)), ascending.
-  std::vector<PrimitiveId> active(std::uint32_t k) const;
+  const std::vector<PrimitiveId>& active(std::uint32_t k) const { return active_[k]; }
   /// v_j lies on the side of v_i where R_i is active, (v_i, r_i) (else on (l_i, v_i)).
   bool on_right_side(std::uint32_t i, std::uint32_t j) const;
 
@@ -88,6 +107,7 @@ class OrderingMap {
   CutOrdering o_;
   std::vector<std::uint32_t> vertex_at_, cut_at_, edge_of_;
   std::vector<PrimitiveId> primitives_;
+  std::vector<std::vector<PrimitiveId>> active_;
 };
 
 /// A bitangent as a strategy knows it: reflex vertices i, j and where its rays end (keys;
@@ -138,6 +158,11 @@ bool bitangent_candidate(const OrderingMap& m, std::uint32_t i, std::uint32_t j)
 /// Strategy 6's bitangents: every candidate, ends approximated by Propositions 13-15.
 std::vector<KnownBitangent> approximate_bitangents(const OrderingMap& m);
 
+/// Strategy 2's search over I_gap from `start` (every label 1). Fills outcome, plan,
+/// states and labels_along.
+struct PursuitReport;
+void search_gap(const Position& start, const OrderingMap& m, const GapTable& table, std::size_t max_states, PursuitReport& rep);
+
 /// Strategy 3's search over I_bit from `start` (every active primitive its own compound,
 /// labelled 1) with crossings decided from `bitangents` (Strategies 5 and 6). Fills
 /// outcome, plan, states, bitangents and labels_along.
@@ -162,8 +187,11 @@ struct PursuitReport {
   std::vector<Action> plan;
   std::size_t states = 0;         // I-states explored
   std::size_t bitangents = 0;     // known to the strategy: sensed (3), learned (5), candidates (6)
-  /// Strategy 2/3: readings of every motion; kept for figures: labels along the plan.
-  std::vector<std::string> labels_along;  // the I-state's labels after each plan action ("0110")
+  /// The I-state after each plan action (start first): labels ("v3 0110"), or compounds and
+  /// their labels ("v3 {L2 R5}:1 {L7}:0").
+  std::vector<std::string> labels_along;
+  /// Strategy 2: what the exploration read (for searching again, e.g. in benchmarks).
+  std::shared_ptr<const GapTable> gap_table;
 };
 
 /// Runs the chosen strategy through the robot interface: Strategy 1, then fetching the

@@ -135,7 +135,7 @@ class Simulator final : public RobotInterface {
 
  private:
   void follow(bool ccw);
-  void read_sensors(const std::vector<geometry::ExactPoint>& motion, bool held_before);
+  void read_sensors(const std::vector<geometry::ExactPoint>& motion, bool held_before, const Place& start);
   const geometry::Environment* env_;
   Place robot_;
   // Direction of motion: along an edge into the current place (edge index, ccw or not),
