@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 // preimage wallfollow simulate | count | cut-ordering | pursue | completeness
 #include "common.hpp"
+#include "wallfollow_pursuit_run.hpp"
 
 #include <preimage/error.hpp>
 #include <preimage/geometry/generators.hpp>
 #include <preimage/pursuit/checker.hpp>
-#include <preimage/pursuit/figures.hpp>
 #include <preimage/pursuit/search.hpp>
 #include <preimage/scene/scene.hpp>
 #include <preimage/wallfollow/cut_ordering.hpp>
@@ -13,7 +13,6 @@
 #include <preimage/wallfollow/imaps.hpp>
 #include <preimage/wallfollow/learn.hpp>
 #include <preimage/wallfollow/pursuit.hpp>
-#include <preimage/wallfollow/pursuit_figure.hpp>
 #include <preimage/wallfollow/robot.hpp>
 #include <preimage/wallfollow/sensors.hpp>
 
@@ -162,30 +161,6 @@ void run_cut_ordering(const std::string& file, bool learn, const std::string& so
 }
 
 // ---------------------------------------------------------------- pursue
-const char* strategy_name(PursuitSensor s) {
-  switch (s) {
-    case PursuitSensor::Gap: return "Strategy 2 (gap sensor)";
-    case PursuitSensor::Bitangent: return "Strategy 3 (bitangent sensor)";
-    case PursuitSensor::Pebble: return "Strategies 4 + 5 (pebble visibility)";
-    case PursuitSensor::None: return "Strategy 6 (no special sensor)";
-  }
-  return "?";
-}
-
-PursuitSensor parse_sensor(const std::string& s) {
-  for (PursuitSensor x : {PursuitSensor::Gap, PursuitSensor::Bitangent, PursuitSensor::Pebble, PursuitSensor::None})
-    if (s == to_string(x)) return x;
-  throw InputError("--sensor: expected gap, bitangent, pebble or none, got '" + s + "'");
-}
-
-Sensors sensors_of(PursuitSensor s) {
-  Sensors out;
-  out.gap = s == PursuitSensor::Gap;
-  out.bitangent = s == PursuitSensor::Bitangent;
-  out.pebble_visibility = s == PursuitSensor::Pebble;
-  return out;
-}
-
 struct PursueFlags {
   std::string file, start, sensor = "gap", svg;
   double heading = 0;
@@ -197,49 +172,19 @@ void run_pursue(const PursueFlags& F) {
   const PursuitSensor sensor = parse_sensor(F.sensor);
   const Setup S = load(F.file, F.start, F.heading);
   const auto& env = *S.scene.environment;
-  Simulator sim(env, S.start, S.heading);
-  sim.enable(sensors_of(sensor));
-  PursuitOptions o;
-  o.sensor = sensor;
-  o.max_states = F.max_states;
-  const PursuitReport rep = pursue(sim, o);
+  const PursuitRun run = run_pursuit(env, S.start, S.heading, sensor, F.max_states, !F.no_check, F.svg.empty() ? 0 : F.frames);
+  const PursuitReport& rep = run.rep;
+  const std::size_t v1 = run.v1;
+  const auto& check = run.check;
   const OrderingMap m(rep.learned.ordering);
-  // The robot's labels start at the vertex INIT reached: which scene vertex is its v1.
-  const TrueCuts T = true_cut_ordering(env);
-  std::size_t v1 = 0;
-  while (v1 < env.num_vertices() && !(T.ordering.relabelled(v1) == rep.learned.ordering)) ++v1;
-  if (v1 == env.num_vertices()) throw std::logic_error("wallfollow pursue: the learned cut ordering is not the true one");
   std::vector<std::string> actions;
   for (Action u : rep.plan) actions.push_back(to_string(u));
-  std::optional<pursuit::CheckResult> check;
-  std::vector<geometry::ExactPoint> path;
-  if (rep.outcome == PursuitReport::Outcome::Plan) {
-    const std::size_t from = sim.path().size() - 1;
-    execute(sim, rep.plan);
-    path.assign(sim.path().begin() + static_cast<long>(from), sim.path().end());
-    if (!F.no_check || !F.svg.empty()) {
-      pursuit::CheckOptions co;
-      if (!F.svg.empty()) co.frames = pursuit::frame_waypoints(path.size(), F.frames);
-      check = pursuit::check_exact_paths(env, pursuit::ExactPaths{path}, co);
-    }
-  }
   const bool complete = sensor != PursuitSensor::None;
   const char* outcome = rep.outcome == PursuitReport::Outcome::Plan ? "plan" : rep.outcome == PursuitReport::Outcome::NoPlan ? "no plan" : "budget";
   if (!F.svg.empty()) {
-    const auto map = pursuit_map(env, T, bitangents(env), path, pursuit::kFramePanelWidth,
-                                 std::string(strategy_name(sensor)) + ": " + outcome);
-    pursuit::Paths dp{{}};
-    for (auto& p : path) dp[0].push_back(geometry::to_double(p));
-    std::vector<std::string> captions;
-    if (check)
-      for (auto& f : check->frames) {
-        const std::string& l = rep.labels_along.at(f.waypoint);
-        captions.push_back((f.waypoint ? "after " + std::string(to_string(rep.plan[f.waypoint - 1])) + " (" + std::to_string(f.waypoint) + ")"
-                                       : std::string("start")) + ": " + l);
-      }
     std::ofstream out(F.svg);
     if (!out) throw InputError("--svg: cannot write " + F.svg);
-    out << pursuit::plan_frames_figure(env, dp, check ? check->frames : std::vector<pursuit::CheckFrame>{}, 3, captions, &map);
+    out << pursuit_figure(env, run);
   }
   if (F.as_json) {
     json j = {{"strategy", strategy_name(sensor)}, {"sensor", to_string(sensor)}, {"outcome", outcome},
