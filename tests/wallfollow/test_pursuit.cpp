@@ -122,6 +122,13 @@ TEST(WallFollowBitangents, CandidatesHoldEveryBitangentAndBoundsHoldItsRays) {
       }
       ++checked;
       separating += geo[k].separating;
+      if (geo[k].separating) {
+        // Proposition 9 takes "an interval between v_i and v_j that does not contain the
+        // bitangent endpoints": for a separating bitangent each arc holds one of them.
+        const std::uint64_t vi = m.key(m.vertex(t.i)), vj = m.key(m.vertex(t.j));
+        const auto holds = [&](std::uint64_t a, std::uint64_t b) { return m.in_arc(t.b_ij, a, b) || m.in_arc(t.b_ji, a, b); };
+        EXPECT_TRUE(holds(vi, vj) && holds(vj, vi)) << "seed " << seed;
+      }
       EXPECT_EQ(geo[k].separating, m.on_right_side(t.i, t.j) == m.on_right_side(t.j, t.i)) << "seed " << seed;
     }
   }
@@ -460,4 +467,15 @@ TEST(WallFollowPursuit, Fig10SlidingPrimitiveIsNoGapEvent) {
   EXPECT_TRUE(reading.events.empty()) << reading.events.size() << " events";
   EXPECT_EQ(m.active(m.vertex(2)), m.active(m.vertex(3)));
   EXPECT_TRUE(crossings_of(m, true_bitangents(env, m), m.vertex(2), m.vertex(3)).empty());
+  // Strategy 4 reads B(i, j) from C(i, j) and h_p = 1. Consecutive reflex vertices satisfy
+  // Proposition 11's condition and see each other along their edge, yet the line of an
+  // edge is tangent at neither: the rule needs i, j not adjacent (bitangent_candidate).
+  auto between_cuts = [&](std::uint32_t v, std::uint32_t w) {
+    return m.in_arc(m.key(m.vertex(v)), m.key(m.cut(w, false)), m.key(m.cut(w, true)));
+  };
+  EXPECT_FALSE(between_cuts(4, 5));
+  EXPECT_FALSE(between_cuts(5, 4));
+  EXPECT_TRUE(geometry::visible(env, env.vertex(4), env.vertex(5)));
+  for (const Bitangent& b : bitangents(env)) EXPECT_FALSE(b.i == 4 && b.j == 5);
+  EXPECT_FALSE(bitangent_candidate(m, 4, 5));
 }
