@@ -1,18 +1,27 @@
 // SPDX-License-Identifier: Apache-2.0
-// preimage wallfollow simulate | count | cut-ordering
+// preimage wallfollow simulate | count | cut-ordering | pursue | completeness
 #include "common.hpp"
+#include "wallfollow_pursuit_run.hpp"
 
 #include <preimage/error.hpp>
 #include <preimage/geometry/coordinates.hpp>
+#include <preimage/geometry/generators.hpp>
+#include <preimage/pursuit/checker.hpp>
+#include <preimage/pursuit/search.hpp>
 #include <preimage/scene/scene.hpp>
 #include <preimage/wallfollow/cut_ordering.hpp>
 #include <preimage/wallfollow/environment.hpp>
 #include <preimage/wallfollow/imaps.hpp>
 #include <preimage/wallfollow/learn.hpp>
+#include <preimage/wallfollow/pursuit.hpp>
 #include <preimage/wallfollow/robot.hpp>
+#include <preimage/wallfollow/sensors.hpp>
 
 #include <cmath>
+#include <fstream>
+#include <iomanip>
 #include <iostream>
+#include <memory>
 
 namespace preimage::cli {
 namespace {
@@ -153,10 +162,165 @@ void run_cut_ordering(const std::string& file, bool learn, const std::string& so
   if (!svg.empty()) std::cout << "wrote " << svg << "\n";
 }
 
+// ---------------------------------------------------------------- pursue
+struct PursueFlags {
+  std::string file, start, sensor = "gap", svg;
+  double heading = 0;
+  std::size_t max_states = 20'000'000, frames = 5;
+  bool no_check = false, as_json = false;
+};
+
+void run_pursue(const PursueFlags& F) {
+  const PursuitSensor sensor = parse_sensor(F.sensor);
+  const Setup S = load(F.file, F.start, F.heading);
+  const auto& env = *S.scene.environment;
+  const PursuitRun run = run_pursuit(env, S.start, S.heading, sensor, F.max_states, !F.no_check, F.svg.empty() ? 0 : F.frames);
+  const PursuitReport& rep = run.rep;
+  const std::size_t v1 = run.v1;
+  const auto& check = run.check;
+  const OrderingMap m(rep.learned.ordering);
+  std::vector<std::string> actions;
+  for (Action u : rep.plan) actions.push_back(to_string(u));
+  const bool complete = sensor != PursuitSensor::None;
+  const char* outcome = rep.outcome == PursuitReport::Outcome::Plan ? "plan" : rep.outcome == PursuitReport::Outcome::NoPlan ? "no plan" : "budget";
+  if (!F.svg.empty()) {
+    std::ofstream out(F.svg);
+    if (!out) throw InputError("--svg: cannot write " + F.svg);
+    out << pursuit_figure(env, run);
+  }
+  if (F.as_json) {
+    json j = {{"strategy", strategy_name(sensor)}, {"sensor", to_string(sensor)}, {"outcome", outcome},
+              {"plan", actions}, {"primitives", rep.plan.size()}, {"istates", rep.states},
+              {"learn_actions", rep.learned.actions}, {"prepare_actions", rep.prepare_actions},
+              {"bitangents", rep.bitangents}, {"start", m.name(rep.start.at)}, {"labels", rep.labels_along},
+              {"complete", complete}, {"robot_v1_is_vertex", env.input_index(v1)}};
+    if (check) j["check"] = {{"cleared", check->cleared}, {"moments", check->moments}};
+    return print_json(j);
+  }
+  std::cout << strategy_name(sensor) << ": cut ordering learned in " << rep.learned.actions << " actions, then "
+            << rep.prepare_actions << " more ("
+            << (sensor == PursuitSensor::Gap || sensor == PursuitSensor::Bitangent ? "fetching the pebble, executing every motion once"
+                : sensor == PursuitSensor::Pebble ? "fetching the pebble, Strategy 4 with it" : "fetching the pebble")
+            << ")";
+  if (sensor != PursuitSensor::Gap)
+    std::cout << "; " << rep.bitangents
+              << (sensor == PursuitSensor::Bitangent ? " bitangents sensed" : sensor == PursuitSensor::Pebble ? " bitangents learned" : " candidates taken as bitangents");
+  std::cout << "\n";
+  if (rep.outcome == PursuitReport::Outcome::Plan) {
+    std::cout << "plan of " << rep.plan.size() << " primitives from " << m.name(rep.start.at) << ":";
+    for (auto& a : actions) std::cout << " " << a;
+    std::cout << " (" << rep.states << " I-states explored)\n";
+    std::cout << "labels (robot's names: its v1 is scene vertex " << env.input_index(v1) << "):";
+    for (std::size_t k = 0; k < rep.labels_along.size(); ++k) std::cout << (k ? " -> " : " ") << rep.labels_along[k];
+    std::cout << "\n";
+    if (check)
+      std::cout << "independent check of the executed path: " << (check->cleared ? "cleared" : "NOT cleared") << " (" << check->moments
+                << " moments sampled)\n";
+  } else if (rep.outcome == PursuitReport::Outcome::NoPlan) {
+    if (complete)
+      std::cout << "no plan exists for this robot (complete search, " << rep.states << " I-states explored)\n";
+    else
+      std::cout << "Strategy 6 finds no plan (" << rep.states << " I-states explored, it is sound, not known to be complete)\n";
+  } else {
+    std::cout << "search stopped after " << rep.states << " I-states (--max-states " << F.max_states << ")\n";
+  }
+  if (!F.svg.empty()) std::cout << "wrote " << F.svg << "\n";
+}
+
+// ---------------------------------------------------------------- completeness
+struct CompletenessFlags {
+  std::size_t polygons = 1000, min_vertices = 6, max_vertices = 40, max_states = 5'000'000;
+  std::uint64_t seed = 1;
+  std::string save;
+  bool as_json = false, check_all = false;
+};
+
+void run_completeness(const CompletenessFlags& F) {
+  if (F.min_vertices > F.max_vertices) throw InputError("--min-vertices: more than --max-vertices");
+  struct Tally {
+    std::size_t tried = 0, rejected = 0, gap = 0, none = 0, both = 0, budget = 0, none_checked = 0, none_wrong = 0,
+                gap_checked = 0, gap_wrong = 0, free_missing = 0;
+  } t;
+  json counter = json::array();
+  auto plan_clears = [](const geometry::Environment& env, Simulator& sim, const PursuitReport& rep) {
+    const std::size_t from = sim.path().size() - 1;
+    execute(sim, rep.plan);
+    std::vector<geometry::ExactPoint> path(sim.path().begin() + static_cast<long>(from), sim.path().end());
+    return pursuit::check_exact_paths(env, pursuit::ExactPaths{path}).cleared;
+  };
+  for (std::size_t k = 0; k < F.polygons; ++k) {
+    const std::uint64_t seed = F.seed + k;
+    const std::size_t n = F.min_vertices + static_cast<std::size_t>(seed % (F.max_vertices - F.min_vertices + 1));
+    ++t.tried;
+    auto env = geometry::Environment::make(geometry::generators::random_simple_polygon(n, seed, 100.0), {});
+    try {
+      require_general_position(env);
+      true_cut_ordering(env);
+      Simulator probe(env, env.vertex(0), geometry::Vector(1, 0));
+      probe.enable(sensors_of(PursuitSensor::Gap));  // rejects bitangents ending at cut endpoints
+    } catch (const InputError&) {
+      ++t.rejected;
+      continue;
+    }
+    PursuitOptions o;
+    o.max_states = F.max_states;
+    Simulator s2(env, env.vertex(0), geometry::Vector(1, 0));
+    s2.enable(sensors_of(PursuitSensor::Gap));
+    o.sensor = PursuitSensor::Gap;
+    const auto r2 = pursue(s2, o);
+    Simulator s6(env, env.vertex(0), geometry::Vector(1, 0));
+    o.sensor = PursuitSensor::None;
+    const auto r6 = pursue(s6, o);
+    if (r2.outcome == PursuitReport::Outcome::Budget || r6.outcome == PursuitReport::Outcome::Budget) {
+      ++t.budget;
+      continue;
+    }
+    const bool p2 = r2.outcome == PursuitReport::Outcome::Plan, p6 = r6.outcome == PursuitReport::Outcome::Plan;
+    t.gap += p2, t.none += p6, t.both += p2 && p6;
+    if (p6) {
+      ++t.none_checked;
+      if (!plan_clears(env, s6, r6)) ++t.none_wrong;
+    }
+    if (p2 && F.check_all) {
+      ++t.gap_checked;
+      if (!plan_clears(env, s2, r2)) ++t.gap_wrong;
+    }
+    if (p2 && pursuit::search(pursuit::ConservativeCells::build(env), 1).outcome != pursuit::SearchResult::Outcome::Plan) ++t.free_missing;
+    if (p2 && !p6) {
+      counter.push_back({{"seed", seed}, {"vertices", n}, {"gap_istates", r2.states}, {"none_istates", r6.states}});
+      if (!F.save.empty()) {
+        std::ofstream f(F.save + "/wallfollow_s6_counterexample_" + std::to_string(seed) + ".json");
+        if (!f) throw InputError("--save: cannot write into " + F.save);
+        f << std::setprecision(17) << "{\"name\": \"Strategy 6 counter-example, seed " << seed << "\", \"environment\": {\"boundary\": [";
+        for (std::size_t v = 0; v < env.num_vertices(); ++v)
+          f << (v ? ", " : "") << "[" << env.vertex(v).x() << ", " << env.vertex(v).y() << "]";
+        f << "]}}\n";
+      }
+    }
+  }
+  const std::size_t used = t.tried - t.rejected - t.budget;
+  if (F.as_json)
+    return print_json({{"polygons", t.tried}, {"rejected_general_position", t.rejected}, {"budget", t.budget}, {"compared", used},
+                       {"strategy2_solves", t.gap}, {"strategy6_solves", t.none}, {"both", t.both},
+                       {"strategy6_plans_checked", t.none_checked}, {"strategy6_plans_not_clearing", t.none_wrong},
+                       {"strategy2_plans_checked", t.gap_checked}, {"strategy2_plans_not_clearing", t.gap_wrong},
+                       {"free_pursuer_missing", t.free_missing}, {"counterexamples", counter}});
+  std::cout << t.tried << " random polygons (" << F.min_vertices << "-" << F.max_vertices << " vertices, seeds " << F.seed << "-"
+            << F.seed + F.polygons - 1 << "): " << t.rejected << " not in general position, " << t.budget
+            << " over --max-states; " << used << " compared\n"
+            << "Strategy 2 (gap sensor, complete) solves " << t.gap << "; Strategy 6 (no special sensor) solves " << t.none << "\n"
+            << "Strategy 6 plans checked: " << t.none_checked << ", not clearing: " << t.none_wrong << "\n";
+  if (F.check_all) std::cout << "Strategy 2 plans checked: " << t.gap_checked << ", not clearing: " << t.gap_wrong << "\n";
+  std::cout << "solved by the wall-follower but not by the free pursuer of module pursuit: " << t.free_missing << "\n"
+            << counter.size() << " solved by Strategy 2 and not by Strategy 6";
+  for (auto& c : counter) std::cout << (&c == &counter[0] ? ": seed " : ", ") << c["seed"].get<std::uint64_t>() << " (" << c["vertices"].get<std::size_t>() << " vertices)";
+  std::cout << "\n";
+}
+
 }  // namespace
 
 void add_wallfollow_commands(CLI::App& app) {
-  auto* w = app.add_subcommand("wallfollow", "wall-following robot: simulator, I-maps, cut ordering (wall-following paper)");
+  auto* w = app.add_subcommand("wallfollow", "wall-following robot: simulator, I-maps, cut ordering, pursuit-evasion (wall-following paper)");
   w->require_subcommand(1);
   static std::string file, start, actions, sort = "quick", svg, pebble;
   static double heading = 0;
@@ -182,6 +346,33 @@ void add_wallfollow_commands(CLI::App& app) {
   o->add_option("--sort", sort, "with --learn: order endpoints on an edge by quick (default) or all-pairs comparisons");
   o->add_option("--svg", svg, "draw the cut diagram (Fig. 4a)");
   o->callback([] { run_cut_ordering(file, learn, sort, start, heading, as_json, svg); });
+  {
+    auto F = std::make_shared<PursueFlags>();
+    auto* p = w->add_subcommand("pursue", "pursuit-evasion (section VI): learn the cut ordering, plan, execute, check");
+    p->add_option("scene", F->file, "scene file (JSON): a simple polygon, no three vertices collinear")->required();
+    p->add_option("--sensor", F->sensor, "gap (Strategy 2), bitangent (3), pebble (4 + 5) or none (6)")->capture_default_str();
+    p->add_option("--start", F->start, "robot start X,Y (default: the scene's start, else the first vertex)");
+    p->add_option("--heading", F->heading, "robot heading in degrees for INIT from the interior (default 0 = east)");
+    add_count(p, "--max-states", F->max_states, 1, 1'000'000'000, "I-states to store before giving up");
+    p->add_flag("--no-check", F->no_check, "skip the independent contamination check of the executed plan");
+    add_count(p, "--frames", F->frames, 1, 24, "moments drawn in the --svg small multiples");
+    p->add_flag("--json", F->as_json, "JSON output");
+    p->add_option("--svg", F->svg, "draw the cuts, bitangent rays and the plan, and the labels at a few moments");
+    p->callback([F] { run_pursue(*F); });
+  }
+  {
+    auto F = std::make_shared<CompletenessFlags>();
+    auto* c2 = w->add_subcommand("completeness", "Strategies 2 and 6 on random polygons: is Strategy 6 complete? (VI.E)");
+    add_count(c2, "--polygons", F->polygons, 1, 10'000'000, "random polygons to try");
+    c2->add_option("--seed", F->seed, "first seed (one polygon per seed)")->capture_default_str();
+    add_count(c2, "--min-vertices", F->min_vertices, 4, 10'000, "fewest vertices");
+    add_count(c2, "--max-vertices", F->max_vertices, 4, 10'000, "most vertices");
+    add_count(c2, "--max-states", F->max_states, 1, 1'000'000'000, "I-states per search before giving up (the polygon is skipped)");
+    c2->add_flag("--check-all", F->check_all, "also check Strategy 2's plans (Strategy 6's always are)");
+    c2->add_option("--save", F->save, "write every counter-example scene into this directory");
+    c2->add_flag("--json", F->as_json, "JSON output");
+    c2->callback([F] { run_completeness(*F); });
+  }
 }
 
 }  // namespace preimage::cli

@@ -20,6 +20,7 @@ void demo_coverage(DemoContext& ctx);
 void demo_beams(DemoContext& ctx);
 void demo_beams_homotopy(DemoContext& ctx);
 void demo_wallfollow(DemoContext& ctx);
+void demo_wallfollow_pursuit(DemoContext& ctx);
 void demo_landmarks(DemoContext& ctx);
 void demo_tracking(DemoContext& ctx);
 void demo_pursuit(DemoContext& ctx);

@@ -60,11 +60,26 @@ std::vector<std::size_t> frame_waypoints(std::size_t waypoints, std::size_t coun
 }
 
 std::string plan_frames_figure(const geometry::Environment& env, const Paths& paths, const std::vector<CheckFrame>& frames,
-                               std::size_t columns) {
-  columns = std::max<std::size_t>(1, std::min(columns, frames.size()));
-  const double panel = 320;
+                               std::size_t columns, const std::vector<std::string>& captions, const render::SvgCanvas* first_panel) {
+  const std::size_t panels = frames.size() + (first_panel ? 1 : 0);
+  columns = std::max<std::size_t>(1, std::min(columns, panels));
+  const double panel = kFramePanelWidth;
   std::string body;
-  double width = 0, height = 0, row_h = 0;
+  double width = 0, height = 0, row_h = 0, x = 0;
+  auto place = [&](std::string svg, std::size_t i) {
+    const std::size_t col = i % columns;
+    if (col == 0) height += row_h, row_h = 0, x = 0;
+    // Nest the panel: its root element placed at its grid position (panels with axes are
+    // wider than `panel`).
+    const double w = std::stod(svg.substr(svg.find("width=\"") + 7));
+    const double h = std::stod(svg.substr(svg.find("height=\"") + 8));
+    row_h = std::max(row_h, h + 8);
+    svg.replace(0, 4, "<svg x=\"" + std::to_string(x) + "\" y=\"" + std::to_string(height) + "\"");
+    body += svg;
+    width = std::max(width, x + w);
+    x += w + 8;
+  };
+  if (first_panel) place(first_panel->str(), 0);
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const auto& f = frames[i];
     const CGAL::Bbox_2 box = padded(env, 0.1);  // room for the caption above
@@ -81,20 +96,12 @@ std::string plan_frames_figure(const geometry::Environment& env, const Paths& pa
       c.polyline(walked, {"none", kPursuerColour[l % 6], 1.2, 0.8, "3 2"});
       c.point(f.pursuers[l], 3.5, {kPursuerColour[l % 6], "#000", 0.8, 1.0, ""});
     }
- c.label(Point(box.xmin(), env.bbox().ymax() + 0.035 * (box.xmax() - box.xmin())), "waypoint " + std::to_string(f.waypoint) + ": " +
-                                                            (f.regions == 0 ? "all clear" : std::to_string(f.regions) + " contaminated region" + (f.regions > 1 ? "s" : "")),
-            11);
-    std::string svg = c.str();
-    const std::size_t col = i % columns;
-    if (col == 0) height += row_h, row_h = 0;
-    // Nest the panel: its root element placed at its grid position.
-    const double x = static_cast<double>(col) * (panel + 8);
-    const auto hpos = svg.find("height=\"");
-    const double h = std::stod(svg.substr(hpos + 8));
-    row_h = std::max(row_h, h + 8);
-    svg.replace(0, 4, "<svg x=\"" + std::to_string(x) + "\" y=\"" + std::to_string(height) + "\"");
-    body += svg;
-    width = std::max(width, x + panel);
+    const std::string caption =
+        i < captions.size() ? captions[i]
+                            : "waypoint " + std::to_string(f.waypoint) + ": " +
+                                  (f.regions == 0 ? "all clear" : std::to_string(f.regions) + " contaminated region" + (f.regions > 1 ? "s" : ""));
+    c.label(Point(box.xmin(), env.bbox().ymax() + 0.035 * (box.xmax() - box.xmin())), caption, 11);
+    place(c.str(), i + (first_panel ? 1 : 0));
   }
   height += row_h;
   std::string legend = "<text x=\"8\" y=\"" + std::to_string(height + 14) +

@@ -232,6 +232,17 @@ LearnReport Learner::run() {
       o.points.push_back({is_left(c) ? CutPoint::Kind::Left : CutPoint::Kind::Right, static_cast<std::uint32_t>(vertex_of(c))});
   }
   rep.action_bound = (n + 2) + 2 * m * (2 * n + 3) + pivots * (2 * n + 8) + rep.comparisons * (n + 6);
+  auto index_of = [&](CutPoint p) {
+    return static_cast<std::uint32_t>(std::find(o.points.begin(), o.points.end(), p) - o.points.begin());
+  };
+  auto cut_point = [&](CutId c) {
+    return CutPoint{is_left(c) ? CutPoint::Kind::Left : CutPoint::Kind::Right, static_cast<std::uint32_t>(vertex_of(c))};
+  };
+  if (on_edge && at_cut < 0) lost("the robot's place inside an edge is not a cut endpoint");
+  rep.robot_at = index_of(on_edge ? cut_point(static_cast<CutId>(at_cut)) : CutPoint{CutPoint::Kind::Vertex, static_cast<std::uint32_t>(at)});
+  rep.arrived = arrived;
+  if (!holding)
+    rep.pebble_at = index_of(pebble_cut < 0 ? CutPoint{CutPoint::Kind::Vertex, 0} : cut_point(static_cast<CutId>(pebble_cut)));
   return rep;
 }
 

@@ -3,8 +3,11 @@
 #include <preimage/geometry/queries.hpp>
 #include <preimage/wallfollow/cut_ordering.hpp>
 #include <preimage/wallfollow/robot.hpp>
+#include <preimage/wallfollow/sensors.hpp>
 
 #include <cctype>
+#include <climits>
+#include <map>
 #include <cmath>
 
 namespace preimage::wallfollow {
@@ -92,11 +95,59 @@ bool same_place(const Place& a, const Place& b) {
   return false;
 }
 
+// What the section VI sensors need, built once when they are enabled.
+struct SensorState {
+  explicit SensorState(const geometry::Environment& env) : vis(env) {}
+  geometry::VisibilityIndex vis;
+  std::vector<VertexLine> lines;
+  std::vector<Bitangent> bitangents;
+  TrueCuts cuts;
+  struct Cached {
+    std::size_t gaps = 0;
+    std::vector<filter::ShadowEvent> gap_events;
+    std::vector<BitangentCrossing> bitangents;
+    bool has_gap = false, has_bitangent = false;
+  };
+  std::map<std::pair<long, long>, Cached> readings;  // by (start, end) place
+};
+
 Simulator::Simulator(const geometry::Environment& env, const geometry::Point& start, const geometry::Vector& heading,
                      std::optional<Place> pebble)
     : env_(&env), heading_(heading.x(), heading.y()), holding_(!pebble), pebble_(std::move(pebble)), cut_cache_(2 * env.num_vertices()) {
   if (heading.x() == 0 && heading.y() == 0) throw InputError("the robot's heading must be a non-zero direction");
   robot_ = Place::of(env, start, "start");
+  path_.push_back(robot_.point);
+}
+
+Simulator::~Simulator() = default;
+
+void Simulator::enable(const Sensors& s) {
+  sensors_ = s;
+  if (!state_) state_ = std::make_unique<SensorState>(*env_);
+  if ((s.gap || s.bitangent) && state_->lines.empty()) {
+    state_->lines = vertex_lines(*env_);
+    state_->bitangents = bitangents(*env_);
+    state_->cuts = true_cut_ordering(*env_);
+    // Bitangent endpoints must not fall on cut endpoints (general position, V.A).
+    for (const Bitangent& b : state_->bitangents)
+      for (const BoundaryPoint* e : {&b.b_ij, &b.b_ji})
+        for (const Cut& c : state_->cuts.cuts)
+          if (c.edge == e->edge && c.end == e->point)
+            throw InputError("the bitangent of vertices " + std::to_string(env_->input_index(b.i)) + " and " +
+                             std::to_string(env_->input_index(b.j)) + " ends where a cut ends, at " +
+                             geometry::format_point(geometry::to_double(c.end)) + " (no general position)");
+  }
+  reading_ = Observation{};
+  if (s.gap) reading_.gaps = gap_count(state_->vis, robot_.point);
+  if (s.detection && evader_) reading_.detected = sees_during(state_->vis.compute(*evader_), robot_.point, robot_.point);
+  if (s.pebble_visibility && pebble_ && !holding_)
+    reading_.pebble_visible = sees_during(state_->vis.compute(pebble_->point), robot_.point, robot_.point);
+}
+
+void Simulator::set_evader(const geometry::ExactPoint& p) {
+  if (!geometry::locate(*env_, p).in_free_space())
+    throw InputError("evader " + geometry::format_point(geometry::to_double(p)) + " is not in the environment");
+  evader_ = p;
 }
 
 Observation Simulator::sense() const {
@@ -107,6 +158,12 @@ Observation Simulator::sense() const {
     case Place::Kind::Vertex: y.touch = env_->turn(robot_.index) > 0 ? Touch::Convex : Touch::Reflex; break;
   }
   y.pebble = holding_ || (pebble_ && same_place(*pebble_, robot_));
+  y.detected = reading_.detected;
+  y.pebble_visible = reading_.pebble_visible;
+  y.pebble_seen = reading_.pebble_seen;
+  y.gaps = reading_.gaps;
+  y.gap_events = reading_.gap_events;
+  y.bitangents = reading_.bitangents;
   return y;
 }
 
@@ -156,6 +213,9 @@ void Simulator::follow(bool ccw) {
 
 Observation Simulator::apply(Action u) {
   const auto& E = *env_;
+  const std::size_t from = path_.size() - 1;
+  const bool held_before = holding_;
+  const Place start = robot_;
   switch (u) {
     case Action::Init:
       if (robot_.kind == Place::Kind::Interior) {
@@ -170,6 +230,7 @@ Observation Simulator::apply(Action u) {
         robot_.index = hit->edge;
         robot_.point = hit->point;
         robot_.mark = -1;
+        path_.push_back(robot_.point);
       }
       if (robot_.kind == Place::Kind::Edge) {
         // Wall-follow with the wall on the right to the next vertex (INIT ignores the pebble).
@@ -211,7 +272,75 @@ Observation Simulator::apply(Action u) {
       break;
   }
   ++actions_;
+  if (!(path_.back() == robot_.point)) path_.push_back(robot_.point);
+  read_sensors(std::vector<geometry::ExactPoint>(path_.begin() + static_cast<long>(from), path_.end()), held_before, start);
   return sense();
+}
+
+// The section VI readings of the action whose motion is `motion` (a polyline; one point
+// when the robot did not move).
+void Simulator::read_sensors(const std::vector<geometry::ExactPoint>& motion, bool held_before, const Place& start) {
+  reading_ = Observation{};
+  if (!state_) return;
+  const auto& E = *env_;
+  auto seen_along = [&](const geometry::ExactPoint& target) {
+    const auto V = state_->vis.compute(target);
+    if (motion.size() == 1) return sees_during(V, motion[0], motion[0]);
+    for (std::size_t k = 0; k + 1 < motion.size(); ++k)
+      if (sees_during(V, motion[k], motion[k + 1])) return true;
+    return false;
+  };
+  if (sensors_.detection && evader_) reading_.detected = seen_along(*evader_);
+  // The pebble is seen while it lies (dropped during the action: from then on).
+  if (sensors_.pebble_visibility && pebble_ && !holding_) {
+    const auto V = state_->vis.compute(pebble_->point);
+    reading_.pebble_visible = sees_during(V, robot_.point, robot_.point);
+    reading_.pebble_seen = held_before || seen_along(pebble_->point);
+  }
+  // Gap and bitangent readings depend on the motion only: kept for motions between
+  // vertices and cut endpoints, which strategies repeat while walking about.
+  auto id = [](const Place& p) -> long {
+    if (p.kind == Place::Kind::Vertex) return static_cast<long>(p.index);
+    if (p.kind == Place::Kind::Edge && p.mark >= 0) return -2 - p.mark;
+    return LONG_MIN;
+  };
+  const auto key = std::make_pair(id(start), id(robot_));
+  const bool cacheable = key.first != LONG_MIN && key.second != LONG_MIN;
+  if (cacheable) {
+    const auto it = state_->readings.find(key);
+    if (it != state_->readings.end()) {
+      if (sensors_.gap) reading_.gaps = it->second.gaps, reading_.gap_events = it->second.gap_events;
+      if (sensors_.bitangent) reading_.bitangents = it->second.bitangents;
+      if ((!sensors_.gap || it->second.has_gap) && (!sensors_.bitangent || it->second.has_bitangent)) return;
+    }
+  }
+  if (sensors_.gap) {
+    auto g = gap_reading(state_->vis, state_->lines, motion);
+    reading_.gaps = g.gaps;
+    reading_.gap_events = std::move(g.events);
+  }
+  if (sensors_.bitangent && robot_.kind != Place::Kind::Interior && motion.size() >= 2 &&
+      geometry::locate(E, motion.front()).kind != geometry::Location::Kind::Interior) {
+    // A ray is crossed when the robot changes sides of it (VI.C); names relative to where
+    // the action ends.
+    const BoundaryPoint a = boundary_point(E, motion.front()), b = boundary_point(E, motion.back());
+    const std::size_t n = E.num_vertices(), ref = robot_.index;
+    auto rel = [&](std::size_t v) { return static_cast<std::uint32_t>((v + n - ref) % n); };
+    for (const Bitangent& t : state_->bitangents)
+      for (bool at_j : {false, true}) {
+        if (merged_side(E, t, at_j, a) == merged_side(E, t, at_j, b)) continue;
+        const BoundaryPoint& other = at_j ? t.b_ij : t.b_ji;
+        std::uint32_t before = 0;
+        for (const Cut& c : state_->cuts.cuts)
+          if (c.edge == other.edge && CGAL::has_smaller_distance_to_point(E.exact_vertex(other.edge), c.end, other.point)) ++before;
+        reading_.bitangents.push_back({rel(at_j ? t.j : t.i), rel(at_j ? t.i : t.j), rel(other.edge), before});
+      }
+  }
+  if (cacheable) {
+    auto& c = state_->readings[key];
+    if (sensors_.gap) c.gaps = reading_.gaps, c.gap_events = reading_.gap_events, c.has_gap = true;
+    if (sensors_.bitangent) c.bitangents = reading_.bitangents, c.has_bitangent = true;
+  }
 }
 
 }  // namespace preimage::wallfollow

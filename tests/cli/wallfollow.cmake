@@ -22,3 +22,29 @@ cli_test(wallfollow_bad_sort fail "--sort: expected quick or all-pairs" - wallfo
 # Issue 26: 1e308 degrees overflowed to an infinite angle in radians (NaN heading, SIGFPE in GMP).
 cli_test(wallfollow_count_huge_heading 0 "vertex count 6 \\(k8, Prop. 2\\)" - wallfollow count ${WF}/fig03_two_reflex.json --heading 1e308)
 cli_test(wallfollow_simulate_huge_heading 0 "stage 2: " - wallfollow simulate ${WF}/fig03_two_reflex.json --start 3,2 --heading -1e308 --actions "INIT")
+
+# Pursuit-evasion (section VI): every strategy end to end, the plan executed and checked.
+cli_test(wallfollow_pursue_gap 0 "independent check of the executed path: cleared" ${OUT}/wallfollow-pursue.svg
+         wallfollow pursue ${WF}/fig05_rooms.json --sensor gap --svg ${OUT}/wallfollow-pursue.svg)
+cli_test(wallfollow_pursue_bitangent 0 "plan of 2 primitives from v8: RFOLLOW JUMP \\(12 I-states explored\\)" -
+         wallfollow pursue ${WF}/fig05_rooms.json --sensor bitangent)
+cli_test(wallfollow_pursue_pebble_json 0 "\"outcome\": \"plan\"" -
+         wallfollow pursue ${WF}/fig05_rooms.json --sensor pebble --json)
+cli_test(wallfollow_pursue_none 0 "independent check of the executed path: cleared" -
+         wallfollow pursue ${WF}/fig09_three_teeth.json --sensor none)
+cli_test(wallfollow_pursue_no_plan 0 "no plan exists for this robot \\(complete search, [0-9]+ I-states explored\\)" -
+         wallfollow pursue ${WF}/three_arms.json --sensor bitangent)
+cli_test(wallfollow_pursue_counterexample_none 0 "Strategy 6 finds no plan \\([0-9]+ I-states explored, it is sound, not known to be complete\\)" -
+         wallfollow pursue ${FIX}/wallfollow/s6_counterexample_28.json --sensor none)
+cli_test(wallfollow_pursue_counterexample_gap 0 "plan of [0-9]+ primitives" -
+         wallfollow pursue ${FIX}/wallfollow/s6_counterexample_28.json --sensor gap --no-check)
+cli_test(wallfollow_pursue_budget 0 "search stopped after [0-9]+ I-states \\(--max-states 2\\)" -
+         wallfollow pursue ${WF}/fig05_rooms.json --sensor none --max-states 2)
+cli_test(wallfollow_pursue_bad_sensor fail "--sensor: expected gap, bitangent, pebble or none, got 'sonar'" -
+         wallfollow pursue ${WF}/fig05_rooms.json --sensor sonar)
+cli_test(wallfollow_pursue_zero_states fail "--max-states" - wallfollow pursue ${WF}/fig05_rooms.json --max-states 0)
+cli_test(wallfollow_pursue_holes fail "needs a simply connected environment" - wallfollow pursue ${EXAMPLES}/pursuit/pillar.json)
+cli_test(wallfollow_completeness 0 "Strategy 6 plans checked: [0-9]+, not clearing: 0" -
+         wallfollow completeness --polygons 6 --max-vertices 16)
+cli_test(wallfollow_completeness_json 0 "\"strategy6_plans_not_clearing\": 0" - wallfollow completeness --polygons 3 --max-vertices 12 --json)
+cli_test(wallfollow_completeness_range fail "--min-vertices: more than --max-vertices" - wallfollow completeness --min-vertices 20 --max-vertices 10)

@@ -20,8 +20,13 @@ void draw_paths(render::SvgCanvas& canvas, const Paths& paths);
 
 /// Small multiples: one panel per recorded frame, `columns` per row, each showing the
 /// pursuers, their V, the contaminated regions (red) and the cleared rest (white).
+/// `captions` replace the panels' default captions; `first_panel` (a canvas of the same
+/// panel width, e.g. a map of the plan) is placed before the frames.
 std::string plan_frames_figure(const geometry::Environment& env, const Paths& paths, const std::vector<CheckFrame>& frames,
-                               std::size_t columns = 3);
+                               std::size_t columns = 3, const std::vector<std::string>& captions = {},
+                               const render::SvgCanvas* first_panel = nullptr);
+/// The width of one panel of plan_frames_figure.
+constexpr double kFramePanelWidth = 320;
 
 /// Waypoints for `count` evenly spread frames of a plan with `waypoints` points.
 std::vector<std::size_t> frame_waypoints(std::size_t waypoints, std::size_t count);

@@ -15,6 +15,7 @@
 #include <preimage/wallfollow/robot.hpp>
 
 #include <cstdint>
+#include <optional>
 
 namespace preimage::wallfollow {
 
@@ -33,6 +34,11 @@ struct LearnReport {
   /// (n + 2) + 2m (2n + 3) + pivots (2n + 8) + comparisons (n + 6). With O(1) endpoints
   /// per edge this is O(n^2) (Proposition 5).
   std::size_t action_bound = 0;
+  /// Where the robot ends (index into ordering.points) and how it arrived there (+1 after
+  /// RFOLLOW, -1 after LFOLLOW, 0 after a JUMP), and where the pebble lies (none: held).
+  std::uint32_t robot_at = 0;
+  int arrived = 0;
+  std::optional<std::uint32_t> pebble_at;
 };
 
 LearnReport learn_cut_ordering(RobotInterface& robot, const LearnOptions& options = {});

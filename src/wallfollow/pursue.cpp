@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: Apache-2.0
+// pursue(): Strategy 1, then the pebble in hand, then the chosen strategy of section VI.
+#include "strategies.hpp"
+
+namespace preimage::wallfollow {
+
+const char* to_string(PursuitSensor s) {
+  switch (s) {
+    case PursuitSensor::Gap: return "gap";
+    case PursuitSensor::Bitangent: return "bitangent";
+    case PursuitSensor::Pebble: return "pebble";
+    case PursuitSensor::None: return "none";
+  }
+  return "?";
+}
+
+PursuitReport pursue(RobotInterface& robot, const PursuitOptions& options) {
+  PursuitReport rep;
+  rep.learned = learn_cut_ordering(robot, options.learn);
+  const OrderingMap m(rep.learned.ordering);
+  Navigator nav(robot, m, Position{rep.learned.robot_at, static_cast<std::int8_t>(rep.learned.arrived)}, rep.learned.pebble_at);
+  // Follows stop at a lying pebble; holding it keeps the moves those of the ordering.
+  nav.grab();
+  switch (options.sensor) {
+    case PursuitSensor::Gap: gap_strategy(nav, m, options.max_states, rep); break;
+    case PursuitSensor::Bitangent: bitangent_sensor_strategy(nav, m, options.max_states, rep); break;
+    case PursuitSensor::Pebble: {
+      const auto learned = learn_bitangents(nav, m);
+      search_compounds(nav.at(), m, learned, options.max_states, rep);
+      break;
+    }
+    case PursuitSensor::None: search_compounds(nav.at(), m, approximate_bitangents(m), options.max_states, rep); break;
+  }
+  rep.prepare_actions = nav.actions();
+  rep.start = nav.at();
+  return rep;
+}
+
+std::optional<std::size_t> execute(RobotInterface& robot, const std::vector<Action>& plan) {
+  if (robot.sense().detected) return 0;
+  for (std::size_t k = 0; k < plan.size(); ++k)
+    if (robot.apply(plan[k]).detected) return k + 1;
+  return std::nullopt;
+}
+
+}  // namespace preimage::wallfollow
