@@ -286,6 +286,9 @@ void run_completeness(const CompletenessFlags& F) {
       if (!plan_clears(env, s2, r2)) ++t.gap_wrong;
     }
     if (p2 && pursuit::search(pursuit::ConservativeCells::build(env), 1).outcome != pursuit::SearchResult::Outcome::Plan) ++t.free_missing;
+    if ((k + 1) % 100 == 0)
+      std::cerr << "completeness: " << k + 1 << "/" << F.polygons << " polygons, Strategy 2 solves " << t.gap << ", Strategy 6 "
+                << t.none << ", " << counter.size() + (p2 && !p6) << " solved by 2 only" << std::endl;
     if (p2 && !p6) {
       counter.push_back({{"seed", seed}, {"vertices", n}, {"gap_istates", r2.states}, {"none_istates", r6.states}});
       if (!F.save.empty()) {

@@ -26,14 +26,6 @@ using geometry::Point;
 
 namespace {
 
-Sensors sensors_for(PursuitSensor s) {
-  Sensors out;
-  out.gap = s == PursuitSensor::Gap;
-  out.bitangent = s == PursuitSensor::Bitangent;
-  out.pebble_visibility = s == PursuitSensor::Pebble;
-  return out;
-}
-
 struct Outcome {
   PursuitReport rep;
   std::vector<geometry::ExactPoint> path;  // the executed plan
@@ -43,7 +35,7 @@ struct Outcome {
 // The strategy through the simulator, its plan executed and checked.
 Outcome run(const Environment& env, PursuitSensor s, const Point& start) {
   Simulator sim(env, start, geometry::Vector(1, 0.3));
-  sim.enable(sensors_for(s));
+  sim.enable(sensors_of(s));
   PursuitOptions o;
   o.sensor = s;
   Outcome r{pursue(sim, o), {}, std::nullopt};

@@ -172,6 +172,8 @@ void search_compounds(const Position& start, const OrderingMap& m, const std::ve
 
 enum class PursuitSensor { Gap, Bitangent, Pebble, None };
 const char* to_string(PursuitSensor s);
+/// The simulator's sensors a strategy needs (none beyond III.A for Strategy 6).
+Sensors sensors_of(PursuitSensor s);
 
 struct PursuitOptions {
   PursuitSensor sensor = PursuitSensor::Gap;
