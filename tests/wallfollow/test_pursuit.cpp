@@ -489,6 +489,15 @@ TEST(WallFollowPursuit, Strategy6CounterexamplesAreClearedWithTheGapSensorOrTheP
     EXPECT_EQ(none.rep.outcome, PursuitReport::Outcome::NoPlan) << name;
     const OrderingMap m(true_cut_ordering(env).ordering);
     const auto truth = true_bitangents(env, m);
+    // Strategy 4 learned every bitangent and where its rays end (the robot, starting at
+    // vertex 0, names vertices as the scene does).
+    ASSERT_EQ(pebble.rep.learned.ordering, m.ordering()) << name;
+    ASSERT_EQ(pebble.rep.known.size(), truth.size()) << name;
+    for (std::size_t k = 0; k < truth.size(); ++k) {
+      const auto& a = pebble.rep.known[k];
+      const auto& b = truth[k];
+      EXPECT_TRUE(a.i == b.i && a.j == b.j && a.b_ij == b.b_ij && a.b_ji == b.b_ji) << name << " bitangent " << k;
+    }
     const auto approx = approximate_bitangents(m);
     std::vector<KnownBitangent> approx_true_only, true_plus_false;
     for (auto& a : approx) {
