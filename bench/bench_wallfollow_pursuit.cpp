@@ -89,9 +89,7 @@ void end_to_end(benchmark::State& state, std::size_t reflex, PursuitSensor senso
   PursuitReport rep;
   for (auto _ : state) {
     Simulator sim(c.env, c.env.vertex(0), geometry::Vector(1, 0));
-    Sensors s;
-    s.gap = sensor == PursuitSensor::Gap;
-    sim.enable(s);
+    sim.enable(sensors_of(sensor));
     PursuitOptions o;
     o.sensor = sensor;
     rep = pursue(sim, o);

@@ -248,7 +248,17 @@ void run_completeness(const CompletenessFlags& F) {
     std::vector<geometry::ExactPoint> path(sim.path().begin() + static_cast<long>(from), sim.path().end());
     return pursuit::check_exact_paths(env, pursuit::ExactPaths{path}).cleared;
   };
-  for (std::size_t k = 0; k < F.polygons; ++k) {
+  // A running tally on stderr every 100 polygons, so that a long run can be read (or
+  // stopped) part way.
+  auto report_progress = [&] {
+    if (t.tried % 100 != 0) return;
+    std::cerr << "completeness: " << t.tried << "/" << F.polygons << " tried, " << t.rejected << " rejected, " << t.budget
+              << " over budget; Strategy 2 solves " << t.gap << ", Strategy 6 " << t.none << "; Strategy 6 plans not clearing "
+              << t.none_wrong << "/" << t.none_checked << "; free pursuer missing " << t.free_missing << "; solved by 2 only:";
+    for (auto& c : counter) std::cerr << " " << c["seed"].get<std::uint64_t>();
+    std::cerr << std::endl;
+  };
+  for (std::size_t k = 0; k < F.polygons; ++k, report_progress()) {
     const std::uint64_t seed = F.seed + k;
     const std::size_t n = F.min_vertices + static_cast<std::size_t>(seed % (F.max_vertices - F.min_vertices + 1));
     ++t.tried;

@@ -28,14 +28,6 @@ PursuitSensor parse_sensor(const std::string& s) {
   throw InputError("--sensor: expected gap, bitangent, pebble or none, got '" + s + "'");
 }
 
-Sensors sensors_of(PursuitSensor s) {
-  Sensors out;
-  out.gap = s == PursuitSensor::Gap;
-  out.bitangent = s == PursuitSensor::Bitangent;
-  out.pebble_visibility = s == PursuitSensor::Pebble;
-  return out;
-}
-
 PursuitRun run_pursuit(const geometry::Environment& env, const geometry::Point& start, const geometry::Vector& heading,
                        PursuitSensor sensor, std::size_t max_states, bool check, std::size_t frames) {
   Simulator sim(env, start, heading);

@@ -14,7 +14,6 @@ namespace preimage::cli {
 
 const char* strategy_name(wallfollow::PursuitSensor s);
 wallfollow::PursuitSensor parse_sensor(const std::string& s);
-wallfollow::Sensors sensors_of(wallfollow::PursuitSensor s);
 
 struct PursuitRun {
   wallfollow::PursuitSensor sensor;

@@ -72,6 +72,7 @@ void search(const Position& start, const OrderingMap& m, Crossings&& crossings, 
 void search_compounds(const Position& start, const OrderingMap& m, const std::vector<KnownBitangent>& bitangents,
                       std::size_t max_states, PursuitReport& rep) {
   rep.bitangents = bitangents.size();
+  rep.known = bitangents;
   // The crossings of each move depend on its ends only: decided once.
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<RayCrossing>> memo;
   search(start, m, [&](const Position& from, Action, const Position& to) -> const std::vector<RayCrossing>& {

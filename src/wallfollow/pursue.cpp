@@ -14,6 +14,14 @@ const char* to_string(PursuitSensor s) {
   return "?";
 }
 
+Sensors sensors_of(PursuitSensor s) {
+  Sensors out;
+  out.gap = s == PursuitSensor::Gap;
+  out.bitangent = s == PursuitSensor::Bitangent;
+  out.pebble_visibility = s == PursuitSensor::Pebble;
+  return out;
+}
+
 PursuitReport pursue(RobotInterface& robot, const PursuitOptions& options) {
   PursuitReport rep;
   rep.learned = learn_cut_ordering(robot, options.learn);

@@ -7,8 +7,8 @@
 
 #include <cctype>
 #include <climits>
-#include <map>
 #include <cmath>
+#include <map>
 
 namespace preimage::wallfollow {
 

@@ -26,14 +26,6 @@ using geometry::Point;
 
 namespace {
 
-Sensors sensors_for(PursuitSensor s) {
-  Sensors out;
-  out.gap = s == PursuitSensor::Gap;
-  out.bitangent = s == PursuitSensor::Bitangent;
-  out.pebble_visibility = s == PursuitSensor::Pebble;
-  return out;
-}
-
 struct Outcome {
   PursuitReport rep;
   std::vector<geometry::ExactPoint> path;  // the executed plan
@@ -43,7 +35,7 @@ struct Outcome {
 // The strategy through the simulator, its plan executed and checked.
 Outcome run(const Environment& env, PursuitSensor s, const Point& start) {
   Simulator sim(env, start, geometry::Vector(1, 0.3));
-  sim.enable(sensors_for(s));
+  sim.enable(sensors_of(s));
   PursuitOptions o;
   o.sensor = s;
   Outcome r{pursue(sim, o), {}, std::nullopt};
@@ -478,4 +470,50 @@ TEST(WallFollowPursuit, Fig10SlidingPrimitiveIsNoGapEvent) {
   EXPECT_TRUE(geometry::visible(env, env.vertex(4), env.vertex(5)));
   for (const Bitangent& b : bitangents(env)) EXPECT_FALSE(b.i == 4 && b.j == 5);
   EXPECT_FALSE(bitangent_candidate(m, 4, 5));
+}
+
+TEST(WallFollowPursuit, Strategy6CounterexamplesAreClearedWithTheGapSensorOrThePebble) {
+  // Random polygons found by `wallfollow completeness`: Strategy 2 (and 5) clear them,
+  // Strategy 6 does not. Variants of Strategy 6's knowledge show which approximation
+  // loses the plan: the true bitangents with exact ends plan; candidates that are not
+  // bitangents, or approximated ends of true ones, are each enough to lose it here.
+  for (const char* name : {"s6_counterexample_28.json", "s6_counterexample_1596.json"}) {
+    const auto env = scene::load_scene(std::string(PREIMAGE_FIXTURES) + "/wallfollow/" + name).require_environment();
+    require_general_position(env);
+    const Point start = env.vertex(0);
+    const Outcome gap = run(env, PursuitSensor::Gap, start), pebble = run(env, PursuitSensor::Pebble, start),
+                  none = run(env, PursuitSensor::None, start);
+    EXPECT_EQ(gap.rep.outcome, PursuitReport::Outcome::Plan) << name;
+    EXPECT_TRUE(gap.cleared.value_or(false)) << name;
+    EXPECT_EQ(pebble.rep.outcome, PursuitReport::Outcome::Plan) << name;
+    EXPECT_EQ(none.rep.outcome, PursuitReport::Outcome::NoPlan) << name;
+    const OrderingMap m(true_cut_ordering(env).ordering);
+    const auto truth = true_bitangents(env, m);
+    // Strategy 4 learned every bitangent and where its rays end (the robot, starting at
+    // vertex 0, names vertices as the scene does).
+    ASSERT_EQ(pebble.rep.learned.ordering, m.ordering()) << name;
+    ASSERT_EQ(pebble.rep.known.size(), truth.size()) << name;
+    for (std::size_t k = 0; k < truth.size(); ++k) {
+      const auto& a = pebble.rep.known[k];
+      const auto& b = truth[k];
+      EXPECT_TRUE(a.i == b.i && a.j == b.j && a.b_ij == b.b_ij && a.b_ji == b.b_ji) << name << " bitangent " << k;
+    }
+    const auto approx = approximate_bitangents(m);
+    std::vector<KnownBitangent> approx_true_only, true_plus_false;
+    for (auto& a : approx) {
+      const auto t = std::find_if(truth.begin(), truth.end(), [&](auto& x) { return x.i == a.i && x.j == a.j; });
+      if (t != truth.end()) approx_true_only.push_back(a), true_plus_false.push_back(*t);
+      else true_plus_false.push_back(a);
+    }
+    auto plans = [&](const std::vector<KnownBitangent>& b) {
+      PursuitReport r;
+      search_compounds(Position{m.vertex(0), 0}, m, b, 20'000'000, r);
+      return r.outcome == PursuitReport::Outcome::Plan;
+    };
+    EXPECT_TRUE(plans(truth)) << name;
+    EXPECT_FALSE(plans(approx)) << name;
+    std::cout << name << ": " << truth.size() << " bitangents, " << approx.size() << " candidates; true bitangents with approximated ends: "
+              << (plans(approx_true_only) ? "plan" : "no plan") << "; exact ends plus the other candidates: "
+              << (plans(true_plus_false) ? "plan" : "no plan") << std::endl;
+  }
 }

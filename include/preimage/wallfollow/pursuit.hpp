@@ -172,6 +172,8 @@ void search_compounds(const Position& start, const OrderingMap& m, const std::ve
 
 enum class PursuitSensor { Gap, Bitangent, Pebble, None };
 const char* to_string(PursuitSensor s);
+/// The simulator's sensors a strategy needs (none beyond III.A for Strategy 6).
+Sensors sensors_of(PursuitSensor s);
 
 struct PursuitOptions {
   PursuitSensor sensor = PursuitSensor::Gap;
@@ -187,6 +189,7 @@ struct PursuitReport {
   std::vector<Action> plan;
   std::size_t states = 0;         // I-states explored
   std::size_t bitangents = 0;     // known to the strategy: sensed (3), learned (5), candidates (6)
+  std::vector<KnownBitangent> known;  // learned by Strategy 4 (5) or approximated (6), robot's labels
   /// The I-state after each plan action (start first): labels ("v3 0110"), or compounds and
   /// their labels ("v3 {L2 R5}:1 {L7}:0").
   std::vector<std::string> labels_along;

@@ -97,7 +97,7 @@ struct Sensors {
   bool bitangent = false;
 };
 
-struct SensorState;  // sensors.hpp
+struct SensorState;  // robot.cpp: what the section VI sensors need
 
 class Simulator final : public RobotInterface {
  public:
