@@ -403,41 +403,43 @@ void run_simulate(const std::string& file, std::uint64_t seed, std::size_t steps
 }  // namespace
 
 void add_beams_commands(CLI::App& app) {
-  auto* beams_cmd = app.add_subcommand("beams", "sensor beams: regions, region filter, possible paths (beams paper)");
+  auto* beams_cmd = app.add_subcommand("beams", "Sensor beams: regions, region filter, possible paths (beams paper)");
   beams_cmd->require_subcommand(1);
 
-  auto* g = beams_cmd->add_subcommand("graph", "regions of free space cut by the beams, and the crossing multigraph G");
+  auto* g = beams_cmd->add_subcommand("graph", "Regions of free space cut by the beams, and the crossing multigraph G");
+  set_examples(g, {"preimage beams graph examples/beams/fig03b_crossing.json --svg beams.svg", "preimage beams graph examples/beams/fig03b_crossing.json --dot"});
   static std::string g_file, g_svg;
   static bool g_json = false, g_dot = false, g_merged = false;
-  g->add_option("scene", g_file, "scene file (JSON)")->required();
-  auto* gj = g->add_flag("--json", g_json, "G as JSON");
+  g->add_option("scene", g_file, "Scene file (JSON)")->required();
+  auto* gj = add_json_flag(g, g_json, "G as JSON");
   g->add_flag("--dot", g_dot, "G as Graphviz DOT")->excludes(gj);
   g->add_flag("--merged", g_merged,
-              "merge parallel edges: one per (from, observation, to) listing its beam pieces (text, JSON), "
+              "Merge parallel edges: one per (from, observation, to) listing its beam pieces (text, JSON), "
               "one arrow per region pair with a list of labels (DOT, Fig. 7(b))");
-  g->add_option("--svg", g_svg, "draw regions and beams to this SVG file");
+  g->add_option("--svg", g_svg, "Draw regions and beams to this SVG file");
   g->callback([] { run_graph(g_file, g_json, g_dot, g_merged, g_svg); });
 
-  auto* f = beams_cmd->add_subcommand("filter", "possible regions (and region sequences) after a sensor word");
+  auto* f = beams_cmd->add_subcommand("filter", "Possible regions (and region sequences) after a sensor word");
+  set_examples(f, {"preimage beams filter examples/beams/fig03b_crossing.json --word \"a b c\"", "preimage beams filter examples/beams/fig01_six_beams.json --stream examples/beams/fig01_words.txt --json"});
   static FilterArgs fa;
-  f->add_option("scene", fa.file, "scene file (JSON)")->required();
-  auto* word = f->add_option("--word", fa.word, "sensor word: \"c b a' b\" or the one-character stream \"cba'b\" (\"\": no observation)");
-  auto* stream = f->add_option("--stream", fa.stream, "read the word from a file, or - for stdin, observation by observation")
+  f->add_option("scene", fa.file, "Scene file (JSON)")->required();
+  auto* word = f->add_option("--word", fa.word, "Sensor word: \"c b a' b\" or the one-character stream \"cba'b\" (\"\": no observation)");
+  auto* stream = f->add_option("--stream", fa.stream, "Read the word from a file, or - for stdin, observation by observation")
                      ->excludes(word);
-  f->add_option("--from", fa.from, "initial regions R_0 as ids, e.g. 0,3 (default: all)");
-  f->add_option("--at", fa.at, "initial region containing point X,Y (repeatable)");
+  f->add_option("--from", fa.from, "Initial regions R_0 as ids, e.g. 0,3 (default: all)");
+  f->add_option("--at", fa.at, "Initial region containing point X,Y (repeatable)");
   auto* bodies = add_count(f, "--bodies", fa.bodies, 1, 1000000000,
                            "number of bodies, observed anonymously: the product filter of 4.2");
-  f->add_flag("--distinguishable", fa.distinguishable, "track tuples (which body is where) instead of bodies per region")->needs(bodies);
-  f->add_flag("--together", fa.together, "all bodies start in the same region")->needs(bodies);
-  add_count(f, "--max-mb", fa.max_mb, 1, 1048576, "memory bound of the several-body I-state in MiB")->needs(bodies);
-  auto* seqs = f->add_flag("--sequences", fa.sequences, "count and list the possible region sequences (one body)")->excludes(bodies);
-  auto* limit = add_count(f, "--limit", fa.limit, 0, 1000000, "list at most this many sequences or assignments");
-  auto* sample = f->add_flag("--sample-path", fa.sample, "a sample path for the first possible sequence (one body)")->excludes(bodies);
-  auto* cached = f->add_flag("--cached", fa.cached, "compile the filter lazily into a subset automaton (one body)")->excludes(bodies);
-  add_count(f, "--cache-mb", fa.cache_mb, 1, 1048576, "memory bound of the cached mode in MiB")->needs(cached);
-  f->add_flag("--json", fa.as_json, "JSON output (JSON Lines with --stream: one record per observation, then the summary)");
-  f->add_option("--svg", fa.svg, "draw the final possible regions (and the sample path)");
+  f->add_flag("--distinguishable", fa.distinguishable, "Track tuples (which body is where) instead of bodies per region")->needs(bodies);
+  f->add_flag("--together", fa.together, "All bodies start in the same region")->needs(bodies);
+  add_count(f, "--max-mb", fa.max_mb, 1, 1048576, "Memory bound of the several-body I-state in MiB")->needs(bodies);
+  auto* seqs = f->add_flag("--sequences", fa.sequences, "Count and list the possible region sequences (one body)")->excludes(bodies);
+  auto* limit = add_count(f, "--limit", fa.limit, 0, 1000000, "List at most this many sequences or assignments");
+  auto* sample = f->add_flag("--sample-path", fa.sample, "A sample path for the first possible sequence (one body)")->excludes(bodies);
+  auto* cached = f->add_flag("--cached", fa.cached, "Compile the filter lazily into a subset automaton (one body)")->excludes(bodies);
+  add_count(f, "--cache-mb", fa.cache_mb, 1, 1048576, "Memory bound of the cached mode in MiB")->needs(cached);
+  add_json_flag(f, fa.as_json, "JSON output (JSON Lines with --stream: one record per observation, then the summary)");
+  f->add_option("--svg", fa.svg, "Draw the final possible regions (and the sample path)");
   f->callback([word, stream, bodies, seqs, limit, sample] {
     if (word->count() == 0 && stream->count() == 0) throw CLI::RequiredError("--word or --stream");
     if (limit->count() > 0 && seqs->count() == 0 && sample->count() == 0 && bodies->count() == 0)
@@ -447,27 +449,29 @@ void add_beams_commands(CLI::App& app) {
     run_filter(fa);
   });
 
-  auto* sm = beams_cmd->add_subcommand("simulate", "a random body path: its true word and regions, and the filter's answer");
+  auto* sm = beams_cmd->add_subcommand("simulate", "A random body path: its true word and regions, and the filter's answer");
+  set_examples(sm, {"preimage beams simulate examples/beams/fig01_six_beams.json --seed 3 --steps 20"});
   static std::string s_file, s_svg;
   static std::uint64_t s_seed = 1;
   static std::size_t s_steps = 20;
   static bool s_json = false;
-  sm->add_option("scene", s_file, "scene file (JSON)")->required();
-  add_count(sm, "--seed", s_seed, 0, INT64_MAX, "random seed");
-  add_count(sm, "--steps", s_steps, 0, 1000000, "path segments");
-  sm->add_flag("--json", s_json, "JSON output");
-  sm->add_option("--svg", s_svg, "draw the path and the final possible regions");
+  sm->add_option("scene", s_file, "Scene file (JSON)")->required();
+  add_count(sm, "--seed", s_seed, 0, INT64_MAX, "Random seed");
+  add_count(sm, "--steps", s_steps, 0, 1000000, "Path segments");
+  add_json_flag(sm, s_json, "JSON output");
+  sm->add_option("--svg", s_svg, "Draw the path and the final possible regions");
   sm->callback([] { run_simulate(s_file, s_seed, s_steps, s_json, s_svg); });
 
-  auto* lm = beams_cmd->add_subcommand("landmarks", "virtual beams of a landmark scene (paper section 3, Fig. 6)");
+  auto* lm = beams_cmd->add_subcommand("landmarks", "Virtual beams of a landmark scene (paper section 3, Fig. 6)");
+  set_examples(lm, {"preimage beams landmarks examples/beams/fig06b_landmarks_north.json --model north -o virtual.json"});
   static std::string l_file, l_out, l_model = "crossing";
   static bool l_undirected = false, l_indist = false;
-  lm->add_option("scene", l_file, "scene with landmarks and no environment")->required();
+  lm->add_option("scene", l_file, "Scene with landmarks and no environment")->required();
   lm->add_option("--model", l_model, "crossing (pairs of landmarks aligned, Fig. 6a) or north (landmark due south, Fig. 6b)")
       ->check(CLI::IsMember({"crossing", "north"}));
-  lm->add_flag("--undirected", l_undirected, "beams do not report the crossing direction");
-  lm->add_flag("--indistinguishable", l_indist, "crossing model: both beams of a pair share one label (Fig. 10)");
-  lm->add_option("-o,--output", l_out, "output scene file")->required();
+  lm->add_flag("--undirected", l_undirected, "Beams do not report the crossing direction");
+  lm->add_flag("--indistinguishable", l_indist, "Crossing model: both beams of a pair share one label (Fig. 10)");
+  lm->add_option("-o,--output", l_out, "Output scene file")->required();
   lm->callback([] {
     if (l_indist && l_model == "north")
       throw CLI::ValidationError("--indistinguishable", "only with --model crossing (north beams are one per landmark)");

@@ -9,6 +9,8 @@
 #include <preimage/filter/trellis.hpp>
 
 #include <iostream>
+#include <string_view>
+#include <vector>
 
 namespace preimage::cli {
 namespace {
@@ -233,16 +235,16 @@ void run_classes(const ClassArgs& a, bool winding_only) {
 }
 
 void add_class_options(CLI::App* c, ClassArgs& a) {
-  c->add_option("scene", a.file, "scene file (JSON)")->required();
-  c->add_option("--word", a.word, "sensor word: \"a b' c\" or the one-character stream \"ab'c\" (\"\": no observation)")->required();
-  auto* start = c->add_option("--start", a.start, "the path starts at X,Y (the basepoint of a loop)");
-  c->add_option("--end", a.end, "the path ends at X,Y (default: back at --start)")->needs(start);
-  c->add_flag("--open", a.open, "start and end anywhere: one group per (start, end) region pair")->excludes(start);
-  add_count(c, "--limit", a.limit, 0, 1000000, "list at most this many");
+  c->add_option("scene", a.file, "Scene file (JSON)")->required();
+  c->add_option("--word", a.word, "Sensor word: \"a b' c\" or the one-character stream \"ab'c\" (\"\": no observation)")->required();
+  auto* start = c->add_option("--start", a.start, "The path starts at X,Y (the basepoint of a loop)");
+  c->add_option("--end", a.end, "The path ends at X,Y (default: back at --start)")->needs(start);
+  c->add_flag("--open", a.open, "Start and end anywhere: one group per (start, end) region pair")->excludes(start);
+  add_count(c, "--limit", a.limit, 0, 1000000, "List at most this many");
   // A state takes at least 48 bytes (two state vectors and a hash-set node): 2^27 of them need over 6 GiB.
-  add_count(c, "--max-states", a.max_states, 1, std::int64_t(1) << 27, "give up beyond this many (start, region, class) states");
-  c->add_flag("--json", a.as_json, "JSON output");
-  c->add_option("--svg", a.svg, "draw the regions, the basis beams and their loops (Fig. 16)");
+  add_count(c, "--max-states", a.max_states, 1, std::int64_t(1) << 27, "Give up beyond this many (start, region, class) states");
+  add_json_flag(c, a.as_json, "JSON output");
+  c->add_option("--svg", a.svg, "Draw the regions, the basis beams and their loops (Fig. 16)");
 }
 
 // --basis tree renames the word along the scene's own beams, which gives one class per
@@ -260,6 +262,8 @@ void add_beams_homotopy_commands(CLI::App* beams_cmd) {
   // homotopy and winding share their options and differ in the group the classes live in.
   auto add = [beams_cmd](const char* name, const char* help, ClassArgs& a, const char* basis_help, bool winding_only) {
     auto* c = beams_cmd->add_subcommand(name, help);
+    set_examples(c, std::string_view(name) == "winding" ? std::vector<std::string>{"preimage beams winding examples/beams/fig01_six_beams.json --word cbabdeeefe --open"}
+                                                        : std::vector<std::string>{"preimage beams homotopy examples/beams/fig18_commutator.json --word \"a b a' b'\" --basis tree", "preimage beams homotopy examples/beams/fig01_six_beams.json --word cbabdeeefe --open"});
     add_class_options(c, a);
     c->add_option("--basis", a.basis, basis_help)->check(CLI::IsMember({"imaginary", "tree"}));
     c->callback([c, &a, winding_only] {

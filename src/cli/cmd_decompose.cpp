@@ -217,6 +217,7 @@ void run_cover(const CoverArgs& a) {
 void add_decompose_commands(CLI::App& app) {
   {
     auto* cmd = app.add_subcommand("decompose", "Exact cell decomposition of the free space, with its adjacency graph");
+    set_examples(cmd, {"preimage decompose examples/gallery.json --svg cells.svg", "preimage decompose examples/gallery.json --method boustrophedon --angle 30 --json"});
     auto path = std::make_shared<std::string>();
     auto method = std::make_shared<std::string>("trapezoidal");
     auto angle = std::make_shared<double>(0.0);
@@ -225,12 +226,13 @@ void add_decompose_commands(CLI::App& app) {
     cmd->add_option("scene", *path, "Scene JSON file")->required();
     cmd->add_option("--method", *method, "Decomposition method")->check(CLI::IsMember({"trapezoidal", "boustrophedon"}))->capture_default_str();
     cmd->add_option("--angle", *angle, "Sweep direction in degrees, counter-clockwise from +x (boustrophedon)");
-    cmd->add_flag("--json", *json_out, "Machine-readable output on stdout");
+    add_json_flag(cmd, *json_out, "Machine-readable output on stdout");
     cmd->add_option("--svg", *svg, "Draw cells, extensions and the adjacency graph to this SVG file");
     cmd->callback([=] { run_decompose(*path, *method, *angle, *json_out, *svg); });
   }
   {
     auto* cmd = app.add_subcommand("plan", "Collision-free path for a point or disc robot: shortest, or through the trapezoidal decomposition");
+    set_examples(cmd, {"preimage plan examples/gallery.json --start 0.5,7.5 --goal 11.5,0.5 --svg plan.svg", "preimage plan examples/gallery.json --start 0.5,7.5 --goal 11.5,0.5 --radius 0.2 --json"});
     auto path = std::make_shared<std::string>();
     auto start = std::make_shared<std::string>(), goal = std::make_shared<std::string>();
     auto method = std::make_shared<std::string>("shortest");
@@ -244,13 +246,14 @@ void add_decompose_commands(CLI::App& app) {
         ->check(number_in(0, geometry::kMaxCoordinate));
     cmd->add_option("--method", *method, "shortest (visibility graph) or trapezoidal (section 6.1)")
         ->check(CLI::IsMember({"shortest", "trapezoidal"}))->capture_default_str();
-    cmd->add_flag("--no-shorten", *no_shorten, "trapezoidal: keep the path through extension midpoints and cell centroids");
-    cmd->add_flag("--json", *json_out, "Machine-readable output on stdout");
+    cmd->add_flag("--no-shorten", *no_shorten, "Trapezoidal: keep the path through extension midpoints and cell centroids");
+    add_json_flag(cmd, *json_out, "Machine-readable output on stdout");
     cmd->add_option("--svg", *svg, "Draw the scene, the configuration space and the path to this SVG file");
     cmd->callback([=] { run_plan(*path, *start, *goal, *radius, *method, *no_shorten, *json_out, *svg); });
   }
   {
     auto* cmd = app.add_subcommand("cover", "Coverage path for a tool of width W (and a robot of radius r) on the boustrophedon decomposition");
+    set_examples(cmd, {"preimage cover examples/gallery.json --width 0.5 --svg cover.svg", "preimage cover examples/gallery.json --width 0.5 --radius 0.2 --angle auto --json"});
     auto a = std::make_shared<CoverArgs>();
     cmd->add_option("scene", a->path, "Scene JSON file")->required();
     cmd->add_option("--width", a->width, "Tool width w: laps are w apart (default: 2r)")->check(number_in(0, geometry::kMaxCoordinate, true));
@@ -262,7 +265,7 @@ void add_decompose_commands(CLI::App& app) {
         ->check(CLI::IsMember({"optimised", "dfs"}))->capture_default_str();
     cmd->add_option("--transit", a->transit, "shortest (visibility graph) or decomposition (trapezoid midpoints and centroids)")
         ->check(CLI::IsMember({"shortest", "decomposition"}))->capture_default_str();
-    cmd->add_flag("--json", a->json, "Machine-readable output on stdout");
+    add_json_flag(cmd, a->json, "Machine-readable output on stdout");
     cmd->add_option("--svg", a->svg, "Draw the configuration space and the coverage path to this SVG file");
     cmd->callback([a] { run_cover(*a); });
   }

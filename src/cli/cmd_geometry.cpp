@@ -158,14 +158,16 @@ void run_visibility(const std::string& path, const std::string& from, bool as_js
 void add_geometry_commands(CLI::App& app) {
   {
     auto* cmd = app.add_subcommand("validate", "Check a scene file: exact validity of the environment and every slot");
+    set_examples(cmd, {"preimage validate examples/gallery.json", "preimage validate examples/pursuit/pillar.json --json"});
     auto path = std::make_shared<std::string>();
     auto json_out = std::make_shared<bool>(false);
     cmd->add_option("scene", *path, "Scene JSON file")->required();
-    cmd->add_flag("--json", *json_out, "Machine-readable output on stdout");
+    add_json_flag(cmd, *json_out, "Machine-readable output on stdout");
     cmd->callback([=] { run_validate(*path, *json_out); });
   }
   {
     auto* cmd = app.add_subcommand("import", "Convert a floor plan into a preimage scene (validated)");
+    set_examples(cmd, {"preimage import examples/floorplans/house_expo_room_0000.json --from houseexpo -o house.json", "preimage import examples/room_with_pillar.visilibity.txt --from visilibity -o pillar.json"});
     auto in = std::make_shared<std::string>();
     auto from = std::make_shared<std::string>();
     auto out = std::make_shared<std::string>();
@@ -176,6 +178,7 @@ void add_geometry_commands(CLI::App& app) {
   }
   {
     auto* cmd = app.add_subcommand("render", "Draw a scene to SVG");
+    set_examples(cmd, {"preimage render examples/gallery.json -o gallery.svg", "preimage render examples/gallery.json -o triangles.svg --triangulation"});
     auto path = std::make_shared<std::string>();
     auto out = std::make_shared<std::string>();
     auto tri = std::make_shared<bool>(false);
@@ -186,13 +189,14 @@ void add_geometry_commands(CLI::App& app) {
   }
   {
     auto* cmd = app.add_subcommand("visibility", "Exact visibility polygon from a point (interior, on an edge, or at a vertex)");
+    set_examples(cmd, {"preimage visibility examples/gallery.json --from 1,1", "preimage visibility examples/gallery.json --from 1,1 --svg vis.svg --json"});
     auto path = std::make_shared<std::string>();
     auto from = std::make_shared<std::string>();
     auto json_out = std::make_shared<bool>(false);
     auto svg = std::make_shared<std::string>();
     cmd->add_option("scene", *path, "Scene JSON file")->required();
     cmd->add_option("--from", *from, "Viewpoint X,Y")->required();
-    cmd->add_flag("--json", *json_out, "Machine-readable output on stdout");
+    add_json_flag(cmd, *json_out, "Machine-readable output on stdout");
     cmd->add_option("--svg", *svg, "Also draw the polygon to this SVG file");
     cmd->callback([=] { run_visibility(*path, *from, *json_out, *svg); });
   }

@@ -409,65 +409,71 @@ constexpr std::int64_t kMaxOrderTypeWork = 50'000'000;
 }  // namespace
 
 void add_landmarks_commands(CLI::App& app) {
-  auto* cmd = app.add_subcommand("landmarks", "landmark order types from cyclic permutations (landmark paper)");
+  auto* cmd = app.add_subcommand("landmarks", "Landmark order types from cyclic permutations (landmark paper)");
   cmd->require_subcommand(1);
 
-  auto* o = cmd->add_subcommand("order-type", "the order type of the scene's landmarks: lambda, Lambda, hull, canonical labelling");
+  auto* o = cmd->add_subcommand("order-type", "The order type of the scene's landmarks: lambda, Lambda, hull, canonical labelling");
+  set_examples(o, {"preimage landmarks order-type examples/landmarks/eight.json"});
   static std::string o_file, o_start;
   static bool o_json = false, o_learn = false;
-  o->add_option("scene", o_file, "scene with landmarks (JSON)")->required();
-  o->add_flag("--json", o_json, "JSON output (with every Lambda(i, j), and the learned lambda with --learn)");
-  o->add_flag("--learn", o_learn, "also learn it with the simulated robot (Strategy 1) and print the primitive count");
-  o->add_option("--start", o_start, "the robot's start X,Y (default: the scene's start, else the first landmark)");
+  o->add_option("scene", o_file, "Scene with landmarks (JSON)")->required();
+  add_json_flag(o, o_json, "JSON output (with every Lambda(i, j), and the learned lambda with --learn)");
+  o->add_flag("--learn", o_learn, "Also learn it with the simulated robot (Strategy 1) and print the primitive count");
+  o->add_option("--start", o_start, "The robot's start X,Y (default: the scene's start, else the first landmark)");
   o->callback([] { run_order_type(o_file, o_json, o_learn, o_start); });
 
-  auto* h = cmd->add_subcommand("hull", "the convex hull boundary of the landmarks, counter-clockwise");
+  auto* h = cmd->add_subcommand("hull", "The convex hull boundary of the landmarks, counter-clockwise");
+  set_examples(h, {"preimage landmarks hull examples/landmarks/eight.json --learn"});
   static std::string h_file, h_start;
   static bool h_learn = false;
-  h->add_option("scene", h_file, "scene with landmarks (JSON)")->required();
-  h->add_flag("--learn", h_learn, "learn it with the simulated robot (Strategies 4-5) and print the primitive count");
-  h->add_option("--start", h_start, "the robot's start X,Y (default: the scene's start, else the first landmark)");
+  h->add_option("scene", h_file, "Scene with landmarks (JSON)")->required();
+  h->add_flag("--learn", h_learn, "Learn it with the simulated robot (Strategies 4-5) and print the primitive count");
+  h->add_option("--start", h_start, "The robot's start X,Y (default: the scene's start, else the first landmark)");
   h->callback([] { run_hull(h_file, h_learn, h_start); });
 
-  auto* p = cmd->add_subcommand("patrol", "the smallest patrol route keeping the watched landmarks inside (Strategy 6)");
+  auto* p = cmd->add_subcommand("patrol", "The smallest patrol route keeping the watched landmarks inside (Strategy 6)");
+  set_examples(p, {"preimage landmarks patrol examples/landmarks/eight.json --watch 3,7"});
   static std::string p_file, p_watch, p_start;
   static bool p_learn = false, p_json = false;
-  p->add_option("scene", p_file, "scene with landmarks (JSON)")->required();
-  p->add_option("--watch", p_watch, "labels of the landmarks to keep inside, e.g. 3,5,9")->required();
-  p->add_flag("--learn", p_learn, "plan from what the simulated robot learns on a hull tour; print the primitive count");
-  p->add_option("--start", p_start, "the robot's start X,Y (default: the scene's start, else the first landmark)");
-  p->add_flag("--json", p_json, "JSON output");
+  p->add_option("scene", p_file, "Scene with landmarks (JSON)")->required();
+  p->add_option("--watch", p_watch, "Labels of the landmarks to keep inside, e.g. 3,5,9")->required();
+  p->add_flag("--learn", p_learn, "Plan from what the simulated robot learns on a hull tour; print the primitive count");
+  p->add_option("--start", p_start, "The robot's start X,Y (default: the scene's start, else the first landmark)");
+  add_json_flag(p, p_json, "JSON output");
   p->callback([] { run_patrol(p_file, p_watch, p_learn, p_start, p_json); });
 
-  auto* nv = cmd->add_subcommand("navigate", "reach a cell reading a goal cyclic permutation, or report it unrealizable (Strategy 7)");
+  auto* nv = cmd->add_subcommand("navigate", "Reach a cell reading a goal cyclic permutation, or report it unrealizable (Strategy 7)");
+  set_examples(nv, {"preimage landmarks navigate examples/landmarks/six.json --goal 1,3,2,5,6,4 --svg navigate.svg"});
   static std::string n_file, n_goal, n_start, n_svg;
   static bool n_learn = false, n_json = false;
-  nv->add_option("scene", n_file, "scene with landmarks (JSON)")->required();
-  nv->add_option("--goal", n_goal, "the goal reading, counter-clockwise, e.g. \"1,3,2,5,8,6,7,4\"")->required();
-  nv->add_flag("--learn", n_learn, "run the simulated robot (hull tour, then Strategy 7) and print the primitive count");
-  nv->add_option("--start", n_start, "the robot's start X,Y (default: the scene's start, else the first landmark)");
-  nv->add_option("--svg", n_svg, "draw the swap cells, the goal cell and the robot's path");
-  nv->add_flag("--json", n_json, "JSON output");
+  nv->add_option("scene", n_file, "Scene with landmarks (JSON)")->required();
+  nv->add_option("--goal", n_goal, "The goal reading, counter-clockwise, e.g. \"1,3,2,5,8,6,7,4\"")->required();
+  nv->add_flag("--learn", n_learn, "Run the simulated robot (hull tour, then Strategy 7) and print the primitive count");
+  nv->add_option("--start", n_start, "The robot's start X,Y (default: the scene's start, else the first landmark)");
+  nv->add_option("--svg", n_svg, "Draw the swap cells, the goal cell and the robot's path");
+  add_json_flag(nv, n_json, "JSON output");
   nv->callback([] { run_navigate(n_file, n_goal, n_learn, n_start, n_svg, n_json); });
 
-  auto* sg = cmd->add_subcommand("swap-graph", "the swap cell decomposition and its dual, the swap graph (6.1, 7)");
+  auto* sg = cmd->add_subcommand("swap-graph", "The swap cell decomposition and its dual, the swap graph (6.1, 7)");
+  set_examples(sg, {"preimage landmarks swap-graph examples/landmarks/six.json --svg swap.svg"});
   static std::string g_file, g_start, g_svg;
   static bool g_learn = false, g_json = false;
-  sg->add_option("scene", g_file, "scene with landmarks (JSON)")->required();
-  sg->add_flag("--learn", g_learn, "also learn it with the simulated robot (Strategies 8 and 9) and print the primitive counts");
-  sg->add_option("--start", g_start, "the robot's start X,Y (default: the scene's start, else the first landmark)");
-  sg->add_flag("--json", g_json, "JSON output: every cell with its permutation, every edge with its swap");
-  sg->add_option("--svg", g_svg, "draw the decomposition");
+  sg->add_option("scene", g_file, "Scene with landmarks (JSON)")->required();
+  sg->add_flag("--learn", g_learn, "Also learn it with the simulated robot (Strategies 8 and 9) and print the primitive counts");
+  sg->add_option("--start", g_start, "The robot's start X,Y (default: the scene's start, else the first landmark)");
+  add_json_flag(sg, g_json, "JSON output: every cell with its permutation, every edge with its swap");
+  sg->add_option("--svg", g_svg, "Draw the decomposition");
   sg->callback([] { run_swap_graph(g_file, g_learn, g_start, g_json, g_svg); });
 
-  auto* c = cmd->add_subcommand("count-order-types", "distinct order types among random sets of N landmarks");
+  auto* c = cmd->add_subcommand("count-order-types", "Distinct order types among random sets of N landmarks");
+  set_examples(c, {"preimage landmarks count-order-types 5 --samples 2000"});
   static std::int64_t c_n = 0, c_samples = 1000, c_seed = 1;
-  c->add_option("N", c_n, "landmarks per set, 3 to 1000")->required()->check(integer_in(3, 1000));
+  c->add_option("N", c_n, "Landmarks per set, 3 to 1000")->required()->check(integer_in(3, 1000));
   auto* samples = add_count(c, "--samples", c_samples, 1, kMaxOrderTypeWork / 9,
                             "random sets to draw (default 1000, fewer for large N; samples * N^2 at most 5e7)");
-  add_count(c, "--seed", c_seed, 0, INT64_MAX, "random seed");
+  add_count(c, "--seed", c_seed, 0, INT64_MAX, "Random seed");
   static bool c_mirror = false;
-  c->add_flag("--mirror", c_mirror, "identify mirror images (count up to reflection too)");
+  c->add_flag("--mirror", c_mirror, "Identify mirror images (count up to reflection too)");
   c->callback([samples] {
     const std::int64_t most = kMaxOrderTypeWork / (c_n * c_n);
     if (samples->count() == 0) c_samples = std::min(c_samples, most);

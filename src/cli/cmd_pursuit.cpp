@@ -261,15 +261,17 @@ void add_pursuit_commands(CLI::App& app) {
   group->require_subcommand(1);
   {
     auto* cmd = group->add_subcommand("cells", "Conservative cells of 6.3 (critical rays, gaps, transitions)");
+    set_examples(cmd, {"preimage pursuit cells examples/pursuit/pillar.json --svg cells.svg"});
     auto file = std::make_shared<std::string>(), svg = std::make_shared<std::string>();
     auto as_json = std::make_shared<bool>(false);
     cmd->add_option("scene", *file, "Scene JSON file")->required();
-    cmd->add_flag("--json", *as_json, "Machine-readable output on stdout");
+    add_json_flag(cmd, *as_json, "Machine-readable output on stdout");
     cmd->add_option("--svg", *svg, "Draw the critical rays and cells to this SVG file");
     cmd->callback([=] { run_cells(*file, *as_json, *svg); });
   }
   {
     auto* cmd = group->add_subcommand("plan", "Search plan for pursuers (complete for one), or the split strategy");
+    set_examples(cmd, {"preimage pursuit plan examples/pursuit/three_arms.json", "preimage pursuit plan examples/pursuit/pillar.json --pursuers 2 --json > plan.json"});
     auto F = std::make_shared<PlanFlags>();
     cmd->add_option("scene", F->file, "Scene JSON file")->required();
     add_count(cmd, "--pursuers", F->pursuers, 1, 8, "Search with 1, 2, ... up to this many pursuers; report the least that succeeds");
@@ -279,12 +281,13 @@ void add_pursuit_commands(CLI::App& app) {
     cmd->add_flag("--any", F->any, "Any plan, not the shortest: states with fewer contaminated components first (still complete)");
     cmd->add_flag("--no-check", F->no_check, "Skip the independent contamination check of the plan");
     add_count(cmd, "--frames", F->frames, 1, 24, "Moments drawn in the --svg small multiples");
-    cmd->add_flag("--json", F->as_json, "Machine-readable output on stdout");
+    add_json_flag(cmd, F->as_json, "Machine-readable output on stdout");
     cmd->add_option("--svg", F->svg, "Draw the plan as small multiples (pursuers, V, contaminated regions) to this SVG file");
     cmd->callback([=] { run_plan(*F); });
   }
   {
     auto* cmd = group->add_subcommand("check", "Check pursuer paths with the independent contamination checker");
+    set_examples(cmd, {"preimage pursuit plan examples/pursuit/pillar.json --pursuers 2 --json > plan.json && preimage pursuit check examples/pursuit/pillar.json --path plan.json --svg check.svg"});
     auto file = std::make_shared<std::string>(), path = std::make_shared<std::string>(), svg = std::make_shared<std::string>();
     auto as_json = std::make_shared<bool>(false);
     auto frames = std::make_shared<std::size_t>(6);
@@ -292,7 +295,7 @@ void add_pursuit_commands(CLI::App& app) {
     cmd->add_option("--path", *path,
                     "JSON: one polyline [[x, y], ...], several [[[x, y], ...], ...] or {\"paths\": ...} (pursuers pass waypoint i together)")
         ->required();
-    cmd->add_flag("--json", *as_json, "Machine-readable output on stdout");
+    add_json_flag(cmd, *as_json, "Machine-readable output on stdout");
     cmd->add_option("--svg", *svg, "Draw the check as small multiples to this SVG file");
     add_count(cmd, "--frames", *frames, 1, 24, "Moments drawn in the --svg small multiples");
     cmd->callback([=] { run_check(*file, *path, *as_json, *svg, *frames); });

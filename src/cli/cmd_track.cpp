@@ -410,22 +410,23 @@ void run_replay(const std::string& file, bool as_json, double max_range, double 
 }  // namespace
 
 void add_track_commands(CLI::App& app) {
-  auto* cmd = app.add_subcommand("track", "real-time target tracking with the escape-path tree (tracking paper)");
+  auto* cmd = app.add_subcommand("track", "Real-time target tracking with the escape-path tree (tracking paper)");
   cmd->require_subcommand(1);
 
-  auto* e = cmd->add_subcommand("ept", "the observer's visibility polygon, the escape-path tree and the risk gradient");
+  auto* e = cmd->add_subcommand("ept", "The observer's visibility polygon, the escape-path tree and the risk gradient");
+  set_examples(e, {"preimage track ept examples/tracking/box.json --svg ept.svg"});
   static std::string e_file, e_obs, e_tgt, e_svg;
   static bool e_json = false;
   static double e_radius = 0;
   static int e_m = 0;
-  e->add_option("scene", e_file, "scene (JSON)")->required();
-  e->add_option("--observer", e_obs, "observer X,Y (default: $.tracking.observer)");
-  e->add_option("--target", e_tgt, "target X,Y (default: $.tracking.target)");
-  e->add_option("--radius", e_radius, "target radius delta (default: $.tracking.target_radius, else 0.2)")
+  e->add_option("scene", e_file, "Scene (JSON)")->required();
+  e->add_option("--observer", e_obs, "Observer X,Y (default: $.tracking.observer)");
+  e->add_option("--target", e_tgt, "Target X,Y (default: $.tracking.target)");
+  e->add_option("--radius", e_radius, "Target radius delta (default: $.tracking.target_radius, else 0.2)")
       ->check(number_in(0, 100, true));
-  add_count(e, "--m", e_m, 0, 16, "exponent m of equation (3)");
-  e->add_flag("--json", e_json, "JSON output");
-  e->add_option("--svg", e_svg, "draw V, the tree and -grad phi to this SVG file");
+  add_count(e, "--m", e_m, 0, 16, "Exponent m of equation (3)");
+  add_json_flag(e, e_json, "JSON output");
+  e->add_option("--svg", e_svg, "Draw V, the tree and -grad phi to this SVG file");
   e->callback([] { run_ept(e_file, e_obs, e_tgt, e_json, e_svg, e_radius, e_m); });
 
   const CLI::Validator fov_check(
@@ -434,60 +435,62 @@ void add_track_commands(CLI::App& app) {
       },
       "180|360");
 
-  auto* s = cmd->add_subcommand("simulate", "a closed-loop run: TRACK (or a baseline) against a moving target");
+  auto* s = cmd->add_subcommand("simulate", "A closed-loop run: TRACK (or a baseline) against a moving target");
+  set_examples(s, {"preimage track simulate examples/tracking/corridor.json --strategy risk --steps 300 --svg run.svg"});
   static std::string s_file, s_svg, s_log;
   static SimOptions so;
   static bool s_json = false;
-  s->add_option("scene", s_file, "scene with a $.tracking slot (JSON)")->required();
+  s->add_option("scene", s_file, "Scene with a $.tracking slot (JSON)")->required();
   s->add_option("--target-policy", so.policy, "scripted | random | adversarial | lookahead");
   s->add_option("--strategy", so.strategy, "risk (escape risk, eq. 6) | sde (eq. 2) | naive (steer at the target)");
   add_count(s, "--steps", so.steps, 1, 1000000, "TRACK iterations at 10 Hz");
-  add_count(s, "--seed", so.seed, 0, INT64_MAX, "seed of the range noise and of the random target");
-  s->add_option("--fov", so.fov, "sensor field of view: 360 or 180 degrees")->check(fov_check);
+  add_count(s, "--seed", so.seed, 0, INT64_MAX, "Seed of the range noise and of the random target");
+  s->add_option("--fov", so.fov, "Sensor field of view: 360 or 180 degrees")->check(fov_check);
   s->add_option("--aggregation", so.aggregation, "recursive (escape-path tree) | plain average of grad phi");
-  s->add_option("--accel", so.accel, "bound on the observer's linear acceleration, m/s^2 (default: none)")->check(number_in(0, 100, true));
-  s->add_option("--alpha", so.alpha, "bound on the observer's angular acceleration, rad/s^2 (default: none)")->check(number_in(0, 1000, true));
-  s->add_option("--speed-ratio", so.speed_ratio, "adversarial and lookahead target speed / observer top speed")
+  s->add_option("--accel", so.accel, "Bound on the observer's linear acceleration, m/s^2 (default: none)")->check(number_in(0, 100, true));
+  s->add_option("--alpha", so.alpha, "Bound on the observer's angular acceleration, rad/s^2 (default: none)")->check(number_in(0, 1000, true));
+  s->add_option("--speed-ratio", so.speed_ratio, "Adversarial and lookahead target speed / observer top speed")
       ->check(number_in(0, 10, true))->capture_default_str();
-  add_count(s, "--lookahead-steps", so.lookahead_steps, 1, 50, "steps the lookahead target simulates ahead");
-  add_count(s, "--headings", so.headings, 1, 360, "headings the lookahead target tries");
-  s->add_option("--start-spread", so.start_spread, "start observer and target up to this far off the scene's start, m (as evaluate does per seed)")
+  add_count(s, "--lookahead-steps", so.lookahead_steps, 1, 50, "Steps the lookahead target simulates ahead");
+  add_count(s, "--headings", so.headings, 1, 360, "Headings the lookahead target tries");
+  s->add_option("--start-spread", so.start_spread, "Start observer and target up to this far off the scene's start, m (as evaluate does per seed)")
       ->check(number_in(0, 100));
-  s->add_option("--heading-spread", so.heading_spread, "start heading up to this far off the scene's, degrees")->check(number_in(0, 180));
-  s->add_flag("--json", s_json, "JSON output with both trajectories and the commands");
-  s->add_option("--svg", s_svg, "draw both paths to this SVG file");
-  s->add_option("--log", s_log, "per step, one JSON line: tree, risk terms, gradient (and its check on the exact map), command");
+  s->add_option("--heading-spread", so.heading_spread, "Start heading up to this far off the scene's, degrees")->check(number_in(0, 180));
+  add_json_flag(s, s_json, "JSON output with both trajectories and the commands");
+  s->add_option("--svg", s_svg, "Draw both paths to this SVG file");
+  s->add_option("--log", s_log, "Per step, one JSON line: tree, risk terms, gradient (and its check on the exact map), command");
   s->callback([] { run_simulate(s_file, sim_params(so), s_svg, s_log, s_json); });
 
-  auto* v = cmd->add_subcommand("evaluate", "strategies x target policies x sensors x dynamics over many seeds");
+  auto* v = cmd->add_subcommand("evaluate", "Strategies x target policies x sensors x dynamics over many seeds");
+  set_examples(v, {"preimage track evaluate examples/tracking/box.json --seeds 5 --steps 100 --fov 360 --dynamics off"});
   static std::vector<std::string> v_files, v_policies, v_strategies, v_dynamics{"off", "on"};
   static std::vector<double> v_fovs{360, 180};
   static EvaluationParams ep;
   static bool v_json = false;
   static std::string v_cdf;
   ep.jobs = std::max(1u, std::thread::hardware_concurrency());
-  v->add_option("scenes", v_files, "scenes with a $.tracking slot")->required();
-  add_count(v, "--seeds", ep.seeds, 1, 10000, "runs per cell");
+  v->add_option("scenes", v_files, "Scenes with a $.tracking slot")->required();
+  add_count(v, "--seeds", ep.seeds, 1, 10000, "Runs per cell");
   add_count(v, "--steps", ep.steps, 1, 1000000, "TRACK iterations per run (10 Hz)");
-  v->add_option("--fov", v_fovs, "sensors: 360, 180 or both")->check(fov_check)->delimiter(',')->capture_default_str();
+  v->add_option("--fov", v_fovs, "Sensors: 360, 180 or both")->check(fov_check)->delimiter(',')->capture_default_str();
   v->add_option("--dynamics", v_dynamics, "off (kinematic), on (bounded accelerations) or both")
       ->check(CLI::IsMember({"off", "on"}))->delimiter(',')->capture_default_str();
-  v->add_option("--accel", ep.accel, "linear acceleration bound with dynamics, m/s^2")->check(number_in(0, 100, true))->capture_default_str();
-  v->add_option("--alpha", ep.alpha, "angular acceleration bound with dynamics, rad/s^2")->check(number_in(0, 1000, true))->capture_default_str();
-  v->add_option("--target-policy", v_policies, "policies (default: scripted,random,adversarial,lookahead)")->delimiter(',');
-  v->add_option("--strategy", v_strategies, "strategies (default: risk,sde,naive)")->delimiter(',');
-  v->add_option("--speed-ratio", ep.speed_ratio, "adversarial and lookahead target speed / observer top speed")
+  v->add_option("--accel", ep.accel, "Linear acceleration bound with dynamics, m/s^2")->check(number_in(0, 100, true))->capture_default_str();
+  v->add_option("--alpha", ep.alpha, "Angular acceleration bound with dynamics, rad/s^2")->check(number_in(0, 1000, true))->capture_default_str();
+  v->add_option("--target-policy", v_policies, "Policies (default: scripted,random,adversarial,lookahead)")->delimiter(',');
+  v->add_option("--strategy", v_strategies, "Strategies (default: risk,sde,naive)")->delimiter(',');
+  v->add_option("--speed-ratio", ep.speed_ratio, "Adversarial and lookahead target speed / observer top speed")
       ->check(number_in(0, 10, true))->capture_default_str();
-  add_count(v, "--lookahead-steps", ep.lookahead_steps, 1, 50, "steps the lookahead target simulates ahead");
-  add_count(v, "--headings", ep.lookahead_headings, 1, 360, "headings the lookahead target tries");
+  add_count(v, "--lookahead-steps", ep.lookahead_steps, 1, 50, "Steps the lookahead target simulates ahead");
+  add_count(v, "--headings", ep.lookahead_headings, 1, 360, "Headings the lookahead target tries");
   static double v_heading_spread = 15;
-  v->add_option("--start-spread", ep.start_spread, "each seed starts observer and target up to this far off the scene's start, m")
+  v->add_option("--start-spread", ep.start_spread, "Each seed starts observer and target up to this far off the scene's start, m")
       ->check(number_in(0, 100))->capture_default_str();
-  v->add_option("--heading-spread", v_heading_spread, "and the heading up to this far off, degrees")
+  v->add_option("--heading-spread", v_heading_spread, "And the heading up to this far off, degrees")
       ->check(number_in(0, 180))->capture_default_str();
-  add_count(v, "--jobs", ep.jobs, 1, 256, "worker threads (default: the cores)");
-  v->add_flag("--json", v_json, "JSON output: every cell with its escape times");
-  v->add_option("--cdf-svg", v_cdf, "draw the escape-time CDFs to this SVG file");
+  add_count(v, "--jobs", ep.jobs, 1, 256, "Worker threads (default: the cores)");
+  add_json_flag(v, v_json, "JSON output: every cell with its escape times");
+  v->add_option("--cdf-svg", v_cdf, "Draw the escape-time CDFs to this SVG file");
   v->callback([] {
     ep.heading_spread = v_heading_spread * M_PI / 180;
     ep.fovs = v_fovs;
@@ -505,14 +508,15 @@ void add_track_commands(CLI::App& app) {
   });
 
   auto* r = cmd->add_subcommand("replay", "TRACK's local map and escape-path tree on a recorded laser log (CARMEN or text)");
+  set_examples(r, {"preimage track replay examples/tracking/corridor_scans.txt", "preimage track replay examples/tracking/corridor_scans.txt --json"});
   static std::string r_file;
   static bool r_json = false;
   static double r_max = 50, r_radius = 0.2, r_ahead = 1.0;
-  r->add_option("log", r_file, "log file (.gz or plain; - for stdin)")->required();
-  r->add_option("--max-range", r_max, "saturation range for FLASER and text logs, m")->check(number_in(0, 1e4, true))->capture_default_str();
-  r->add_option("--radius", r_radius, "target radius for detection, m")->check(number_in(0, 100, true))->capture_default_str();
-  r->add_option("--ahead", r_ahead, "distance of the placed target when none is detected, m")->check(number_in(0, 1e4, true))->capture_default_str();
-  r->add_flag("--json", r_json, "one JSON object per scan (JSON Lines)");
+  r->add_option("log", r_file, "Log file (.gz or plain; - for stdin)")->required();
+  r->add_option("--max-range", r_max, "Saturation range for FLASER and text logs, m")->check(number_in(0, 1e4, true))->capture_default_str();
+  r->add_option("--radius", r_radius, "Target radius for detection, m")->check(number_in(0, 100, true))->capture_default_str();
+  r->add_option("--ahead", r_ahead, "Distance of the placed target when none is detected, m")->check(number_in(0, 1e4, true))->capture_default_str();
+  add_json_flag(r, r_json, "One JSON object per scan (JSON Lines)");
   r->callback([] { run_replay(r_file, r_json, r_max, r_radius, r_ahead); });
 }
 

@@ -330,57 +330,62 @@ void run_completeness(const CompletenessFlags& F) {
 }  // namespace
 
 void add_wallfollow_commands(CLI::App& app) {
-  auto* w = app.add_subcommand("wallfollow", "wall-following robot: simulator, I-maps, cut ordering, pursuit-evasion (wall-following paper)");
+  auto* w = app.add_subcommand("wallfollow", "Wall-following robot: simulator, I-maps, cut ordering, pursuit-evasion (wall-following paper)");
   w->require_subcommand(1);
   static std::string file, start, actions, sort = "quick", svg, pebble;
   static double heading = 0;
   static bool as_json = false, cw = false, learn = false;
   auto common = [&](CLI::App* c) {
-    c->add_option("scene", file, "scene file (JSON): a simple polygon, no three vertices collinear")->required();
-    c->add_option("--start", start, "robot start X,Y (default: the scene's start, else the first vertex)");
-    c->add_option("--heading", heading, "robot heading in degrees for INIT from the interior (default 0 = east)");
-    c->add_flag("--json", as_json, "JSON output");
+    c->add_option("scene", file, "Scene file (JSON): a simple polygon, no three vertices collinear")->required();
+    c->add_option("--start", start, "Robot start X,Y (default: the scene's start, else the first vertex)");
+    c->add_option("--heading", heading, "Robot heading in degrees for INIT from the interior (default 0 = east)");
+    add_json_flag(c, as_json, "JSON output");
   };
-  auto* s = w->add_subcommand("simulate", "apply actions; print each observation and the I-maps");
+  auto* s = w->add_subcommand("simulate", "Apply actions; print each observation and the I-maps");
+  set_examples(s, {"preimage wallfollow simulate examples/wallfollow/fig05_rooms.json --actions INIT,LFOLLOW,LFOLLOW,RFOLLOW"});
   common(s);
-  s->add_option("--actions", actions, "e.g. \"INIT,DROP,LFOLLOW,LFOLLOW,JUMP\"")->required();
-  s->add_option("--pebble", pebble, "the pebble lies at X,Y instead of being held");
+  s->add_option("--actions", actions, "E.g. \"INIT,DROP,LFOLLOW,LFOLLOW,JUMP\"")->required();
+  s->add_option("--pebble", pebble, "The pebble lies at X,Y instead of being held");
   s->callback([] { run_simulate(file, actions, start, heading, pebble, as_json); });
-  auto* c = w->add_subcommand("count", "vertex count and winding number from the I-maps (section IV)");
+  auto* c = w->add_subcommand("count", "Vertex count and winding number from the I-maps (section IV)");
+  set_examples(c, {"preimage wallfollow count examples/wallfollow/fig05_rooms.json"});
   common(c);
-  c->add_flag("--clockwise", cw, "follow with LFOLLOW (default RFOLLOW)");
+  c->add_flag("--clockwise", cw, "Follow with LFOLLOW (default RFOLLOW)");
   c->callback([] { run_count(file, start, heading, cw, as_json); });
-  auto* o = w->add_subcommand("cut-ordering", "the cut ordering from geometry, or learned by the robot (Strategy 1)");
+  auto* o = w->add_subcommand("cut-ordering", "The cut ordering from geometry, or learned by the robot (Strategy 1)");
+  set_examples(o, {"preimage wallfollow cut-ordering examples/wallfollow/fig05_rooms.json", "preimage wallfollow cut-ordering examples/wallfollow/fig05_rooms.json --learn --svg cuts.svg"});
   common(o);
-  o->add_flag("--learn", learn, "learn it through the robot's actions and sensors only");
-  o->add_option("--sort", sort, "with --learn: order endpoints on an edge by quick (default) or all-pairs comparisons");
-  o->add_option("--svg", svg, "draw the cut diagram (Fig. 4a)");
+  o->add_flag("--learn", learn, "Learn it through the robot's actions and sensors only");
+  o->add_option("--sort", sort, "With --learn: order endpoints on an edge by quick (default) or all-pairs comparisons");
+  o->add_option("--svg", svg, "Draw the cut diagram (Fig. 4a)");
   o->callback([] { run_cut_ordering(file, learn, sort, start, heading, as_json, svg); });
   {
     auto F = std::make_shared<PursueFlags>();
-    auto* p = w->add_subcommand("pursue", "pursuit-evasion (section VI): learn the cut ordering, plan, execute, check");
-    p->add_option("scene", F->file, "scene file (JSON): a simple polygon, no three vertices collinear")->required();
+    auto* p = w->add_subcommand("pursue", "Pursuit-evasion (section VI): learn the cut ordering, plan, execute, check");
+    set_examples(p, {"preimage wallfollow pursue examples/wallfollow/fig09_three_teeth.json --sensor bitangent --svg pursue.svg", "preimage wallfollow pursue examples/wallfollow/fig05_rooms.json --sensor none"});
+    p->add_option("scene", F->file, "Scene file (JSON): a simple polygon, no three vertices collinear")->required();
     p->add_option("--sensor", F->sensor, "gap (Strategy 2), bitangent (3), pebble (4 + 5) or none (6)")->capture_default_str();
-    p->add_option("--start", F->start, "robot start X,Y (default: the scene's start, else the first vertex)");
-    p->add_option("--heading", F->heading, "robot heading in degrees for INIT from the interior (default 0 = east)");
+    p->add_option("--start", F->start, "Robot start X,Y (default: the scene's start, else the first vertex)");
+    p->add_option("--heading", F->heading, "Robot heading in degrees for INIT from the interior (default 0 = east)");
     add_count(p, "--max-states", F->max_states, 1, 1'000'000'000, "I-states to store before giving up");
-    p->add_flag("--no-check", F->no_check, "skip the independent contamination check of the executed plan");
-    add_count(p, "--frames", F->frames, 1, 24, "moments drawn in the --svg small multiples");
-    p->add_flag("--json", F->as_json, "JSON output");
-    p->add_option("--svg", F->svg, "draw the cuts, bitangent rays and the plan, and the labels at a few moments");
+    p->add_flag("--no-check", F->no_check, "Skip the independent contamination check of the executed plan");
+    add_count(p, "--frames", F->frames, 1, 24, "Moments drawn in the --svg small multiples");
+    add_json_flag(p, F->as_json, "JSON output");
+    p->add_option("--svg", F->svg, "Draw the cuts, bitangent rays and the plan, and the labels at a few moments");
     p->callback([F] { run_pursue(*F); });
   }
   {
     auto F = std::make_shared<CompletenessFlags>();
     auto* c2 = w->add_subcommand("completeness", "Strategies 2 and 6 on random polygons: is Strategy 6 complete? (VI.E)");
-    add_count(c2, "--polygons", F->polygons, 1, 10'000'000, "random polygons to try");
-    c2->add_option("--seed", F->seed, "first seed (one polygon per seed)")->capture_default_str();
-    add_count(c2, "--min-vertices", F->min_vertices, 4, 10'000, "fewest vertices");
-    add_count(c2, "--max-vertices", F->max_vertices, 4, 10'000, "most vertices");
+    set_examples(c2, {"preimage wallfollow completeness --polygons 20 --max-vertices 12"});
+    add_count(c2, "--polygons", F->polygons, 1, 10'000'000, "Random polygons to try");
+    c2->add_option("--seed", F->seed, "First seed (one polygon per seed)")->capture_default_str();
+    add_count(c2, "--min-vertices", F->min_vertices, 4, 10'000, "Fewest vertices");
+    add_count(c2, "--max-vertices", F->max_vertices, 4, 10'000, "Most vertices");
     add_count(c2, "--max-states", F->max_states, 1, 1'000'000'000, "I-states per search before giving up (the polygon is skipped)");
-    c2->add_flag("--check-all", F->check_all, "also check Strategy 2's plans (Strategy 6's always are)");
-    c2->add_option("--save", F->save, "write every counter-example scene into this directory");
-    c2->add_flag("--json", F->as_json, "JSON output");
+    c2->add_flag("--check-all", F->check_all, "Also check Strategy 2's plans (Strategy 6's always are)");
+    c2->add_option("--save", F->save, "Write every counter-example scene into this directory");
+    add_json_flag(c2, F->as_json, "JSON output");
     c2->callback([F] { run_completeness(*F); });
   }
 }

@@ -2,6 +2,7 @@
 #include "common.hpp"
 
 #include <preimage/error.hpp>
+#include <preimage/scene/scene.hpp>
 
 #include <charconv>
 #include <cmath>
@@ -96,8 +97,30 @@ std::string count_of(std::size_t n, const std::string& singular, const std::stri
   return std::to_string(n) + " " + (n == 1 ? singular : plural.empty() ? singular + "s" : plural);
 }
 
+namespace {
+scene::JsonLayout json_layout = scene::JsonLayout::Compact;
+}
+
+void set_examples(CLI::App* cmd, const std::vector<std::string>& lines) {
+  std::string text = "Examples:\n";
+  for (const auto& line : lines) text += "  " + line + "\n";
+  cmd->footer(text);
+}
+
+CLI::Option* add_json_flag(CLI::App* cmd, bool& json, const std::string& help) {
+  CLI::Option* option = cmd->add_flag("--json", json, help);
+  cmd->add_flag_callback(
+      "--pretty",
+      [&json] {
+        json = true;
+        json_layout = scene::JsonLayout::Pretty;
+      },
+      "JSON indented for reading, short arrays on one line (implies --json)");
+  return option;
+}
+
 // File names (and other command-line text) need not be UTF-8: stray bytes print as U+FFFD.
-void print_json(const nlohmann::json& j) { std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n"; }
+void print_json(const nlohmann::json& j) { std::cout << scene::format_json(j, json_layout) << "\n"; }
 
 std::string tuple_string(std::span<const std::int64_t> v) {
   std::string s = "(";

@@ -41,7 +41,14 @@ CLI::Option* add_count(CLI::App* cmd, const std::string& name, T& value, std::in
   return cmd->add_option(name, value, help)->check(integer_in(lo, hi))->capture_default_str();
 }
 
-/// Prints JSON to stdout, pretty.
+/// "Examples:" closing the command's --help, each a command line that runs from the source
+/// checkout on shipped files (tests/cli/help_examples.sh runs every one).
+void set_examples(CLI::App* cmd, const std::vector<std::string>& lines);
+
+/// --json (bound to `json`) and --pretty (implies --json; indented output) on a command.
+CLI::Option* add_json_flag(CLI::App* cmd, bool& json, const std::string& help);
+/// Prints JSON to stdout: one compact line, or indented after --pretty. JSON Lines
+/// outputs (one record per observation or scan) stay one line per record.
 void print_json(const nlohmann::json& j);
 /// "1 obstacle", "3 obstacles"; "1 vertex", "2 vertices" with the plural given.
 std::string count_of(std::size_t n, const std::string& singular, const std::string& plural = "");

@@ -37,6 +37,7 @@ void run_demo(const std::string& out) {
 
 void add_demo_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("demo", "Run every module on built-in scenes and write an HTML report");
+  set_examples(cmd, {"preimage demo --out report"});
   auto out = std::make_shared<std::string>("preimage-demo");
   cmd->add_option("--out", *out, "Folder for the report (created if missing)")->capture_default_str();
   cmd->callback([=] { run_demo(*out); });

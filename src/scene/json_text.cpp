@@ -5,6 +5,7 @@
 
 #include <preimage/error.hpp>
 
+#include <algorithm>
 #include <vector>
 
 namespace preimage::scene {
@@ -97,6 +98,93 @@ json parse_json(const std::string& text, const std::string& source) {
     throw InputError(source + ": " + (tracker.error_path.empty() ? "$" : tracker.error_path) + ": number " +
                      tracker.error_token + " is outside the range of doubles");
   }
+}
+
+namespace {
+
+std::string scalar_text(const json& v) { return v.dump(-1, ' ', false, json::error_handler_t::replace); }
+
+// One line with ", " and ": " between items (easier to read than dump(-1)'s bare commas).
+std::string inline_text(const json& v) {
+  if (v.is_object()) {
+    std::string s = "{";
+    bool first = true;
+    for (const auto& [key, value] : v.items()) {
+      s.append(first ? "" : ", ").append(scalar_text(json(key))).append(": ").append(inline_text(value));
+      first = false;
+    }
+    return s + "}";
+  }
+  if (v.is_array()) {
+    std::string s = "[";
+    for (std::size_t i = 0; i < v.size(); ++i) s.append(i ? ", " : "").append(inline_text(v[i]));
+    return s + "]";
+  }
+  return scalar_text(v);
+}
+
+// An item short enough to share a line with its neighbours: a scalar or a point.
+constexpr std::size_t kFillItem = 32;
+
+// `column` is where the value starts on its line (after the indent and any "key": ).
+void pretty(const json& v, std::size_t indent, std::size_t column, std::size_t width, std::string& out) {
+  const std::string one_line = inline_text(v);
+  if (!v.is_structured() || v.empty() || column + one_line.size() <= width) {
+    out += one_line;
+    return;
+  }
+  const std::string inner(indent + 2, ' ');
+  if (v.is_object()) {
+    out += "{\n";
+    std::size_t k = 0;
+    for (const auto& [key, value] : v.items()) {
+      const std::string head = scalar_text(json(key)) + ": ";
+      out.append(inner).append(head);
+      pretty(value, indent + 2, inner.size() + head.size(), width, out);
+      out += ++k < v.size() ? ",\n" : "\n";
+    }
+  } else {
+    out += "[\n";
+    std::vector<std::string> items;
+    for (const auto& item : v) items.push_back(inline_text(item));
+    const bool fill = std::all_of(items.begin(), items.end(), [](const std::string& s) { return s.size() <= kFillItem; });
+    if (fill) {
+      std::size_t column = 0;
+      for (std::size_t i = 0; i < items.size(); ++i) {
+        const std::string piece = items[i] + (i + 1 < items.size() ? "," : "");
+        if (column > 0 && column + 1 + piece.size() > width) {
+          out += "\n";
+          column = 0;
+        }
+        if (column == 0) {
+          out += inner;
+          column = inner.size();
+        } else {
+          out += " ";
+          ++column;
+        }
+        out += piece;
+        column += piece.size();
+      }
+      out += "\n";
+    } else {
+      for (std::size_t i = 0; i < v.size(); ++i) {
+        out += inner;
+        pretty(v[i], indent + 2, inner.size(), width, out);
+        out += i + 1 < v.size() ? ",\n" : "\n";
+      }
+    }
+  }
+  out.append(indent, ' ').append(v.is_object() ? "}" : "]");
+}
+
+}  // namespace
+
+std::string format_json(const json& doc, JsonLayout layout, std::size_t width) {
+  if (layout == JsonLayout::Compact) return scalar_text(doc);
+  std::string out;
+  pretty(doc, 0, 0, width, out);
+  return out;
 }
 
 }  // namespace preimage::scene

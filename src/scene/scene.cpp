@@ -242,8 +242,7 @@ json to_json(const Scene& s) {
 void save_scene(const Scene& s, const std::string& path) {
   std::ofstream out(path);
   if (!out) throw InputError(path + ": cannot write file");
-  // A name taken from a file name may not be UTF-8: its stray bytes become U+FFFD.
-  out << to_json(s).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+  out << format_json(to_json(s), JsonLayout::Pretty) << "\n";
   if (!out) throw InputError(path + ": write error");
 }
 

@@ -12,19 +12,19 @@ cli_test(beams_graph 0 "G: 3 regions, 6 beams \\(6 labels\\), 0 beam crossings, 
          beams graph ${BEAMS}/fig01_six_beams.json)
 cli_test(beams_graph_fig3b 0 "G: 8 regions, 5 beams \\(4 labels\\), 3 beam crossings, 11 beam pieces, 22 edges \\(20 distinct" -
          beams graph ${BEAMS}/fig03b_crossing.json)
-cli_test(beams_graph_fig3b_json 0 "\"edges\": 22," - beams graph ${BEAMS}/fig03b_crossing.json --json)
-cli_test(beams_graph_fig3b_json_merged 0 "\"merged_edges\": 20," - beams graph ${BEAMS}/fig03b_crossing.json --json --merged)
+cli_test(beams_graph_fig3b_json 0 "\"edges\":22," - beams graph ${BEAMS}/fig03b_crossing.json --json)
+cli_test(beams_graph_fig3b_json_merged 0 "\"merged_edges\":20," - beams graph ${BEAMS}/fig03b_crossing.json --json --merged)
 # The undirected self-loop f: two crossings of one piece, told apart by their side.
 cli_test(beams_graph_self_loop_both_ways 0 "-f-> r1 \\(beam 5 piece 0, right to left\\) -f-> r1 \\(beam 5 piece 0, left to right\\)" -
          beams graph ${BEAMS}/fig01_six_beams.json)
 cli_test(beams_graph_dot 0 "r1 -> r0 \\[label=\"b \\(beam 1 piece 0, right to left\\)\"\\]" - beams graph ${BEAMS}/fig01_six_beams.json --dot)
 cli_test(beams_graph_dot_merged 0 "r0 -> r1 \\[label=\"a, b, c\"\\]" - beams graph ${BEAMS}/fig01_six_beams.json --dot --merged)
-cli_test(beams_graph_json_svg 0 "\"beam_crossings\": 3" ${OUT}/beams.svg beams graph ${BEAMS}/fig03b_crossing.json --json --svg ${OUT}/beams.svg)
+cli_test(beams_graph_json_svg 0 "\"beam_crossings\":3" ${OUT}/beams.svg beams graph ${BEAMS}/fig03b_crossing.json --json --svg ${OUT}/beams.svg)
 # Issue 32: two pieces labelled c joining the same two regions are 4 edges, not 2.
 cli_test(beams_graph_two_pieces_one_label 0 "2 beam pieces, 4 edges \\(2 distinct" - beams graph ${TWO_PIECES})
 cli_test(beams_graph_two_pieces_both_named 0 "^  r0 at \\(2\\.5, 5\\): -c-> r1 \\(beam 0 piece 0, left to right\\) -c-> r1 \\(beam 1 piece 0, right to left\\)$" -
          beams graph ${TWO_PIECES})
-cli_test(beams_graph_two_pieces_json 0 "\"edges\": 4," - beams graph ${TWO_PIECES} --json)
+cli_test(beams_graph_two_pieces_json 0 "\"edges\":4," - beams graph ${TWO_PIECES} --json)
 cli_test(beams_graph_two_pieces_dot 0 "r0 -> r1 \\[label=\"c \\(beam 1 piece 0, right to left\\)\"\\]" - beams graph ${TWO_PIECES} --dot)
 cli_test(beams_graph_two_pieces_merged 0 "^  r0 at \\(2\\.5, 5\\): -c-> r1$" - beams graph ${TWO_PIECES} --merged)
 
@@ -32,7 +32,7 @@ cli_test(beams_graph_two_pieces_merged 0 "^  r0 at \\(2\\.5, 5\\): -c-> r1$" - b
 cli_test(beams_filter_fig1 0 "possible regions after 10 observations: r2 \\(1 of 3\\)" - beams filter ${BEAMS}/fig01_six_beams.json --word cbabdeeefe)
 cli_test(beams_filter_sequences 0 "possible region sequences: 1" ${OUT}/fig1.svg
          beams filter ${BEAMS}/fig01_six_beams.json --word cbabdeeefe --sequences --sample-path --svg ${OUT}/fig1.svg)
-cli_test(beams_filter_cached_json 0 "\"mode\": \"cached\"" - beams filter ${BEAMS}/fig03b_crossing.json --word "a b c" --cached --json)
+cli_test(beams_filter_cached_json 0 "\"mode\":\"cached\"" - beams filter ${BEAMS}/fig03b_crossing.json --word "a b c" --cached --json)
 cli_test(beams_filter_stream 0 "3 a: 2 possible: r0 r1" ${BEAMS}/fig01_words.txt beams filter ${BEAMS}/fig01_six_beams.json --stream ${BEAMS}/fig01_words.txt)
 # --stream --json is JSON Lines: one record per observation as it arrives, then the summary.
 cli_test(beams_filter_stream_json_lines 0 "^\\{\"observation\":1,\"regions\":\\[0,1\\],\"token\":\"c\"\\}$" -
@@ -71,8 +71,8 @@ cli_test(beams_two_bodies 0 "Fig. 11 filter \\(4 I-states\\): D_a. the product f
 # before a bad token are printed before the one-line error.
 cli_test(beams_two_bodies_stream_bad_tail fail "4 a: 1 possible assignments" -
          beams filter ${BEAMS}/fig11_ring.json --stream ${FIX}/words/fig11_bad_tail.txt --bodies 2 --together)
-cli_test(beams_two_bodies_json 0 "\"count\": 26," - beams filter ${BEAMS}/fig11_ring.json --word "a b" --bodies 3 --distinguishable --json --limit 2)
-cli_test(beams_two_bodies_json_limit 0 "\"listed\": 2," - beams filter ${BEAMS}/fig11_ring.json --word "a b" --bodies 3 --distinguishable --json --limit 2)
+cli_test(beams_two_bodies_json 0 "\"count\":26," - beams filter ${BEAMS}/fig11_ring.json --word "a b" --bodies 3 --distinguishable --json --limit 2)
+cli_test(beams_two_bodies_json_limit 0 "\"listed\":2," - beams filter ${BEAMS}/fig11_ring.json --word "a b" --bodies 3 --distinguishable --json --limit 2)
 cli_test(beams_two_bodies_stream_json_lines 0 "^\\{\"count\":2,\"observation\":3,\"token\":\"c\"\\}$" -
          beams filter ${BEAMS}/fig11_ring.json --stream ${FIX}/words/fig11_together.txt --bodies 2 --together --json)
 cli_test(beams_two_bodies_stream_json_lines_summary 0 "^\\{\"bodies\":2,.*\"fig11_filter\":\"D_a\",.*\"multisets\":\\[\\[\\[0,1\\],\\[2,1\\]\\]\\],.*\\}$" -
@@ -120,10 +120,10 @@ cli_test(beams_homotopy_commutator 0 "^  r0: o1 o2 o1' o2'   winding \\(0, 0\\)$
          beams homotopy ${BEAMS}/fig18_commutator.json --word "a b a' b'")
 cli_test(beams_homotopy_commutator_tree 0 "^homotopy class: a b a' b'$" -
          beams homotopy ${BEAMS}/fig18_commutator.json --word "a b a' b'" --basis tree)
-cli_test(beams_homotopy_tree_json 0 "\"word\": \"a b a' b'\"" - beams homotopy ${BEAMS}/fig18_commutator.json --word "a b a' b'" --basis tree --json)
+cli_test(beams_homotopy_tree_json 0 "\"word\":\"a b a' b'\"" - beams homotopy ${BEAMS}/fig18_commutator.json --word "a b a' b'" --basis tree --json)
 cli_test(beams_homotopy_tree_drops 0 "c: .*joins o3 .*. winds \\+1 around o3 o4$" ${OUT}/tree.svg
          beams homotopy ${BEAMS}/fig15_tree.json --word "c d' a b' e'" --basis tree --svg ${OUT}/tree.svg)
-cli_test(beams_homotopy_fig1_open 0 "\"count\": 2," - beams homotopy ${BEAMS}/fig01_six_beams.json --word cbabdeeefe --open --json)
+cli_test(beams_homotopy_fig1_open 0 "\"count\":2," - beams homotopy ${BEAMS}/fig01_six_beams.json --word cbabdeeefe --open --json)
 cli_test(beams_homotopy_limit 0 "listed 1 of 2. raise --limit" ${OUT}/fig1-basis.svg
          beams homotopy ${BEAMS}/fig01_six_beams.json --word cbabdeeefed --limit 1 --svg ${OUT}/fig1-basis.svg)
 cli_test(beams_homotopy_fixed_ends 0 "^region sequences: 1. homotopy classes: 2$" -

@@ -7,7 +7,7 @@ cli_test(validate_example 0 "ok: .*gallery.json: 20 vertices .* 3 obstacles" - v
 cli_test(validate_names_equal_x 0 "not in general position: .* have equal x-coordinates" - validate ${FIX}/scenes/stacked_vertical_vertices.json)
 cli_test(visibility_huge_coordinates fail "^preimage: \\$\\.environment\\.boundary\\[0\\]\\[0\\]: coordinate .* outside the supported range" -
          visibility ${FIX}/scenes/huge_coordinates.json --from 5,5)
-cli_test(validate_json 0 "\"obstacles\": 3" - validate ${EXAMPLES}/gallery.json --json)
+cli_test(validate_json 0 "\"obstacles\":3" - validate ${EXAMPLES}/gallery.json --json)
 cli_test(validate_self_intersecting fail "^preimage: \\$\\.environment\\.boundary: edges 1 and 3 intersect near \\(1, 1\\)$" -
          validate ${FIX}/scenes/self_intersecting.json)
 cli_test(validate_unknown_key fail "\\$\\.environment\\.walls: unknown key" - validate ${FIX}/scenes/unknown_key.json)
@@ -23,14 +23,14 @@ cli_test(import_unknown_format fail "--from: unknown format 'dxf'" - import ${FI
 cli_test(render 0 "wrote" ${OUT}/gallery.svg render ${EXAMPLES}/gallery.json -o ${OUT}/gallery.svg --triangulation)
 cli_test(visibility_text 0 "visibility polygon from \\(1, 1\\) \\(interior\\): [0-9]+ vertices" -
          visibility ${EXAMPLES}/gallery.json --from 1,1)
-cli_test(visibility_json 0 "\"kind\": \"free\"" - visibility ${EXAMPLES}/gallery.json --from 1,1 --json)
+cli_test(visibility_json 0 "\"kind\":\"free\"" - visibility ${EXAMPLES}/gallery.json --from 1,1 --json)
 cli_test(visibility_on_edge 0 "\\(on-edge\\)" - visibility ${EXAMPLES}/gallery.json --from 12,2)
 cli_test(visibility_at_vertex 0 "\\(at-vertex\\)" - visibility ${EXAMPLES}/gallery.json --from 3,3)
 cli_test(visibility_svg 0 "wrote" ${OUT}/vis.svg visibility ${EXAMPLES}/gallery.json --from 1,1 --svg ${OUT}/vis.svg)
 cli_test(visibility_in_obstacle fail "query point \\(2.5, 2.5\\) is not in free space: it lies inside \\$\\.environment\\.obstacles\\[0\\]$" - visibility ${EXAMPLES}/gallery.json --from 2.5,2.5)
 cli_test(visibility_bad_point fail "--from: expected X,Y" - visibility ${EXAMPLES}/gallery.json --from 1:2)
 cli_test(decompose_text 0 "trapezoidal decomposition: 12 cells, 14 adjacencies" - decompose ${EXAMPLES}/gallery.json)
-cli_test(decompose_json 0 "\"method\": \"trapezoidal\"" - decompose ${EXAMPLES}/gallery.json --json)
+cli_test(decompose_json 0 "\"method\":\"trapezoidal\"" - decompose ${EXAMPLES}/gallery.json --json)
 cli_test(decompose_svg 0 "wrote" ${OUT}/decompose.svg decompose ${EXAMPLES}/gallery.json --svg ${OUT}/decompose.svg)
 cli_test(decompose_office 0 "cells" - decompose ${FIX}/scenes/office_walls.json)
 cli_test(decompose_boustrophedon 0 "10 cells \\(12 trapezoids\\), 8 critical points.*10 = 8 \\+ 3 - 1" - decompose ${EXAMPLES}/gallery.json --method boustrophedon)
@@ -54,7 +54,7 @@ cli_test(cover_stacked_vertices 0 "coverage with width 0.3" - cover ${FIX}/scene
 cli_test(plan_stacked_vertices 0 "path from \\(0.5, 0.5\\) to \\(5.5, 5.5\\)" - plan ${FIX}/scenes/stacked_vertical_vertices.json)
 cli_test(decompose_unknown_method fail "--method" - decompose ${EXAMPLES}/gallery.json --method voronoi)
 cli_test(plan_scene_start_goal 0 "path from \\(1, 1\\) to \\(11, 7\\) for a robot of radius 0.25: [0-9]+ points" - plan ${EXAMPLES}/gallery.json)
-cli_test(plan_flags_json 0 "\"found\": true" ${OUT}/plan.svg plan ${EXAMPLES}/gallery.json --start 0.5,7.5 --goal 11.5,0.5 --json --svg ${OUT}/plan.svg)
+cli_test(plan_flags_json 0 "\"found\":true" ${OUT}/plan.svg plan ${EXAMPLES}/gallery.json --start 0.5,7.5 --goal 11.5,0.5 --json --svg ${OUT}/plan.svg)
 cli_test(plan_start_in_obstacle fail "start \\(2.5, 2.5\\) is not in free space: it lies inside \\$\\.environment\\.obstacles\\[0\\]" -
          plan ${EXAMPLES}/gallery.json --start 2.5,2.5)
 cli_test(demo 0 "index\\.html" ${OUT}/demo/index.html demo --out ${OUT}/demo)
@@ -66,7 +66,7 @@ cli_test(import_houseexpo_1451 0 "wrote .*: 434 vertices" ${OUT}/house1451.json
          import ${FLOORPLANS}/house_expo_room_1451.json --from houseexpo -o ${OUT}/house1451.json)
 cli_test(validate_imported_houseexpo 0 "ok: .*147 vertices" - validate ${OUT}/house0000.json)
 set_tests_properties(cli.validate_imported_houseexpo PROPERTIES DEPENDS cli.import_houseexpo_0000)
-cli_test(visibility_houseexpo 0 "\"location\": \"interior\"" - visibility ${OUT}/house1451.json --from 3,3 --json)
+cli_test(visibility_houseexpo 0 "\"location\":\"interior\"" - visibility ${OUT}/house1451.json --from 3,3 --json)
 set_tests_properties(cli.visibility_houseexpo PROPERTIES DEPENDS cli.import_houseexpo_1451)
 cli_test(decompose_houseexpo 0 "26 cells \\(225 trapezoids\\), 27 critical points" - decompose ${OUT}/house1451.json --method boustrophedon)
 cli_test(plan_houseexpo 0 "path from \\(1, 1\\) to \\(9, 7\\)" - plan ${OUT}/house1451.json --start 1,1 --goal 9,7)
@@ -77,8 +77,13 @@ cli_test(cover_houseexpo_1451_corners_inside 0 "covered (99\\.[5-9][0-9]*|100)% 
 set_tests_properties(cli.decompose_houseexpo cli.plan_houseexpo cli.cover_houseexpo cli.cover_houseexpo_1451_corners_inside
                      PROPERTIES DEPENDS cli.import_houseexpo_1451)
 
-# README's "Using it" block, as written.
-add_test(NAME cli.readme_examples COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/cli/readme.sh ${PROJECT_SOURCE_DIR} $<TARGET_FILE:preimage_cli>)
+# Issue 23: every command line of README.md and docs/*.md (```sh blocks) and every example in
+# a subcommand's --help runs as written on the shipped files, so none can drift.
+add_test(NAME cli.doc_examples COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/cli/doc_examples.sh ${PROJECT_SOURCE_DIR} $<TARGET_FILE:preimage_cli> docs)
+add_test(NAME cli.help_examples COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/cli/doc_examples.sh ${PROJECT_SOURCE_DIR} $<TARGET_FILE:preimage_cli> help)
+# JSON is one compact line by default; --pretty indents it and keeps short arrays on a line.
+cli_test(json_compact_by_default 0 "^\\{\"[a-z_]+\":.*\\}$" - validate ${EXAMPLES}/gallery.json --json)
+cli_test(json_pretty 0 "^  \"[a-z_]+\": " - validate ${EXAMPLES}/gallery.json --pretty)
 
 # Issue 26: a tiny tool width implied billions of laps (and the lap placement was quadratic
 # in them); widths below 1e-5 of the environment's diameter are refused up front.

@@ -8,7 +8,7 @@ cli_test(pursuit_plan_hole 0 "no plan with one pursuer exists \\(complete search
          pursuit plan ${PE}/pillar.json)
 cli_test(pursuit_plan_two 0 "plan with 2 pursuers: [0-9]+ crossings" ${OUT}/pursuit-pillar.svg
          pursuit plan ${PE}/pillar.json --pursuers 3 --svg ${OUT}/pursuit-pillar.svg)
-cli_test(pursuit_plan_gallery_json 0 "\"cleared\": true" - pursuit plan ${EXAMPLES}/gallery.json --pursuers 2 --json)
+cli_test(pursuit_plan_gallery_json 0 "\"cleared\":true" - pursuit plan ${EXAMPLES}/gallery.json --pursuers 2 --json)
 cli_test(pursuit_plan_one 0 "independent check: cleared" - pursuit plan ${PE}/corridor_rooms.json)
 cli_test(pursuit_plan_three_arms_one 0 "no plan with one pursuer exists" - pursuit plan ${PE}/three_arms.json)
 cli_test(pursuit_plan_three_arms 0 "plan with 2 pursuers" - pursuit plan ${PE}/three_arms.json --pursuers 2 --no-check)
@@ -24,7 +24,7 @@ cli_test(pursuit_check_cleared 0 "2 pursuers, 3 waypoints: cleared" ${OUT}/pursu
          pursuit check ${PE}/pillar.json --path ${FIX}/pursuit/pillar_two_pursuers.json --svg ${OUT}/pursuit-check.svg)
 cli_test(pursuit_check_loop 0 "NOT cleared: 1 region contaminated at the end" -
          pursuit check ${PE}/pillar.json --path ${FIX}/pursuit/pillar_one_pursuer_loop.json)
-cli_test(pursuit_check_json 0 "\"cleared\": false" - pursuit check ${PE}/pillar.json --path ${FIX}/pursuit/pillar_one_pursuer_loop.json --json)
+cli_test(pursuit_check_json 0 "\"cleared\":false" - pursuit check ${PE}/pillar.json --path ${FIX}/pursuit/pillar_one_pursuer_loop.json --json)
 cli_test(pursuit_check_bad_point fail "bad_point.json: \\$\\.paths\\[0\\]\\[1\\]: expected \\[x, y\\]" -
          pursuit check ${PE}/pillar.json --path ${FIX}/pursuit/bad_point.json)
 cli_test(pursuit_check_through_pillar fail "path: pursuer 1 segment 0 from \\(1, 1\\) to \\(5, 5\\) leaves free space" -

@@ -82,4 +82,12 @@ std::string read_file(const std::string& path);
 /// the range of doubles". Every reader of JSON input goes through it.
 nlohmann::json parse_json(const std::string& text, const std::string& source);
 
+/// Document to JSON text. Compact: one line, no spaces (what the CLI prints by default).
+/// Pretty: indented, but every value that fits in `width` columns stays on one line and
+/// arrays of short items (numbers, points) fill their lines, so a floor plan reads as a
+/// few lines per ring rather than one number per line (what scene files and --pretty use).
+/// Text that is not UTF-8 (a name taken from a file name) prints as U+FFFD.
+enum class JsonLayout { Compact, Pretty };
+std::string format_json(const nlohmann::json& doc, JsonLayout layout, std::size_t width = 100);
+
 }  // namespace preimage::scene
