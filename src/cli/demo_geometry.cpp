@@ -45,18 +45,23 @@ void demo_geometry(DemoContext& ctx) {
   const View views[] = {{Point(2.0, 2.7), "interior point", "#f4b400"},
                         {Point(10.0, 8.0), "point on the outer wall", "#34a853"},
                         {env.vertex(jamb), "wall corner (a vertex)", "#4285f4"}};
-  render::SvgCanvas c(render::scene_box(office));
-  render::draw_scene(c, office);
+  // One panel per viewpoint: three translucent polygons overlaid mix into colours no
+  // legend explains.
+  std::vector<std::string> panels;
   for (const View& v : views) {
+    render::SvgCanvas c(render::scene_box(office), 360);
+    render::draw_scene(c, office);
     const VisibilityPolygon vp = index.compute(v.q);
     std::size_t free = 0;
     for (auto& e : vp.edges) free += e.kind == VisibilityEdge::Kind::Free;
     render::draw_visibility(c, vp, v.colour, std::string("V(q) from the ") + v.what);
+    panels.push_back(c.str());
     R.result("Visibility from the " + std::string(v.what) + " " + format_point(v.q) + " [" + to_string(vp.location.kind) +
              "]: " + std::to_string(vp.vertices.size()) + " vertices, " + std::to_string(free) +
              " free edges (occlusion gaps), area " + format_number(vp.area()) + ".");
   }
-  ctx.figure("geometry-visibility.svg", c.str(), "Visibility polygons from an interior point, a wall point and a wall corner");
+  ctx.figure("geometry-visibility.svg", render::panel_grid(panels, 3),
+             "Visibility polygons from an interior point, a wall point and a wall corner");
 
   // Cross-check on a random environment with holes: V(q) membership vs the O(n) two-point test.
   const Environment rnd = generators::random_environment(600, 8, 2026);

@@ -38,8 +38,19 @@ void demo_wallfollow(DemoContext& ctx) {
            "learned " + L.ordering.str() + " (v1 = where it dropped the pebble; eq. 13 is this relabelling) with " +
            std::to_string(L.actions) + " primitives and " + std::to_string(L.comparisons) +
            " pebble comparisons; equal up to relabelling: " + (same ? "yes" : "NO") + ".");
-  ctx.figure("wallfollow-cut-diagram.svg", cut_diagram(L.ordering, "learned cut ordering").str(),
-             "Cut diagram (Fig. 4a) of the learned ordering: chords cross exactly where cuts cross (Prop. 4)");
+  // The robot names the pebble's vertex v1; draw what it learned with the figure's names
+  // (the relabelling that makes the two equal), so both figures say v2 and v5.
+  std::size_t shift = 0;
+  while (shift < L.ordering.n && L.ordering.relabelled(shift) != T.ordering) ++shift;
+  const bool named = shift < L.ordering.n;
+  ctx.figure("wallfollow-cut-diagram.svg",
+             cut_diagram(named ? L.ordering.relabelled(shift) : L.ordering,
+                         named ? "learned cut ordering, in the names of Fig. 3" : "learned cut ordering (robot's names)")
+                 .str(),
+             "Cut diagram (Fig. 4a) of the learned ordering: chords cross exactly where cuts cross (Prop. 4)" +
+                 std::string(named ? "; the robot's v1 is v" + std::to_string((L.ordering.n - shift) % L.ordering.n + 1) +
+                                         " of Fig. 3, relabelled here"
+                                   : ""));
 }
 
 }  // namespace preimage::cli

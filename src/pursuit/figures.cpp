@@ -64,22 +64,8 @@ std::string plan_frames_figure(const geometry::Environment& env, const Paths& pa
   const std::size_t panels = frames.size() + (first_panel ? 1 : 0);
   columns = std::max<std::size_t>(1, std::min(columns, panels));
   const double panel = kFramePanelWidth;
-  std::string body;
-  double width = 0, height = 0, row_h = 0, x = 0;
-  auto place = [&](std::string svg, std::size_t i) {
-    const std::size_t col = i % columns;
-    if (col == 0) height += row_h, row_h = 0, x = 0;
-    // Nest the panel: its root element placed at its grid position (panels with axes are
-    // wider than `panel`).
-    const double w = std::stod(svg.substr(svg.find("width=\"") + 7));
-    const double h = std::stod(svg.substr(svg.find("height=\"") + 8));
-    row_h = std::max(row_h, h + 8);
-    svg.replace(0, 4, "<svg x=\"" + std::to_string(x) + "\" y=\"" + std::to_string(height) + "\"");
-    body += svg;
-    width = std::max(width, x + w);
-    x += w + 8;
-  };
-  if (first_panel) place(first_panel->str(), 0);
+  std::vector<std::string> drawn;
+  if (first_panel) drawn.push_back(first_panel->str());
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const auto& f = frames[i];
     const CGAL::Bbox_2 box = padded(env, 0.1);  // room for the caption above
@@ -101,15 +87,10 @@ std::string plan_frames_figure(const geometry::Environment& env, const Paths& pa
                             : "waypoint " + std::to_string(f.waypoint) + ": " +
                                   (f.regions == 0 ? "all clear" : std::to_string(f.regions) + " contaminated region" + (f.regions > 1 ? "s" : ""));
     c.label(Point(box.xmin(), env.bbox().ymax() + 0.035 * (box.xmax() - box.xmin())), caption, 11);
-    place(c.str(), i + (first_panel ? 1 : 0));
+    drawn.push_back(c.str());
   }
-  height += row_h;
-  std::string legend = "<text x=\"8\" y=\"" + std::to_string(height + 14) +
-                       "\" font-family=\"sans-serif\" font-size=\"12\">red: contaminated (the evader may be there); "
-                       "tinted: seen now; white: cleared</text>\n";
-  return "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(width) + "\" height=\"" +
-         std::to_string(height + 22) + "\" viewBox=\"0 0 " + std::to_string(width) + " " + std::to_string(height + 22) + "\">\n" +
-         body + legend + "</svg>\n";
+  return render::panel_grid(drawn, columns,
+                            "red: contaminated (the evader may be there); tinted: seen now; white: cleared");
 }
 
 }  // namespace preimage::pursuit

@@ -168,7 +168,7 @@ std::string SvgCanvas::axes() const {
   const double bar = sx * scale_;
   out += "<line x1=\"" + num(x_right - bar) + "\" y1=\"" + num(height_ + 26) + "\" x2=\"" + num(x_right) + "\" y2=\"" + num(height_ + 26) +
          "\" stroke=\"#222\" stroke-width=\"3\"/><text x=\"" + num(x_right - bar - 6) + "\" y=\"" + num(height_ + 30) + "\" text-anchor=\"end\"" +
-         text + ">" + tick_text(sx, sx) + " units</text>\n";
+         text + ">" + tick_text(sx, sx) + (sx == 1 ? " unit" : " units") + "</text>\n";
   return out;
 }
 
@@ -202,6 +202,35 @@ void SvgCanvas::save(const std::string& path) const {
   std::ofstream f(path);
   f << str();
   if (!f) throw InputError(path + ": cannot write file");
+}
+
+std::string panel_grid(const std::vector<std::string>& panels, std::size_t columns, const std::string& note) {
+  constexpr double kGap = 8;
+  columns = std::max<std::size_t>(1, columns);
+  std::string body;
+  double width = 0, height = 0, row_h = 0, x = 0;
+  for (std::size_t i = 0; i < panels.size(); ++i) {
+    std::string svg = panels[i];
+    const auto root = svg.find("<svg");
+    if (root == std::string::npos) continue;
+    svg.erase(0, root);
+    if (i % columns == 0) height += row_h, row_h = 0, x = 0;
+    const double w = std::stod(svg.substr(svg.find("width=\"") + 7));
+    const double h = std::stod(svg.substr(svg.find("height=\"") + 8));
+    // Nest the panel: its root element placed at its grid position.
+    svg.replace(0, 4, "<svg x=\"" + num(x) + "\" y=\"" + num(height) + "\"");
+    body += svg;
+    row_h = std::max(row_h, h + kGap);
+    width = std::max(width, x + w);
+    x += w + kGap;
+  }
+  height += row_h;
+  const double total = height + (note.empty() ? 0 : 22);
+  std::string text;
+  if (!note.empty())
+    text = "<text x=\"8\" y=\"" + num(height + 14) + "\" font-family=\"sans-serif\" font-size=\"12\">" + escape(note) + "</text>\n";
+  return "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + num(width) + "\" height=\"" + num(total) + "\" viewBox=\"0 0 " +
+         num(width) + " " + num(total) + "\">\n" + body + text + "</svg>\n";
 }
 
 }  // namespace preimage::render

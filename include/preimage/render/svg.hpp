@@ -55,6 +55,11 @@ class SvgCanvas {
   std::vector<std::pair<std::string, Style>> legend_;
 };
 
+/// Small multiples: whole SVG documents (SvgCanvas::str() or any "<svg ... width= height=")
+/// nested side by side in rows of `columns`, with `note` as a line of text beneath. One
+/// panel per query where drawings would otherwise overlap.
+std::string panel_grid(const std::vector<std::string>& panels, std::size_t columns, const std::string& note = "");
+
 /// XML/HTML text escaping.
 std::string escape(const std::string& text);
 
