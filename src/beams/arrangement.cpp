@@ -25,9 +25,7 @@ using geometry::ExactFT;
 using geometry::Point;
 using EVector = geometry::ExactKernel::Vector_2;
 
-int orient(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c) { return geometry::orientation(a, b, c); }
 
-std::string where(const ExactPoint& p) { return geometry::format_point(geometry::to_double(p)); }
 
 // Where a beam end is attached.
 struct End {
@@ -134,15 +132,15 @@ void ArrangementBuilder::check_leaves(std::size_t i, const End& e, const ExactPo
   const Environment& E = A.env_;
   bool ok;
   if (e.kind == End::OnEdge) {
-    ok = orient(E.exact_vertex(e.index), E.exact_vertex(E.next(e.index)), q) > 0;
+    ok = geometry::orientation(E.exact_vertex(e.index), E.exact_vertex(E.next(e.index)), q) > 0;
   } else if (e.kind == End::AtVertex) {
     const std::size_t v = e.index;
-    const int l1 = orient(E.exact_vertex(E.prev(v)), E.exact_vertex(v), q), l2 = orient(E.exact_vertex(v), E.exact_vertex(E.next(v)), q);
+    const int l1 = geometry::orientation(E.exact_vertex(E.prev(v)), E.exact_vertex(v), q), l2 = geometry::orientation(E.exact_vertex(v), E.exact_vertex(E.next(v)), q);
     ok = E.turn(v) > 0 ? (l1 > 0 && l2 > 0) : E.turn(v) < 0 ? (l1 > 0 || l2 > 0) : l1 > 0;
   } else {
     return;
   }
-  if (!ok) fail(i, "the beam does not enter free space at " + where(e.p));
+  if (!ok) fail(i, "the beam does not enter free space at " + geometry::format_point(e.p));
 }
 
 // The open segment between two ends must not meet the boundary.
@@ -150,9 +148,9 @@ void ArrangementBuilder::check_interior(std::size_t i, const End& a, const End& 
   const Environment& E = A.env_;
   for (std::size_t e = 0; e < E.num_vertices(); ++e) {
     const ExactPoint &s = E.exact_vertex(e), &t = E.exact_vertex(E.next(e));
-    const int o1 = orient(a.p, b.p, s), o2 = orient(a.p, b.p, t);
+    const int o1 = geometry::orientation(a.p, b.p, s), o2 = geometry::orientation(a.p, b.p, t);
     if (o1 * o2 > 0) continue;
-    const int o3 = orient(s, t, a.p), o4 = orient(s, t, b.p);
+    const int o3 = geometry::orientation(s, t, a.p), o4 = geometry::orientation(s, t, b.p);
     if (o3 * o4 > 0) continue;
     // The closed segments meet. Fine only at a beam end lying on this edge, with the
     // rest of the beam off the edge's line.
@@ -215,7 +213,7 @@ void ArrangementBuilder::resolve_beams() {
     // A beam must not pass through a landmark other than its own ends.
     for (std::size_t l = 0; l < A.landmarks_.size(); ++l) {
       const ExactPoint L = geometry::to_exact(A.landmarks_[l]);
-      if (orient(g.from, g.to, L) == 0 && CGAL::collinear_are_strictly_ordered_along_line(g.from, L, g.to))
+      if (geometry::orientation(g.from, g.to, L) == 0 && CGAL::collinear_are_strictly_ordered_along_line(g.from, L, g.to))
         fail(i, "the beam passes through landmark '" + S.landmarks[l].label + "'");
     }
     A.beams_.push_back(std::move(g));
@@ -229,12 +227,12 @@ namespace {
 struct BeamContacts final : geometry::ArrangementPolicy {
   std::function<void(std::size_t, const std::string&)> fail;
   std::function<std::string(std::size_t)> name;
-  void contact(std::size_t i, std::size_t j, geometry::SegmentContact kind) const override {
-    if (kind == geometry::SegmentContact::Overlap) fail(j, "the beam overlaps " + name(i));
+  void contact(std::size_t i, std::size_t j, geometry::SegmentContactKind kind) const override {
+    if (kind == geometry::SegmentContactKind::Overlap) fail(j, "the beam overlaps " + name(i));
     fail(i, "the beam ends on " + name(j));
   }
   void multiple(std::size_t i, std::size_t a, std::size_t b, const ExactPoint& p) const override {
-    fail(i, "the beam meets " + name(a) + " and " + name(b) + " at one point " + where(p) + " (beams must cross in pairs)");
+    fail(i, "the beam meets " + name(a) + " and " + name(b) + " at one point " + geometry::format_point(p) + " (beams must cross in pairs)");
   }
 };
 }  // namespace

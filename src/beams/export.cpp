@@ -157,7 +157,7 @@ render::SvgCanvas arrangement_figure(const BeamArrangement& A, const FigureOptio
     for (std::uint32_t r = 0; r < A.num_regions(); ++r) c.label(to_double(A.regions()[r].sample), std::string("r").append(std::to_string(r)), 11, "#555");
   if (!o.path.empty()) {
     const render::Style ps{"none", "#1a5fb4", 2.0, 0.9, ""};
-    c.polyline(o.path, ps);
+    c.path(o.path, ps, o.path_label, 60, 4);
     c.point(o.path.front(), 4, render::Style{"#1a5fb4", "none", 0, 1, ""});
     c.legend(o.path_label, ps);
   }

@@ -16,9 +16,8 @@
 namespace preimage::beams {
 namespace {
 
-std::string where(const ExactPoint& p) { return geometry::format_point(geometry::to_double(p)); }
 std::string region_name(const BeamArrangement& A, std::uint32_t r) {
-  return std::string("region r").append(std::to_string(r)).append(" around ").append(where(A.regions()[r].sample));
+  return std::string("region r").append(std::to_string(r)).append(" around ").append(geometry::format_point(A.regions()[r].sample));
 }
 
 }  // namespace
@@ -273,7 +272,7 @@ std::vector<std::string> LoopBasis::describe(const BeamArrangement& A) const {
   auto side = [&](std::uint32_t o) { return o == kOuter ? std::string("the outer boundary") : A.obstacle_name(o); };
   std::vector<std::string> lines;
   for (std::uint32_t g = 0; g < rank(); ++g) {
-    std::string s = names_[g] + ": " + where(from_[g]) + (ray_[g] ? " towards " : " -> ") + where(to_[g]);
+    std::string s = names_[g] + ": " + geometry::format_point(from_[g]) + (ray_[g] ? " towards " : " -> ") + geometry::format_point(to_[g]);
     s += ray_[g] ? " (ray)" : "";
     s += ", joins " + side(child_[g]) + " to " + side(parent_[g]) + "; winds " + (sign_[g] > 0 ? "+1" : "-1") + " around";
     for (std::uint32_t o : encloses_[g]) s += " o" + std::to_string(o + 1);
@@ -380,7 +379,7 @@ class Closure {
  private:
   std::uint32_t locate(const ExactPoint& p, const char* what) const {
     auto r = A_.locate(p);
-    if (!r) throw InputError(std::string(what) + " point " + where(p) + " is not strictly inside a region (it is on a beam, on the boundary or outside free space)");
+    if (!r) throw InputError(std::string(what) + " point " + geometry::format_point(p) + " is not strictly inside a region (it is on a beam, on the boundary or outside free space)");
     return *r;
   }
   const GraphEmbedding& G_;

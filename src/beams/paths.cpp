@@ -15,7 +15,6 @@ using geometry::ExactFT;
 using EVector = geometry::ExactKernel::Vector_2;
 using ESegment = geometry::ExactKernel::Segment_2;
 
-int orient(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c) { return geometry::orientation(a, b, c); }
 ExactFT cross(const EVector& u, const EVector& v) { return u.x() * v.y() - u.y() * v.x(); }
 
 // y of the non-vertical segment ab at abscissa x.
@@ -49,9 +48,9 @@ Trace trace_path(const BeamArrangement& A, std::span<const ExactPoint> path) {
     std::vector<Hit> hits;
     for (std::uint32_t i = 0; i < A.beams().size(); ++i) {
       const BeamGeometry& bg = A.beams()[i];
-      const int o1 = orient(bg.from, bg.to, a), o2 = orient(bg.from, bg.to, b);
+      const int o1 = geometry::orientation(bg.from, bg.to, a), o2 = geometry::orientation(bg.from, bg.to, b);
       if (o1 * o2 > 0) continue;
-      const int o3 = orient(a, b, bg.from), o4 = orient(a, b, bg.to);
+      const int o3 = geometry::orientation(a, b, bg.from), o4 = geometry::orientation(a, b, bg.to);
       if (o3 * o4 > 0) continue;
       if (o1 == 0 || o2 == 0 || o3 == 0 || o4 == 0) {
         // Collinear with the beam's line yet apart from the beam is fine.

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // preimage beams graph | filter | simulate | landmarks (homotopy and winding: cmd_beams_homotopy.cpp)
 #include "common.hpp"
+#include "progress.hpp"
 
 #include <preimage/beams/examples.hpp>
 #include <preimage/beams/export.hpp>
@@ -9,7 +10,6 @@
 #include <preimage/error.hpp>
 #include <preimage/filter/trellis.hpp>
 
-#include <unistd.h>
 
 #include <charconv>
 #include <chrono>
@@ -36,33 +36,6 @@ std::vector<geometry::Point> to_double(const std::vector<geometry::ExactPoint>& 
   return out;
 }
 
-// A status line on stderr for runs that take more than a second, redrawn at most twice
-// a second and erased at the end; only when stderr is a terminal, so pipes and logs
-// stay clean. Ctrl-C interrupts as usual (nothing here holds it).
-class Progress {
- public:
-  // Shows "<what>: <done> of <total> <unit>".
-  Progress(std::string what, std::string unit) : what_(std::move(what)), unit_(std::move(unit)), tty_(isatty(STDERR_FILENO) == 1) {}
-  Progress(const Progress&) = delete;
-  Progress& operator=(const Progress&) = delete;
-  ~Progress() {
-    if (shown_) std::cerr << "\r\033[K" << std::flush;
-  }
-  void operator()(std::size_t done, std::size_t total) {
-    if (!tty_) return;
-    const auto now = Clock::now();
-    if (now - start_ < std::chrono::seconds(1) || now - last_ < std::chrono::milliseconds(500)) return;
-    last_ = now;
-    shown_ = true;
-    std::cerr << "\r\033[K" << what_ << ": " << done << " of " << total << " " << unit_ << std::flush;
-  }
-
- private:
-  using Clock = std::chrono::steady_clock;
-  std::string what_, unit_;
-  bool tty_, shown_ = false;
-  Clock::time_point start_ = Clock::now(), last_{};
-};
 
 // ---------------------------------------------------------------- graph
 void run_graph(const std::string& file, bool as_json, bool dot, bool merged, const std::string& svg) {

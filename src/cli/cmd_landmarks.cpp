@@ -3,6 +3,7 @@
 // (landmark paper). Every --learn run is checked against the coordinates; a difference is
 // a bug in the library and ends the command as an internal error (exit 3).
 #include "common.hpp"
+#include "progress.hpp"
 
 #include <preimage/error.hpp>
 #include <preimage/geometry/coordinates.hpp>
@@ -12,7 +13,6 @@
 #include <preimage/landmarks/strategies.hpp>
 #include <preimage/landmarks/swap_cells.hpp>
 
-#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -35,31 +35,6 @@ constexpr std::size_t kMaxSwapCellLandmarks = 60;
 // Theta(n^4) again, about 12 s and 0.7 GB at n = 40.
 constexpr std::size_t kMaxLearnedSwapGraphLandmarks = 40;
 
-// Progress of a long computation on stderr, only when stderr is a terminal (scripts and
-// tests see one clean line per error and nothing else).
-class Progress {
- public:
-  explicit Progress(std::string what) : what_(std::move(what)), on_(isatty(STDERR_FILENO) == 1) {}
-  Progress(const Progress&) = delete;
-  Progress& operator=(const Progress&) = delete;
-  ~Progress() {
-    if (shown_) std::fprintf(stderr, "\r\033[K");
-  }
-  void operator()(double fraction) {
-    if (!on_) return;
-    const auto now = std::chrono::steady_clock::now();
-    if (shown_ && now - last_ < std::chrono::milliseconds(200)) return;
-    last_ = now;
-    shown_ = true;
-    std::fprintf(stderr, "\r%s: %3d%%", what_.c_str(), static_cast<int>(100 * std::clamp(fraction, 0.0, 1.0)));
-    std::fflush(stderr);
-  }
-
- private:
-  std::string what_;
-  bool on_, shown_ = false;
-  std::chrono::steady_clock::time_point last_;
-};
 
 // A --learn result that differs from the coordinates is a bug: one line, exit 3.
 void self_check(bool ok, const std::string& what) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // preimage track ept | simulate | evaluate | replay  (escape-path tree tracking paper)
 #include "common.hpp"
+#include "progress.hpp"
 
 #include <preimage/error.hpp>
 #include <preimage/tracking/evaluation.hpp>
@@ -8,8 +9,11 @@
 #include <preimage/tracking/replay.hpp>
 #include <preimage/tracking/simulation.hpp>
 
-#include <unistd.h>
+#include <preimage/render/svg.hpp>
 #include <zlib.h>
+
+#include <algorithm>
+#include <filesystem>
 
 #include <chrono>
 #include <cstdint>
@@ -30,34 +34,6 @@ using namespace preimage::tracking;
 json vec_json(const Vec2& v) { return json::array({v.x, v.y}); }
 json point_xy(const geometry::Point& p) { return json::array({p.x(), p.y()}); }
 
-// Progress on stderr for work that has run more than a second, when stderr is a terminal.
-class Progress {
- public:
-  explicit Progress(std::string what) : what_(std::move(what)), tty_(isatty(2) != 0) {}
-  Progress(const Progress&) = delete;
-  Progress& operator=(const Progress&) = delete;
-  ~Progress() {
-    if (drawn_) std::fprintf(stderr, "\r\033[K");
-  }
-  void operator()(std::size_t done, std::size_t total) {
-    if (!tty_) return;
-    const double t = std::chrono::duration<double>(Clock::now() - start_).count();
-    if (t < 1 || (t - last_ < 0.25 && done < total)) return;
-    last_ = t;
-    const double left = done ? t * static_cast<double>(total - done) / static_cast<double>(done) : 0;
-    std::fprintf(stderr, "\r\033[K%s: %zu of %zu (%.0f%%), %.0f s, about %.0f s left", what_.c_str(), done, total,
-                 100.0 * static_cast<double>(done) / static_cast<double>(std::max<std::size_t>(total, 1)), t, left);
-    drawn_ = true;
-  }
-
- private:
-  using Clock = std::chrono::steady_clock;
-  std::string what_;
-  bool tty_;
-  Clock::time_point start_ = Clock::now();
-  double last_ = -1;
-  bool drawn_ = false;
-};
 
 json risk_json(const EdgeRisk& r, const RiskParams& rp, const Point& corner, const Vec2& gradient) {
   return {{"corner", point_xy(corner)}, {"r_o", r.r_o}, {"h", r.h}, {"d", r.d}, {"s", r.s}, {"c", rp.c}, {"m", rp.m},
@@ -344,16 +320,105 @@ void throw_if_truncated(gzFile in, const std::string& file, const std::string& w
   if (err == Z_BUF_ERROR) throw InputError(file + ": the file is truncated (its compressed stream ends early, " + where + ")");
 }
 
-void run_replay(const std::string& file, bool as_json, double max_range, double radius, double ahead) {
+// --scans "0,4,10-20": the scan indices to report, as sorted closed ranges.
+std::vector<std::pair<std::size_t, std::size_t>> parse_scan_ranges(const std::string& text) {
+  std::vector<std::pair<std::size_t, std::size_t>> out;
+  std::size_t pos = 0;
+  while (pos <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', pos), text.size());
+    const std::string item = text.substr(pos, comma - pos);
+    const auto bad = [&] {
+      return InputError("--scans: item '" + item + "' (character " + std::to_string(pos + 1) + "): expected a scan index N or a range A-B");
+    };
+    const std::size_t dash = item.find('-');
+    std::size_t a = 0, b = 0, used = 0;
+    try {
+      if (item.empty() || item.find_first_not_of("0123456789-") != std::string::npos) throw bad();
+      a = std::stoull(item.substr(0, dash), &used);
+      if (used != (dash == std::string::npos ? item.size() : dash)) throw bad();
+      b = a;
+      if (dash != std::string::npos) {
+        b = std::stoull(item.substr(dash + 1), &used);
+        if (used != item.size() - dash - 1 || b < a) throw bad();
+      }
+    } catch (const std::logic_error&) {  // stoull: no digits, or out of range
+      throw bad();
+    }
+    out.emplace_back(a, b);
+    pos = comma + 1;
+  }
+  std::sort(out.begin(), out.end());
+  std::vector<std::pair<std::size_t, std::size_t>> merged;  // overlapping or adjacent ranges as one
+  for (auto& r : out)
+    if (!merged.empty() && r.first <= merged.back().second + 1) merged.back().second = std::max(merged.back().second, r.second);
+    else merged.push_back(r);
+  return merged;
+}
+
+struct ReplayOptions {
+  double max_range = 50, radius = 0.2, ahead = 1.0;
+  std::string scans, svg;
+};
+constexpr std::size_t kMaxReplayPanels = 24;
+
+json replay_json(const ReplayScan& r, std::size_t line_no) {
+  json j = {{"scan", r.index}, {"line", line_no}, {"timestamp", r.timestamp}, {"vertices", r.vertices},
+            {"solid", r.solid}, {"occlusion", r.occlusion}, {"range", r.range}, {"target_rule", r.target_rule},
+            {"micros", r.micros}};
+  if (r.has_tree) {
+    j["target"] = point_xy(r.target);
+    j["sde"] = std::isfinite(r.sde) ? json(r.sde) : json(nullptr);
+    j["tree_nodes"] = r.tree_nodes;
+    j["escape_paths"] = r.escape_paths;
+    j["gradient"] = vec_json(r.gradient);
+  }
+  // What the counts above are about, in the sensor frame (metres).
+  json V = json::array();
+  for (std::size_t e = 0; e < r.map.size(); ++e)
+    V.push_back({{"from", point_xy(r.map.vertices[e])}, {"kind", tracking::to_string(r.map.edges[e])}});
+  json g = {{"points", points_json(r.points)}, {"V", V}};
+  if (r.detected) g["detected"] = {{"center", point_xy(*r.detected)}, {"radius", r.detected_radius}};
+  if (r.tree) {
+    json paths = json::array();
+    for (std::size_t i = 0; i < r.tree->paths.size(); ++i)
+      paths.push_back({{"edge", r.tree->paths[i].edge}, {"length", r.tree->paths[i].length}, {"polyline", points_json(r.tree->polyline(i))}});
+    g["escape_path_tree"] = paths;
+  }
+  j["geometry"] = std::move(g);
+  return j;
+}
+
+void run_replay(const std::string& file, bool as_json, const ReplayOptions& o) {
   gzFile in = file == "-" ? gzdopen(0, "rb") : gzopen(file.c_str(), "rb");  // reads plain text too
   if (!in) throw InputError(file + ": cannot open");
   struct Closer { gzFile f; ~Closer() { gzclose(f); } } closer{in};
   TrackerParams tp;
-  tp.detect.radius = radius;
-  tp.risk.delta = radius;
+  tp.detect.radius = o.radius;
+  tp.risk.delta = o.radius;
+  std::vector<std::pair<std::size_t, std::size_t>> chosen;
+  if (!o.scans.empty()) chosen = parse_scan_ranges(o.scans);
+  else if (!o.svg.empty()) chosen = {{0, 11}};  // a figure of every scan of a log would be unreadable
+  if (!o.svg.empty()) {
+    std::size_t panels = 0;
+    for (auto& [a, b] : chosen) panels += std::min<std::size_t>(b - a, kMaxReplayPanels) + 1;
+    if (panels > kMaxReplayPanels)
+      throw InputError("--svg draws at most " + std::to_string(kMaxReplayPanels) + " scans; choose them with --scans (e.g. --scans 0-11)");
+  }
+  const auto selected = [&](std::size_t k) {
+    if (chosen.empty()) return true;
+    for (auto& [a, b] : chosen)
+      if (a <= k && k <= b) return true;
+    return false;
+  };
+  const std::size_t last_wanted = chosen.empty() ? SIZE_MAX : chosen.back().second;
+  std::error_code ec;
+  const std::size_t file_bytes = file == "-" ? 0 : static_cast<std::size_t>(std::filesystem::file_size(file, ec));
+  Progress progress("replay " + file, "KiB read");
+  std::vector<std::string> panels;
   std::string line;
   char buf[65536];
-  std::size_t line_no = 0, scans = 0;
+  std::size_t line_no = 0, scans = 0, reported = 0;
+  bool stopped_early = false;
   double total = 0, worst = 0;
   for (;;) {
     line.clear();
@@ -365,28 +430,33 @@ void run_replay(const std::string& file, bool as_json, double max_range, double 
     }
     if (!got) break;
     ++line_no;
+    if (file_bytes && !ec) progress(static_cast<std::size_t>(gzoffset(in)) / 1024, file_bytes / 1024);
     // A last line without its newline is where a truncated .gz file stops: zlib then
     // reports that the stream ended early, and the line is a fragment, not a bad line.
     if (line.back() != '\n') throw_if_truncated(in, file, "in line " + std::to_string(line_no));
     const std::string where = file + ":" + std::to_string(line_no);
-    const auto scan = parse_log_line(line, max_range, where);
+    const auto scan = parse_log_line(line, o.max_range, where);
     if (!scan) continue;
-    ReplayScan r = replay_scan(*scan, tp, ahead);
-    r.index = scans++;
+    const std::size_t index = scans++;
+    if (!selected(index)) {
+      if (index > last_wanted) {  // past the last chosen scan: the rest is not read
+        stopped_early = true;
+        break;
+      }
+      continue;
+    }
+    ReplayScan r = replay_scan(*scan, tp, o.ahead);
+    r.index = index;
+    ++reported;
     total += r.micros;
     worst = std::max(worst, r.micros);
+    if (!o.svg.empty()) {
+      char title[96];
+      std::snprintf(title, sizeof title, "scan %zu, t=%.3f s, target %s", r.index, r.timestamp, r.target_rule.c_str());
+      panels.push_back(tracking::replay_scan_figure(r, title));
+    }
     if (as_json) {
-      json j = {{"scan", r.index}, {"line", line_no}, {"timestamp", r.timestamp}, {"vertices", r.vertices},
-                {"solid", r.solid}, {"occlusion", r.occlusion}, {"range", r.range}, {"target_rule", r.target_rule},
-                {"micros", r.micros}};
-      if (r.has_tree) {
-        j["target"] = {r.target.x(), r.target.y()};
-        j["sde"] = std::isfinite(r.sde) ? json(r.sde) : json(nullptr);
-        j["tree_nodes"] = r.tree_nodes;
-        j["escape_paths"] = r.escape_paths;
-        j["gradient"] = vec_json(r.gradient);
-      }
-      std::cout << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+      std::cout << replay_json(r, line_no).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     } else {
       std::cout << "scan " << r.index << " t=" << std::fixed << std::setprecision(3) << r.timestamp << ": " << r.vertices
                 << " vertices, free edges " << r.occlusion + r.range << " (occlusion " << r.occlusion << ", range "
@@ -398,13 +468,22 @@ void run_replay(const std::string& file, bool as_json, double max_range, double 
       std::cout << ", " << std::setprecision(1) << r.micros << " us\n";
     }
   }
-  throw_if_truncated(in, file, "after line " + std::to_string(line_no));
-  int err = 0;
-  const char* msg = gzerror(in, &err);
-  if (err != Z_OK && err != Z_STREAM_END) throw InputError(file + ": read error after line " + std::to_string(line_no) + " (" + msg + ")");
+  if (!stopped_early) {  // read to the end: check how the stream ended
+    throw_if_truncated(in, file, "after line " + std::to_string(line_no));
+    int err = 0;
+    const char* msg = gzerror(in, &err);
+    if (err != Z_OK && err != Z_STREAM_END) throw InputError(file + ": read error after line " + std::to_string(line_no) + " (" + msg + ")");
+  }
+  if (!o.scans.empty() && reported == 0)
+    throw InputError("--scans " + o.scans + ": the log has " + count_of(scans, "scan") + " (numbered from 0)");
+  if (!o.svg.empty()) {
+    std::ofstream f(o.svg);
+    f << render::panel_grid(panels, 3, "sensor frame (x ahead, y left), metres; scans " + (o.scans.empty() ? std::string("0-11") : o.scans));
+    if (!f) throw InputError(o.svg + ": cannot write file");
+  }
   if (!as_json)
-    std::cout << scans << " scans replayed; time per scan: mean " << std::setprecision(1) << (scans ? total / scans : 0)
-              << " us, max " << worst << " us\n";
+    std::cout << count_of(reported, "scan") << " replayed; time per scan: mean " << std::setprecision(1)
+              << (reported ? total / static_cast<double>(reported) : 0) << " us, max " << worst << " us\n";
 }
 
 }  // namespace
@@ -508,16 +587,20 @@ void add_track_commands(CLI::App& app) {
   });
 
   auto* r = cmd->add_subcommand("replay", "TRACK's local map and escape-path tree on a recorded laser log (CARMEN or text)");
-  set_examples(r, {"preimage track replay examples/tracking/corridor_scans.txt", "preimage track replay examples/tracking/corridor_scans.txt --json"});
+  set_examples(r, {"preimage track replay examples/tracking/corridor_scans.txt",
+                   "preimage track replay examples/tracking/corridor_scans.txt --scans 0-5 --svg scans.svg",
+                   "preimage track replay examples/tracking/corridor_scans.txt --scans 3 --json"});
   static std::string r_file;
   static bool r_json = false;
-  static double r_max = 50, r_radius = 0.2, r_ahead = 1.0;
+  static ReplayOptions r_opt;
   r->add_option("log", r_file, "Log file (.gz or plain; - for stdin)")->required();
-  r->add_option("--max-range", r_max, "Saturation range for FLASER and text logs, m")->check(number_in(0, 1e4, true))->capture_default_str();
-  r->add_option("--radius", r_radius, "Target radius for detection, m")->check(number_in(0, 100, true))->capture_default_str();
-  r->add_option("--ahead", r_ahead, "Distance of the placed target when none is detected, m")->check(number_in(0, 1e4, true))->capture_default_str();
-  add_json_flag(r, r_json, "One JSON object per scan (JSON Lines)");
-  r->callback([] { run_replay(r_file, r_json, r_max, r_radius, r_ahead); });
+  r->add_option("--max-range", r_opt.max_range, "Saturation range for FLASER and text logs, m")->check(number_in(0, 1e4, true))->capture_default_str();
+  r->add_option("--radius", r_opt.radius, "Target radius for detection, m")->check(number_in(0, 100, true))->capture_default_str();
+  r->add_option("--ahead", r_opt.ahead, "Distance of the placed target when none is detected, m")->check(number_in(0, 1e4, true))->capture_default_str();
+  r->add_option("--scans", r_opt.scans, "Scans to report, numbered from 0: N, A-B, comma-separated (default: all; 0-11 with --svg)");
+  r->add_option("--svg", r_opt.svg, "Draw each reported scan (returns, V, escape-path tree, detected target), at most 24");
+  add_json_flag(r, r_json, "One JSON object per scan (JSON Lines) with its geometry in the sensor frame");
+  r->callback([] { run_replay(r_file, r_json, r_opt); });
 }
 
 }  // namespace preimage::cli

@@ -38,7 +38,7 @@ void demo_decompose(DemoContext& ctx) {
   decompose::draw_decomposition(c, d);
   render::Style rawst{"none", "#1a73e8", 1.5, 1.0, "4 3"}, route{"none", "#d93025", 3, 1.0, ""};
   c.polyline(raw.path, rawst);
-  c.polyline(plan.path, route);
+  c.path(plan.path, route, "shortened path");
   c.legend("path through extension midpoints and cell centroids", rawst);
   c.legend("shortened path", route);
   ctx.figure("decompose-trapezoidal.svg", c.str(), "Trapezoidal decomposition of the office and a planned path");

@@ -71,13 +71,12 @@ void draw_coverage(render::SvgCanvas& c, const CoverageReport& rep) {
     while (j < rep.moves.size() && rep.moves[j] == rep.moves[i]) ++j;
     const std::vector<Point> run(rep.path.begin() + static_cast<long>(i), rep.path.begin() + static_cast<long>(j + 1));
     const auto& st = rep.moves[i] == Move::Lap ? lap : rep.moves[i] == Move::Follow ? follow : transit;
-    c.polyline(run, st);
+    c.path(run, st, "", 90, 4, i);
     i = j;
   }
   c.legend("laps along the slice", lap);
   c.legend("boundary following between laps", follow);
   c.legend("transits (shortest collision-free paths)", transit);
-  c.arrows(rep.path, "#202124", 90, 4);
   const render::Style start{"#ffffff", "#202124", 2.5, 1.0, ""}, end{"#202124", "#202124", 1.0, 1.0, ""};
   c.point(rep.path.front(), 6, start, "start");
   c.point(rep.path.back(), 5, end, "end");

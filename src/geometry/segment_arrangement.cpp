@@ -93,7 +93,7 @@ void SegmentArrangementBuilder::find_crossings() {
     if (S[i].carrier) carrier.emplace_back(to_exact(S[i].carrier->first), to_exact(S[i].carrier->second));
     else carrier.emplace_back(S[i].from, S[i].to);
   }
-  auto contact = [&](std::size_t i, std::size_t j, SegmentContact kind) {
+  auto contact = [&](std::size_t i, std::size_t j, SegmentContactKind kind) {
     if (policy_) policy_->contact(i, j, kind);
     throw std::logic_error("segment arrangement: segments " + std::to_string(i) + " and " + std::to_string(j) +
                            " touch without crossing");
@@ -120,7 +120,7 @@ void SegmentArrangementBuilder::find_crossings() {
                              CGAL::collinear_are_strictly_ordered_along_line(R, P, T) ||
                              CGAL::collinear_are_strictly_ordered_along_line(R, Q, T) || (P == R && Q == T) ||
                              (P == T && Q == R);
-        if (overlap) contact(std::min(i, j), std::max(i, j), SegmentContact::Overlap);
+        if (overlap) contact(std::min(i, j), std::max(i, j), SegmentContactKind::Overlap);
         continue;
       }
       if (o1 * o2 < 0 && o3 * o4 < 0) {
@@ -134,8 +134,8 @@ void SegmentArrangementBuilder::find_crossings() {
       }
       // They touch at an end: fine when it is a shared end, otherwise one ends on the other.
       auto shared = [&](const ExactPoint& x) { return x == P || x == Q; };
-      if ((o1 == 0 && !shared(R)) || (o2 == 0 && !shared(T))) contact(j, i, SegmentContact::FirstEndsOnSecond);
-      if ((o3 == 0 && !(P == R || P == T)) || (o4 == 0 && !(Q == R || Q == T))) contact(i, j, SegmentContact::FirstEndsOnSecond);
+      if ((o1 == 0 && !shared(R)) || (o2 == 0 && !shared(T))) contact(j, i, SegmentContactKind::FirstEndsOnSecond);
+      if ((o3 == 0 && !(P == R || P == T)) || (o4 == 0 && !(Q == R || Q == T))) contact(i, j, SegmentContactKind::FirstEndsOnSecond);
     }
   }
   // Crossings in order along each segment: all lie on its carrier, so the lexicographic

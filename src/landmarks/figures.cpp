@@ -93,12 +93,12 @@ render::SvgCanvas swap_cell_figure(const LandmarkSet& L, const SwapCellDecomposi
     for (auto k : o.route) r.push_back(L.points[k]);
     r.push_back(r.front());
     render::Style s{"none", "#1d6fb8", 2.0, 1.0, "6 4"};
-    svg.polyline(r, s);
+    svg.path(r, s, o.route_label);
     svg.legend(o.route_label, s);
   }
   if (!o.path.empty()) {
     render::Style s{"none", "#c0392b", 2.2, 1.0, ""};
-    svg.polyline(o.path, s);
+    svg.path(o.path, s, o.path_label);
     svg.point(o.path.front(), 4, {"#c0392b", "#c0392b", 1, 1, ""}, "start");
     svg.legend(o.path_label, s);
   }

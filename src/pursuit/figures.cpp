@@ -44,7 +44,7 @@ void draw_paths(render::SvgCanvas& c, const Paths& paths) {
     std::vector<Point> pts;
     for (auto& p : paths[l])
       if (pts.empty() || pts.back() != p) pts.push_back(p);
-    c.polyline(pts, st, "pursuer " + std::to_string(l + 1));
+    c.path(pts, st, "pursuer " + std::to_string(l + 1));
     c.point(pts.front(), 4, dot, "start of pursuer " + std::to_string(l + 1));
     c.legend("pursuer " + std::to_string(l + 1), st);
   }

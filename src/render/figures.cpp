@@ -80,8 +80,7 @@ void draw_route(SvgCanvas& c, const std::vector<Point>& path, const std::string&
                 const std::string& dash) {
   if (path.empty()) return;
   const Style line{"none", colour, stroke, 0.95, dash};
-  c.polyline(path, line, label);
-  c.arrows(path, colour);
+  c.path(path, line, label);
   c.legend(label, line);
   const Style start{"#ffffff", colour, 2.5, 1.0, ""}, end{colour, "#202124", 1.5, 1.0, ""};
   c.point(path.front(), 6, start, label + ": start");

@@ -128,6 +128,15 @@ void SvgCanvas::arrows(const std::vector<Point>& pts, const std::string& colour,
   }
 }
 
+void SvgCanvas::path(const std::vector<Point>& pts, const Style& s, const std::string& title, double spacing, double size,
+                     std::size_t first_step) {
+  body_ += "<g data-path=\"" + std::to_string(first_step) + "\">\n";
+  polyline(pts, s, title);
+  body_ += "<g data-arrows=\"\">\n";
+  arrows(pts, s.stroke, spacing, size);
+  body_ += "</g>\n</g>\n";
+}
+
 namespace {
 // A round tick spacing: 1, 2 or 5 times a power of ten, about `want` ticks over the range.
 double tick_step(double range, double want) {

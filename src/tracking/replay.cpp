@@ -124,6 +124,12 @@ ReplayScan replay_scan(const Scan& scan, const TrackerParams& tp, double ahead) 
     r.target_rule = "none";
   }
   r.micros = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
+  for (std::size_t i = 0; i < scan.ranges.size(); ++i)
+    if (scan.ranges[i] < scan.max_range)
+      r.points.emplace_back(scan.ranges[i] * std::cos(scan.angle(i)), scan.ranges[i] * std::sin(scan.angle(i)));
+  r.map = map;
+  r.tree = std::move(tree);
+  if (det.found) r.detected = det.center, r.detected_radius = tp.detect.radius;
   return r;
 }
 

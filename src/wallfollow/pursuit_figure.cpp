@@ -30,8 +30,7 @@ render::SvgCanvas pursuit_map(const geometry::Environment& env, const TrueCuts& 
   for (auto& p : path) pts.push_back(geometry::to_double(p));
   const render::Style walk{"none", "#188038", 2.2, 0.95, ""};
   if (pts.size() > 1) {
-    c.polyline(pts, walk, "the executed plan");
-    c.arrows(pts, "#188038", 40, 5);
+    c.path(pts, walk, "the executed plan", 40, 5);
   }
   if (!pts.empty()) c.point(pts.front(), 4, {"#188038", "#000", 0.8, 1.0, ""}, "start");
   for (std::size_t k = 1; k < pts.size() && pts.size() <= 30; ++k) c.label(pts[k], std::to_string(k), 10, "#0b5e22");

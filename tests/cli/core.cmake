@@ -58,6 +58,18 @@ cli_test(plan_flags_json 0 "\"found\":true" ${OUT}/plan.svg plan ${EXAMPLES}/gal
 cli_test(plan_start_in_obstacle fail "start \\(2.5, 2.5\\) is not in free space: it lies inside \\$\\.environment\\.obstacles\\[0\\]" -
          plan ${EXAMPLES}/gallery.json --start 2.5,2.5)
 cli_test(demo 0 "index\\.html" ${OUT}/demo/index.html demo --out ${OUT}/demo)
+# The interactive report in a real (headless) browser: its script runs without an error,
+# every figure zooms and resets, every step slider moves its paths.
+set_tests_properties(cli.demo PROPERTIES FIXTURES_SETUP demo_report)
+add_test(NAME cli.demo_in_browser COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/cli/browser_check.sh ${OUT}/demo/index.html)
+set_tests_properties(cli.demo_in_browser PROPERTIES FIXTURES_REQUIRED demo_report)
+# ... and the check can fail: the same report with a call to an undefined function
+# slipped into its script.
+add_test(NAME cli.browser_check_catches_a_script_error
+         COMMAND ${EXPECT} fail "data-script-errors=.*undefinedFunctionOfTheTest" - -- bash -c
+                 "sed '/var figures = /i undefinedFunctionOfTheTest()' \"$0\" > \"$1\" && \"$2\" \"$1\""
+                 ${OUT}/demo/index.html ${OUT}/broken_report.html ${CMAKE_CURRENT_SOURCE_DIR}/cli/browser_check.sh)
+set_tests_properties(cli.browser_check_catches_a_script_error PROPERTIES FIXTURES_REQUIRED demo_report)
 
 # Real floor plans (HouseExpo, shipped in examples/floorplans).
 cli_test(import_houseexpo_0000 0 "wrote .*: 147 vertices" ${OUT}/house0000.json

@@ -41,7 +41,17 @@ cli_test(track_evaluate_bad_fov fail "--fov: expected 180 or 360, got '90'" - tr
 cli_test(track_evaluate_bad_dynamics fail "--dynamics: " - track evaluate ${TRACKING}/box.json --dynamics maybe)
 cli_test(track_evaluate_bad_jobs fail "--jobs: expected an integer from 1 to 256, got 0" - track evaluate ${TRACKING}/box.json --jobs 0)
 cli_test(track_evaluate_bad_strategy fail "--strategy: expected risk, sde or naive, got \"x\"" - track evaluate ${TRACKING}/box.json --strategy risk,x)
-cli_test(track_replay_fixture 0 "^1 scans replayed" - track replay ${FIX}/scans/aces_scan49_target_on_radial_edge.log)
+cli_test(track_replay_fixture 0 "^1 scan replayed" - track replay ${FIX}/scans/aces_scan49_target_on_radial_edge.log)
+cli_test(track_replay_svg_of_chosen_scans 0 "^6 scans replayed" ${OUT}/replay_scans.svg
+         track replay ${EXAMPLES}/tracking/corridor_scans.txt --scans 0-3,5,4 --svg ${OUT}/replay_scans.svg)
+cli_test(track_replay_json_has_geometry 0 "\"geometry\":\\{\"V\":\\[\\{\"from\":\\[.*\"escape_path_tree\":\\[\\{\"edge\":.*\"points\":\\[\\[.*\"scan\":3," -
+         track replay ${EXAMPLES}/tracking/corridor_scans.txt --scans 3 --json)
+cli_test(track_replay_scans_reversed_range fail "--scans: item '5-2' \\(character 3\\): expected a scan index N or a range A-B" -
+         track replay ${EXAMPLES}/tracking/corridor_scans.txt --scans 1,5-2)
+cli_test(track_replay_scans_beyond_log fail "--scans 500: the log has 12 scans \\(numbered from 0\\)" -
+         track replay ${EXAMPLES}/tracking/corridor_scans.txt --scans 500)
+cli_test(track_replay_svg_too_many_scans fail "--svg draws at most 24 scans. choose them with --scans" -
+         track replay ${EXAMPLES}/tracking/corridor_scans.txt --scans 0-9,20-40 --svg ${OUT}/never.svg)
 cli_test(track_replay_truncated_gz fail "aces_three_scans_truncated.log.gz: the file is truncated \\(its compressed stream ends early, in line 3\\)" - track replay ${FIX}/scans/aces_three_scans_truncated.log.gz)
 cli_test(track_replay_bad_radius fail "--radius: expected a number in \\(0, 100\\], got 0" - track replay ${FIX}/scans/bad.log --radius 0)
 cli_test(track_replay_bad_max_range fail "--max-range: expected a number in \\(0, 10000\\], got 'inf'" - track replay ${FIX}/scans/bad.log --max-range inf)

@@ -263,7 +263,7 @@ TEST(LandmarkNavigation, Lemma10AsItHoldsBoundsEveryCellOnMeetingPolarLines) {
 TEST(LandmarkNavigation, Lemma10CounterexampleGoalIsReachedFromEveryStart) {
   // Issue 31: the polar line of 5 and 1 meets no other polar line, yet 1 4 6 3 2 5 is read
   // in a cell meeting the hull; the robot used to reject it by the paper's Lemma 10.
-  const auto s = scene::load_scene(std::string(PREIMAGE_FIXTURES) + "/scenes/landmarks_lemma10_counterexample.json");
+  const auto s = scene::load_scene(std::string(PREIMAGE_FIXTURES).append("/scenes/landmarks_lemma10_counterexample.json"));
   const auto L = landmarks::landmark_set(s);
   const auto lab = [&](const std::string& x) { return static_cast<std::uint32_t>(std::find(L.labels.begin(), L.labels.end(), x) - L.labels.begin()); };
   const Reading g = landmarks::normalized({lab("1"), lab("4"), lab("6"), lab("3"), lab("2"), lab("5")});
@@ -292,7 +292,7 @@ TEST(LandmarkNavigation, Lemma10CounterexampleGoalIsReachedFromEveryStart) {
 }
 
 TEST(LandmarkNavigation, UnrealizableReasonsNameLandmarksByLabel) {
-  const auto s = scene::load_scene(std::string(PREIMAGE_FIXTURES) + "/scenes/landmarks_lemma10_counterexample.json");
+  const auto s = scene::load_scene(std::string(PREIMAGE_FIXTURES).append("/scenes/landmarks_lemma10_counterexample.json"));
   auto L = landmarks::landmark_set(s);
   for (auto& l : L.labels) l = "L" + l;
   const OrderType T = OrderType::of(L.points);
@@ -309,7 +309,7 @@ TEST(LandmarkNavigation, UnrealizableReasonsNameLandmarksByLabel) {
 TEST(LandmarkNavigation, Strategy9LearnsOneEdgePerPairOfCellsOnTheTriangle) {
   // Issue 31: on three landmarks each outside cell borders the inside cell along both swap
   // lines of its landmark; the robot counted two edges there. Every labelling and shape.
-  const auto s = scene::load_scene(std::string(PREIMAGE_FIXTURES) + "/scenes/landmarks_triangle.json");
+  const auto s = scene::load_scene(std::string(PREIMAGE_FIXTURES).append("/scenes/landmarks_triangle.json"));
   const auto L = landmarks::landmark_set(s);
   std::vector<std::vector<Point>> shapes{L.points,
                                          {Point(0, 0), Point(0, 1), Point(1, 0)},       // clockwise

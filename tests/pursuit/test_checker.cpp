@@ -23,7 +23,7 @@ namespace g = geometry::generators;
 namespace {
 
 Environment degenerate() {
-  return *scene::load_scene(std::string(PREIMAGE_FIXTURES) + "/scenes/pursuit_degenerate.json").environment;
+  return *scene::load_scene(std::string(PREIMAGE_FIXTURES).append("/scenes/pursuit_degenerate.json")).environment;
 }
 
 // A random walk across drawable boundaries from cell c0; the path through the near points.

@@ -276,3 +276,39 @@ TEST(TrackingFixtures, CoincidentVisibilityVerticesAreMerged) {
   ASSERT_EQ(tree.paths.size(), oracle.size());
   for (std::size_t i = 0; i < oracle.size(); ++i) EXPECT_NEAR(tree.paths[i].length, oracle[i], 1e-9 * (1 + oracle[i]));
 }
+
+TEST(TrackingReplay, GeometryIsWhatTheCountsDescribe) {
+  // track replay --json and --svg draw from ReplayScan's geometry: it must be the map and
+  // tree the counts were taken from, every escape path running from the target to a
+  // point of its free edge, every return short of max range.
+  std::ifstream in(example("corridor_scans.txt"));
+  std::string line;
+  std::size_t scans = 0, trees = 0;
+  while (std::getline(in, line)) {
+    const auto scan = parse_log_line(line, 50, "corridor");
+    if (!scan) continue;
+    ++scans;
+    const ReplayScan r = replay_scan(*scan, TrackerParams{});
+    std::size_t hits = 0;
+    for (double d : scan->ranges) hits += d < scan->max_range;
+    EXPECT_EQ(r.points.size(), hits);
+    EXPECT_EQ(r.map.size(), r.vertices);
+    EXPECT_EQ(r.map.count(EdgeKind::Occlusion), r.occlusion);
+    ASSERT_EQ(r.tree.has_value(), r.has_tree);
+    if (!r.tree) continue;
+    ++trees;
+    ASSERT_EQ(r.tree->paths.size(), r.escape_paths);
+    EXPECT_TRUE(r.map.strictly_contains(r.tree->target));
+    for (std::size_t i = 0; i < r.tree->paths.size(); ++i) {
+      const auto pl = r.tree->polyline(i);
+      EXPECT_EQ(pl.front(), r.tree->target);
+      const std::size_t e = r.tree->paths[i].edge;
+      EXPECT_NE(r.map.edges[e], EdgeKind::Solid);
+      // The escape point is a constructed (rounded) point: on its edge up to rounding.
+      const preimage::geometry::Kernel::Segment_2 edge(r.map.vertices[e], r.map.vertices[r.map.next(e)]);
+      EXPECT_LT(CGAL::squared_distance(edge, pl.back()), 1e-18);
+    }
+  }
+  EXPECT_GE(scans, 10u);
+  EXPECT_GE(trees, 10u);
+}

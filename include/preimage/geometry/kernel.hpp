@@ -100,5 +100,7 @@ std::string format_number(double v);
 /// "(1.5, 2)" — for error messages and reports.
 std::string format_point(double x, double y);
 inline std::string format_point(const Point& p) { return format_point(p.x(), p.y()); }
+/// An exact point in messages: its nearest doubles.
+inline std::string format_point(const ExactPoint& p) { return format_point(to_double(p)); }
 
 }  // namespace preimage::geometry

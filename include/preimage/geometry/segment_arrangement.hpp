@@ -48,14 +48,14 @@ struct ArrangementHalfEdge {
 };
 
 /// How two segments touch without crossing properly.
-enum class SegmentContact : std::uint8_t { Overlap, FirstEndsOnSecond, SecondEndsOnFirst };
+enum class SegmentContactKind : std::uint8_t { Overlap, FirstEndsOnSecond, SecondEndsOnFirst };
 
 /// Validation hooks; each may throw the caller's own error. A policy that returns from
 /// `contact` leaves a logic error (the arrangement cannot represent the contact).
 struct ArrangementPolicy {
   virtual ~ArrangementPolicy() = default;
   /// Segments i < j (or j < i, in the order found) touch as `kind` (first = i).
-  virtual void contact(std::size_t i, std::size_t j, SegmentContact kind) const = 0;
+  virtual void contact(std::size_t i, std::size_t j, SegmentContactKind kind) const = 0;
   /// Segment i meets segments a and b at one point p (three or more through a point).
   /// The default accepts it: the crossing becomes one vertex.
   virtual void multiple(std::size_t /*i*/, std::size_t /*a*/, std::size_t /*b*/, const ExactPoint& /*p*/) const {}

@@ -35,6 +35,12 @@ class SvgCanvas {
   /// Small arrowheads along a polyline, one every `spacing_px` of drawn length, pointing the
   /// way it runs.
   void arrows(const std::vector<Point>& pts, const std::string& colour, double spacing_px = 70, double size_px = 5);
+  /// A path something follows (a robot, a pursuer, a sample path of a body): the polyline
+  /// with arrowheads in its stroke colour, tagged `data-path` so the interactive report
+  /// can step along it (render::HtmlReport). `first_step`: the step of the figure's
+  /// timeline at which pts[0] is reached (pieces of one path drawn in several styles).
+  void path(const std::vector<Point>& pts, const Style& style, const std::string& title = "", double arrow_spacing_px = 70,
+            double arrow_size_px = 5, std::size_t first_step = 0);
   /// Adds a legend entry drawn with the given style.
   void legend(const std::string& text, const Style& style);
 

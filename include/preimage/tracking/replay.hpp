@@ -10,6 +10,7 @@
 //  * Plain text: `timestamp angle_min angle_increment r1 r2 ... rn` (radians, metres);
 //    `#` starts a comment line.
 #pragma once
+#include <preimage/tracking/escape_path_tree.hpp>
 #include <preimage/tracking/tracker.hpp>
 
 #include <optional>
@@ -40,6 +41,13 @@ struct ReplayScan {
   std::size_t tree_nodes = 0, escape_paths = 0;
   Vec2 gradient;            // grad phi-bar (sensor frame)
   double micros = 0;        // local map + detection + tree + risk, wall clock
+
+  // What was computed, for figures and JSON (sensor frame, metres; kept after timing).
+  std::vector<Point> points;             // the scan's returns short of max_range
+  LocalMap map;                          // V(q^o) with its edges by kind
+  std::optional<EscapePathTree> tree;    // when has_tree
+  std::optional<Point> detected;         // centre of the detected circle, if any
+  double detected_radius = 0;
 };
 
 /// TRACK's steps on one recorded scan. The target is the detected circle nearest the
