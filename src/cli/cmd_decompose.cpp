@@ -2,6 +2,8 @@
 // preimage decompose | plan
 #include "common.hpp"
 
+#include <preimage/scene/geojson.hpp>
+
 #include <preimage/decompose/coverage.hpp>
 #include <preimage/decompose/planner.hpp>
 #include <preimage/geometry/configuration_space.hpp>
@@ -22,7 +24,15 @@ using nlohmann::json;
 
 json point_json(const geometry::ExactPoint& p) { return json::array({CGAL::to_double(p.x()), CGAL::to_double(p.y())}); }
 
-void run_boustrophedon(const scene::Scene& s, double angle, bool as_json, const std::string& svg) {
+void write_cells_geojson(const std::string& file, const geometry::Environment& env, const std::vector<std::vector<geometry::Point>>& cells,
+                         const std::string& method) {
+  scene::GeoJsonWriter w;
+  w.environment(env, {{"kind", "environment"}});
+  for (std::size_t i = 0; i < cells.size(); ++i) w.polygon({cells[i]}, {{"kind", "cell"}, {"method", method}, {"id", i}});
+  w.save(file);
+}
+
+void run_boustrophedon(const scene::Scene& s, double angle, bool as_json, const std::string& svg, const std::string& geojson) {
   const decompose::BoustrophedonDecomposition b(s.require_environment(), angle);
   const auto adj = b.adjacency();
   const auto& slices = b.critical_slices();
@@ -31,6 +41,11 @@ void run_boustrophedon(const scene::Scene& s, double angle, bool as_json, const 
     render::draw_scene(c, s);
     decompose::draw_boustrophedon(c, b);
     c.save(svg);
+  }
+  if (!geojson.empty()) {
+    std::vector<std::vector<geometry::Point>> cells;
+    for (std::size_t i = 0; i < b.cells().size(); ++i) cells.push_back(b.polygon(i));
+    write_cells_geojson(geojson, s.require_environment(), cells, "boustrophedon");
   }
   if (as_json) {
     json cells = json::array(), crit = json::array(), reeb = json::array();
@@ -56,11 +71,13 @@ void run_boustrophedon(const scene::Scene& s, double angle, bool as_json, const 
             << "N_cells = N_critical + N_obstacles - 1: " << b.cells().size() << " = " << slices.size() << " + "
             << s.require_environment().num_holes() << " - 1\n";
   if (!svg.empty()) std::cout << "wrote " << svg << "\n";
+  if (!geojson.empty()) std::cout << "wrote " << geojson << "\n";
 }
 
-void run_decompose(const std::string& path, const std::string& method, double angle, bool as_json, const std::string& svg) {
+void run_decompose(const std::string& path, const std::string& method, double angle, bool as_json, const std::string& svg,
+                   const std::string& geojson) {
   const scene::Scene s = scene::load_scene(path);
-  if (method == "boustrophedon") return run_boustrophedon(s, angle, as_json, svg);
+  if (method == "boustrophedon") return run_boustrophedon(s, angle, as_json, svg, geojson);
   if (angle != 0) throw InputError("--angle: the trapezoidal decomposition sweeps along x (use --method boustrophedon)");
   const auto& env = s.require_environment();
   const decompose::TrapezoidalDecomposition d(env);
@@ -70,6 +87,15 @@ void run_decompose(const std::string& path, const std::string& method, double an
     render::draw_scene(c, s);
     decompose::draw_decomposition(c, d, &planner);
     c.save(svg);
+  }
+  if (!geojson.empty()) {
+    std::vector<std::vector<geometry::Point>> cells;
+    for (std::size_t i = 0; i < d.cells().size(); ++i) {
+      std::vector<geometry::Point> ring;
+      for (auto& p : d.polygon(i)) ring.push_back(geometry::to_double(p));
+      cells.push_back(std::move(ring));
+    }
+    write_cells_geojson(geojson, env, cells, "trapezoidal");
   }
   if (as_json) {
     json cells = json::array(), adj = json::array();
@@ -90,6 +116,7 @@ void run_decompose(const std::string& path, const std::string& method, double an
   std::cout << "trapezoidal decomposition: " << d.cells().size() << " cells, " << d.extensions().size()
             << " adjacencies (vertical extensions between cells)\n";
   if (!svg.empty()) std::cout << "wrote " << svg << "\n";
+  if (!geojson.empty()) std::cout << "wrote " << geojson << "\n";
 }
 
 // The robot's radius: --radius, else the scene's robot.radius, else 0 (a point).
@@ -99,7 +126,7 @@ double robot_radius(const scene::Scene& s, const std::optional<double>& flag) {
 }
 
 void run_plan(const std::string& path, const std::string& start_s, const std::string& goal_s, const std::optional<double>& radius_flag,
-              const std::string& method, bool no_shorten, bool as_json, const std::string& svg) {
+              const std::string& method, bool no_shorten, bool as_json, const std::string& svg, const std::string& geojson) {
   scene::Scene s = scene::load_scene(path);
   const auto& env = s.require_environment();
   if (!start_s.empty()) s.start = parse_point(start_s, "--start");
@@ -122,6 +149,12 @@ void run_plan(const std::string& path, const std::string& start_s, const std::st
     if (plan.found) render::draw_route(c, plan.path, "planned path", "#d93025");
     c.save(svg);
   }
+  if (!geojson.empty()) {
+    scene::GeoJsonWriter w;
+    w.environment(env, {{"kind", "environment"}});
+    if (plan.found) w.line(plan.path, {{"kind", "path"}, {"robot_radius", r}, {"length", plan.length}, {"method", method}});
+    w.point(*s.start, {{"kind", "start"}}).point(*s.goal, {{"kind", "goal"}}).save(geojson);
+  }
   if (as_json) {
     json out{{"found", plan.found}, {"robot_radius", r}, {"method", method}, {"length", plan.length}, {"path", points_json(plan.path)}};
     if (!plan.found) out["reason"] = plan.why_not;
@@ -139,10 +172,11 @@ void run_plan(const std::string& path, const std::string& start_s, const std::st
     std::cout << " (every segment certified)\n";
   }
   if (!svg.empty()) std::cout << "wrote " << svg << "\n";
+  if (!geojson.empty()) std::cout << "wrote " << geojson << "\n";
 }
 
 struct CoverArgs {
-  std::string path, start, angle = "auto", order = "optimised", transit = "shortest", svg;
+  std::string path, start, angle = "auto", order = "optimised", transit = "shortest", svg, geojson;
   std::optional<double> width, radius;
   bool json = false;
 };
@@ -180,6 +214,20 @@ void run_cover(const CoverArgs& a) {
     decompose::draw_coverage(c, rep);
     c.save(a.svg);
   }
+  if (!a.geojson.empty()) {
+    scene::GeoJsonWriter w;
+    w.environment(env, {{"kind", "environment"}});
+    // One LineString per run of one kind of move, so a GIS can style laps and transits.
+    for (std::size_t i = 0; i < rep.moves.size();) {
+      std::size_t j = i;
+      while (j < rep.moves.size() && rep.moves[j] == rep.moves[i]) ++j;
+      const char* kind = rep.moves[i] == decompose::Move::Lap ? "lap" : rep.moves[i] == decompose::Move::Follow ? "follow" : "transit";
+      w.line(std::vector<geometry::Point>(rep.path.begin() + static_cast<long>(i), rep.path.begin() + static_cast<long>(j + 1)),
+             {{"kind", "coverage path"}, {"move", kind}, {"first_segment", i}});
+      i = j;
+    }
+    w.save(a.geojson);
+  }
   if (a.json) {
     json moves = json::array();
     for (auto mv : rep.moves) moves.push_back(mv == decompose::Move::Lap ? "lap" : mv == decompose::Move::Follow ? "follow" : "transit");
@@ -210,6 +258,7 @@ void run_cover(const CoverArgs& a) {
   if (a.order == "optimised")
     std::cout << "cell order: " << (rep.order_optimal ? "optimal" : "local search, lower bound " + geometry::format_number(rep.order_lower_bound)) << "\n";
   if (!a.svg.empty()) std::cout << "wrote " << a.svg << "\n";
+  if (!a.geojson.empty()) std::cout << "wrote " << a.geojson << "\n";
 }
 
 }  // namespace
@@ -227,8 +276,10 @@ void add_decompose_commands(CLI::App& app) {
     cmd->add_option("--method", *method, "Decomposition method")->check(CLI::IsMember({"trapezoidal", "boustrophedon"}))->capture_default_str();
     cmd->add_option("--angle", *angle, "Sweep direction in degrees, counter-clockwise from +x (boustrophedon)");
     add_json_flag(cmd, *json_out, "Machine-readable output on stdout");
+    auto geojson = std::make_shared<std::string>();
     cmd->add_option("--svg", *svg, "Draw cells, extensions and the adjacency graph to this SVG file");
-    cmd->callback([=] { run_decompose(*path, *method, *angle, *json_out, *svg); });
+    cmd->add_option("--geojson", *geojson, "Also write the environment and the cells as GeoJSON polygons");
+    cmd->callback([=] { run_decompose(*path, *method, *angle, *json_out, *svg, *geojson); });
   }
   {
     auto* cmd = app.add_subcommand("plan", "Collision-free path for a point or disc robot: shortest, or through the trapezoidal decomposition");
@@ -248,8 +299,10 @@ void add_decompose_commands(CLI::App& app) {
         ->check(CLI::IsMember({"shortest", "trapezoidal"}))->capture_default_str();
     cmd->add_flag("--no-shorten", *no_shorten, "Trapezoidal: keep the path through extension midpoints and cell centroids");
     add_json_flag(cmd, *json_out, "Machine-readable output on stdout");
+    auto geojson = std::make_shared<std::string>();
     cmd->add_option("--svg", *svg, "Draw the scene, the configuration space and the path to this SVG file");
-    cmd->callback([=] { run_plan(*path, *start, *goal, *radius, *method, *no_shorten, *json_out, *svg); });
+    cmd->add_option("--geojson", *geojson, "Also write the environment, the path (LineString), start and goal as GeoJSON");
+    cmd->callback([=] { run_plan(*path, *start, *goal, *radius, *method, *no_shorten, *json_out, *svg, *geojson); });
   }
   {
     auto* cmd = app.add_subcommand("cover", "Coverage path for a tool of width W (and a robot of radius r) on the boustrophedon decomposition");
@@ -267,6 +320,7 @@ void add_decompose_commands(CLI::App& app) {
         ->check(CLI::IsMember({"shortest", "decomposition"}))->capture_default_str();
     add_json_flag(cmd, a->json, "Machine-readable output on stdout");
     cmd->add_option("--svg", a->svg, "Draw the configuration space and the coverage path to this SVG file");
+    cmd->add_option("--geojson", a->geojson, "Also write the environment and the path (a LineString per run of laps, follows or transits) as GeoJSON");
     cmd->callback([a] { run_cover(*a); });
   }
 }

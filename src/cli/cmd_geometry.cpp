@@ -2,6 +2,8 @@
 // preimage validate | import | render | visibility
 #include "common.hpp"
 
+#include <preimage/scene/geojson.hpp>
+
 #include <preimage/error.hpp>
 #include <preimage/geometry/general_position.hpp>
 #include <preimage/geometry/visibility.hpp>
@@ -73,7 +75,9 @@ void run_import(const std::string& in, const std::string& from, const std::strin
   scene::Scene s;
   if (from == "houseexpo") s = scene::import_houseexpo(in);
   else if (from == "visilibity") s = scene::import_visilibity(in);
-  else throw InputError("--from: unknown format '" + from + "' (expected houseexpo or visilibity)");
+  else if (from == "geojson") s = scene::import_geojson(in);
+  else if (from == "wkt") s = scene::import_wkt(in);
+  else throw InputError("--from: unknown format '" + from + "' (expected houseexpo, visilibity, geojson or wkt)");
   scene::save_scene(s, out);
   const auto& env = s.require_environment();
   std::cout << "wrote " << out << ": " << count_of(env.num_vertices(), "vertex", "vertices") << ", " << count_of(env.num_holes(), "obstacle") << "\n";
@@ -130,7 +134,7 @@ json visibility_json(const geometry::VisibilityPolygon& v) {
               {"edges", edges}};
 }
 
-void run_visibility(const std::string& path, const std::string& from, bool as_json, const std::string& svg) {
+void run_visibility(const std::string& path, const std::string& from, bool as_json, const std::string& svg, const std::string& geojson) {
   const scene::Scene s = scene::load_scene(path);
   const geometry::Point q = parse_point(from, "--from");
   geometry::VisibilityIndex index(s.require_environment());
@@ -140,6 +144,15 @@ void run_visibility(const std::string& path, const std::string& from, bool as_js
     render::draw_scene(canvas, s);
     render::draw_visibility(canvas, v);
     canvas.save(svg);
+  }
+  if (!geojson.empty()) {
+    std::vector<geometry::Point> ring;
+    for (const auto& vv : v.vertices) ring.push_back(vv.approx);
+    scene::GeoJsonWriter()
+        .environment(s.require_environment(), {{"kind", "environment"}})
+        .polygon({ring}, {{"kind", "visibility polygon"}, {"area", v.area()}})
+        .point(q, {{"kind", "viewpoint"}})
+        .save(geojson);
   }
   if (as_json) {
     print_json(visibility_json(v));
@@ -151,6 +164,7 @@ void run_visibility(const std::string& path, const std::string& from, bool as_js
             << "): " << v.vertices.size() << " vertices, " << v.edges.size() - free << " solid and " << free
             << " free edges, area " << geometry::format_number(v.area()) << "\n";
   if (!svg.empty()) std::cout << "wrote " << svg << "\n";
+  if (!geojson.empty()) std::cout << "wrote " << geojson << "\n";
 }
 
 }  // namespace
@@ -167,12 +181,13 @@ void add_geometry_commands(CLI::App& app) {
   }
   {
     auto* cmd = app.add_subcommand("import", "Convert a floor plan into a preimage scene (validated)");
-    set_examples(cmd, {"preimage import examples/floorplans/house_expo_room_0000.json --from houseexpo -o house.json", "preimage import examples/room_with_pillar.visilibity.txt --from visilibity -o pillar.json"});
+    set_examples(cmd, {"preimage import examples/floorplans/house_expo_room_0000.json --from houseexpo -o house.json", "preimage import examples/room_with_pillar.visilibity.txt --from visilibity -o pillar.json",
+                       "preimage import examples/formats/l_room.wkt --from wkt -o l_room.json"});
     auto in = std::make_shared<std::string>();
     auto from = std::make_shared<std::string>();
     auto out = std::make_shared<std::string>();
     cmd->add_option("file", *in, "Input file")->required();
-    cmd->add_option("--from", *from, "Input format: houseexpo | visilibity")->required();
+    cmd->add_option("--from", *from, "Input format: houseexpo | visilibity | geojson | wkt")->required();
     cmd->add_option("-o,--output", *out, "Scene JSON to write")->required();
     cmd->callback([=] { run_import(*in, *from, *out); });
   }
@@ -197,8 +212,10 @@ void add_geometry_commands(CLI::App& app) {
     cmd->add_option("scene", *path, "Scene JSON file")->required();
     cmd->add_option("--from", *from, "Viewpoint X,Y")->required();
     add_json_flag(cmd, *json_out, "Machine-readable output on stdout");
+    auto geojson = std::make_shared<std::string>();
     cmd->add_option("--svg", *svg, "Also draw the polygon to this SVG file");
-    cmd->callback([=] { run_visibility(*path, *from, *json_out, *svg); });
+    cmd->add_option("--geojson", *geojson, "Also write the environment, the polygon and the viewpoint as GeoJSON features");
+    cmd->callback([=] { run_visibility(*path, *from, *json_out, *svg, *geojson); });
   }
 }
 

@@ -77,6 +77,8 @@ geometry::Ring ring(const json& j, const std::string& path) {
   if (!j.is_array()) fail(path, "expected an array of [x, y] vertices, got " + type_name(j));
   geometry::Ring r;
   for (std::size_t i = 0; i < j.size(); ++i) r.push_back(point(j[i], path + "[" + std::to_string(i) + "]"));
+  // A closed ring (last vertex = first, as GeoJSON and Shapely write them) is the same ring.
+  if (r.size() > 3 && r.front() == r.back()) r.pop_back();
   return r;
 }
 

@@ -45,7 +45,7 @@ std::string xy(const Point& p) { return std::string("(").append(std::to_string(p
 bool interior(const geometry::Environment& env, const Point& p) {
   return geometry::locate(env, p).kind == geometry::Location::Kind::Interior;
 }
-double dist(const Point& a, const Point& b) { return std::hypot(a.x() - b.x(), a.y() - b.y()); }
+double planar_distance(const Point& a, const Point& b) { return std::hypot(a.x() - b.x(), a.y() - b.y()); }
 }  // namespace
 
 TrackingScenario TrackingScenario::from_scene(const scene::Scene& sc) {
@@ -95,7 +95,7 @@ std::vector<Point> shortest_path(const geometry::Environment& env, const Point& 
     done[u] = 1;
     for (std::size_t v = 0; v < m; ++v) {
       if (done[v] || v == s) continue;
-      const double nd = d[u] + dist(nodes[u], nodes[v]);
+      const double nd = d[u] + planar_distance(nodes[u], nodes[v]);
       if (nd < d[v] && geometry::visible(env, nodes[u], nodes[v])) { d[v] = nd; parent[v] = u; }
     }
   }
@@ -131,7 +131,7 @@ Point offset(const Point& p, const Vec2& v) { return Point(p.x() + v.x, p.y() + 
 Point walk(std::vector<Point>& path, double step) {
   Point at = path.front();
   while (path.size() >= 2 && step > 0) {
-    const double d = dist(path[0], path[1]);
+    const double d = planar_distance(path[0], path[1]);
     if (d <= step) {
       step -= d;
       path.erase(path.begin());
@@ -188,7 +188,7 @@ class World {
   }
   // May the observer go from `from` to `to` with the target at t (it keeps off the target)?
   bool can_move(const Point& from, const Point& to, const Point& t) const {
-    return interior(to) && geometry::visible(env_, from, to) && dist(to, t) > r_ + 0.15;
+    return interior(to) && geometry::visible(env_, from, to) && planar_distance(to, t) > r_ + 0.15;
   }
   // A target step from `from` to `to` in the open, straight.
   bool can_step(const Point& from, const Point& to) const { return interior(to) && geometry::visible(env_, from, to); }
@@ -248,7 +248,7 @@ class World {
         }
         const Point& a = path[path.size() - 2];
         const Point& b = path.back();
-        const double len = dist(a, b);
+        const double len = planar_distance(a, b);
         if (len > 0) path.push_back(Point(b.x() + (b.x() - a.x()) / len, b.y() + (b.y() - a.y()) / len));
         std::vector<Point> rest = path;
         const Point q = target_step(t, walk(rest, step));
@@ -301,7 +301,7 @@ class World {
   // about k, from the side of its previous point round to the free edge's direction u,
   // the way round that stays in the open, in steps of at most 30 deg.
   void wrap_corner(std::vector<Point>& path, const Point& k, const Vec2& u) const {
-    if (path.size() < 2 || u.norm() == 0 || dist(path.back(), k) >= r_) return;
+    if (path.size() < 2 || u.norm() == 0 || planar_distance(path.back(), k) >= r_) return;
     const Vec2 from = vec(path[path.size() - 2]) - vec(k);
     if (from.norm() == 0) return;
     const double a0 = std::atan2(from.y, from.x), a1 = std::atan2(u.y, u.x);
@@ -315,7 +315,7 @@ class World {
         const double a = a0 + turn * sweep * j / n;
         arc.push_back(offset(k, Vec2{std::cos(a), std::sin(a)} * r_));
       }
-      bool open = dist(path[path.size() - 2], arc.front()) == 0 || can_step(path[path.size() - 2], arc.front());
+      bool open = planar_distance(path[path.size() - 2], arc.front()) == 0 || can_step(path[path.size() - 2], arc.front());
       for (std::size_t j = 1; open && j < arc.size(); ++j) open = can_step(arc[j - 1], arc[j]);
       if (!open) continue;
       path.pop_back();
@@ -402,7 +402,7 @@ SimulationResult simulate(const TrackingScenario& sc, const SimulationParams& sp
     for (int tries = 0; tries < 1000; ++tries) {
       const Pose o{disc(sc.observer.position), sc.observer.heading + sp.heading_spread * U(jitter)};
       const Point q = disc(sc.target.center);
-      if (!world.interior(o.position) || !world.interior(q) || dist(o.position, q) < sc.target.radius + 0.35 ||
+      if (!world.interior(o.position) || !world.interior(q) || planar_distance(o.position, q) < sc.target.radius + 0.35 ||
           !world.sees(o, q))
         continue;
       if (sp.policy == TargetPolicy::Scripted && !sc.target_path.empty() && !world.can_step(q, sc.target_path.front()))
@@ -446,7 +446,7 @@ SimulationResult simulate(const TrackingScenario& sc, const SimulationParams& sp
     out.tracked.push_back(ts.tracked);
     out.commands.push_back(cmd);
     world.move(o, cmd, t);
-    out.observer_length += dist(before.position, o.pose.position);
+    out.observer_length += planar_distance(before.position, o.pose.position);
     if (sp.on_step) sp.on_step(StepRecord{step, before, t, vis, o.estimate, &ts, cmd, o.velocity});
 
     // --- the target
@@ -466,7 +466,7 @@ SimulationResult simulate(const TrackingScenario& sc, const SimulationParams& sp
       case TargetPolicy::Adversarial: t = world.escape_step(o.pose.position, t, chase * sp.dt, plan); break;
       case TargetPolicy::Lookahead: t = world.lookahead_step(o, t, chase * sp.dt); break;
     }
-    out.target_length += dist(t_before, t);
+    out.target_length += planar_distance(t_before, t);
   }
   out.visible_fraction = static_cast<double>(seen) / static_cast<double>(out.visible.size());
   return out;

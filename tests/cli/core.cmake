@@ -71,6 +71,15 @@ add_test(NAME cli.browser_check_catches_a_script_error
                  ${OUT}/demo/index.html ${OUT}/broken_report.html ${CMAKE_CURRENT_SOURCE_DIR}/cli/browser_check.sh)
 set_tests_properties(cli.browser_check_catches_a_script_error PROPERTIES FIXTURES_REQUIRED demo_report)
 
+# GeoJSON and WKT in, GeoJSON out (issue 22).
+cli_test(import_wkt 0 "wrote .*: 10 vertices, 1 obstacle" ${OUT}/l_room_wkt.json import ${EXAMPLES}/formats/l_room.wkt --from wkt -o ${OUT}/l_room_wkt.json)
+cli_test(import_geojson 0 "wrote .*: 10 vertices, 1 obstacle" ${OUT}/l_room_geojson.json import ${EXAMPLES}/formats/l_room.geojson --from geojson -o ${OUT}/l_room_geojson.json)
+cli_test(import_unknown_format_lists_all fail "--from: unknown format 'shp' \\(expected houseexpo, visilibity, geojson or wkt\\)" - import ${EXAMPLES}/formats/l_room.wkt --from shp -o ${OUT}/never.json)
+cli_test(visibility_geojson 0 "wrote .*vis\\.geojson" ${OUT}/vis.geojson visibility ${EXAMPLES}/gallery.json --from 1,1 --geojson ${OUT}/vis.geojson)
+cli_test(plan_geojson 0 "wrote .*plan\\.geojson" ${OUT}/plan.geojson plan ${EXAMPLES}/gallery.json --radius 0.2 --geojson ${OUT}/plan.geojson)
+cli_test(cover_geojson 0 "wrote .*cover\\.geojson" ${OUT}/cover.geojson cover ${EXAMPLES}/gallery.json --radius 0.2 --geojson ${OUT}/cover.geojson)
+cli_test(decompose_geojson 0 "wrote .*cells\\.geojson" ${OUT}/cells.geojson decompose ${EXAMPLES}/gallery.json --method boustrophedon --geojson ${OUT}/cells.geojson)
+
 # Real floor plans (HouseExpo, shipped in examples/floorplans).
 cli_test(import_houseexpo_0000 0 "wrote .*: 147 vertices" ${OUT}/house0000.json
          import ${FLOORPLANS}/house_expo_room_0000.json --from houseexpo -o ${OUT}/house0000.json)

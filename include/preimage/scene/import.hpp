@@ -20,4 +20,18 @@ Scene import_houseexpo(const std::string& text, const std::string& source);
 Scene import_visilibity(const std::string& path);
 Scene import_visilibity(const std::string& text, const std::string& source);
 
+/// GeoJSON (RFC 7946) with one polygon: a Polygon, a MultiPolygon of one polygon, or a
+/// Feature / FeatureCollection holding exactly one of those. The first ring is the
+/// boundary, the others holes; rings must be closed as GeoJSON requires (the closing
+/// position is dropped); a third coordinate (altitude) is ignored. Errors name the JSON
+/// path: "plan.geojson: $.features[0].geometry.coordinates[1]: ...".
+Scene import_geojson(const std::string& path);
+Scene import_geojson(const std::string& text, const std::string& source);
+
+/// WKT `POLYGON ((x y, ...), (x y, ...))` or a `MULTIPOLYGON` of one polygon (Z/M
+/// coordinates are refused); rings closed or not. Errors name the character:
+/// "room.wkt: character 17: expected a number, got 'a'".
+Scene import_wkt(const std::string& path);
+Scene import_wkt(const std::string& text, const std::string& source);
+
 }  // namespace preimage::scene
