@@ -1,0 +1,174 @@
+// SPDX-License-Identifier: Apache-2.0
+// The `preimage` Python module: the library's scenes, visibility, decompositions, plans
+// and coverage, with coordinates as NumPy arrays and InputError as preimage.InputError
+// (a ValueError) carrying the CLI's one-line message.
+#include <preimage/decompose/boustrophedon.hpp>
+#include <preimage/decompose/coverage.hpp>
+#include <preimage/decompose/planner.hpp>
+#include <preimage/decompose/trapezoidal.hpp>
+#include <preimage/error.hpp>
+#include <preimage/geometry/visibility.hpp>
+#include <preimage/scene/geojson.hpp>
+#include <preimage/scene/import.hpp>
+#include <preimage/scene/scene.hpp>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+namespace py = pybind11;
+using namespace preimage;
+using geometry::Point;
+
+namespace {
+
+py::array_t<double> to_array(const std::vector<Point>& pts) {
+  py::array_t<double> a({static_cast<py::ssize_t>(pts.size()), py::ssize_t{2}});
+  auto m = a.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < pts.size(); ++i) m(i, 0) = pts[i].x(), m(i, 1) = pts[i].y();
+  return a;
+}
+
+// An (n, 2) array or any sequence of (x, y) pairs, as Shapely's coords give them.
+std::vector<Point> to_points(const py::handle& obj, const std::string& what) {
+  auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(obj);
+  if (!a || a.ndim() != 2 || a.shape(1) != 2) throw InputError(what + ": expected an (n, 2) array of x, y coordinates");
+  std::vector<Point> pts;
+  auto r = a.unchecked<2>();
+  for (py::ssize_t i = 0; i < r.shape(0); ++i) pts.emplace_back(r(i, 0), r(i, 1));
+  return pts;
+}
+
+Point to_point(const py::handle& obj, const std::string& what) {
+  auto pts = to_points(py::array_t<double>::ensure(obj).reshape({1, 2}), what);
+  return pts.at(0);
+}
+
+geometry::Environment make_environment(const py::handle& boundary, const std::vector<py::handle>& holes) {
+  std::vector<Point> outer = to_points(boundary, "boundary");
+  if (outer.size() > 3 && outer.front() == outer.back()) outer.pop_back();  // closed, as Shapely gives rings
+  std::vector<geometry::Ring> hs;
+  for (std::size_t i = 0; i < holes.size(); ++i) {
+    auto h = to_points(holes[i], "holes[" + std::to_string(i) + "]");
+    if (h.size() > 3 && h.front() == h.back()) h.pop_back();
+    hs.push_back(std::move(h));
+  }
+  return geometry::Environment::make(std::move(outer), std::move(hs), "boundary", "holes");
+}
+
+py::list rings_list(const geometry::Environment& env) {
+  py::list out;
+  for (std::size_t r = 0; r < env.num_rings(); ++r) out.append(to_array(env.ring(r)));
+  return out;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(preimage, m) {
+  m.doc() = "Combinatorial planning and filtering in the plane, computed exactly (the preimage library)";
+  py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
+
+  py::class_<geometry::Environment>(m, "Environment", "A polygon with holes, validated with exact predicates")
+      .def(py::init(&make_environment), py::arg("boundary"), py::arg("holes") = std::vector<py::handle>{},
+           "boundary: (n, 2) array; holes: list of (m, 2) arrays (rings closed or not)")
+      .def_property_readonly("num_vertices", &geometry::Environment::num_vertices)
+      .def_property_readonly("num_holes", &geometry::Environment::num_holes)
+      .def_property_readonly("rings", &rings_list, "Boundary (counter-clockwise) then holes (clockwise), as (n, 2) arrays")
+      .def("to_geojson", [](const geometry::Environment& env) {
+        return scene::format_json(scene::GeoJsonWriter().environment(env).json(), scene::JsonLayout::Compact);
+      });
+
+  py::class_<scene::Scene>(m, "Scene", "A scene file: environment, start, goal, robot and other slots")
+      .def_readonly("name", &scene::Scene::name)
+      .def_property_readonly("environment", [](const scene::Scene& s) { return s.require_environment(); })
+      .def_property_readonly("start", [](const scene::Scene& s) -> py::object {
+        return s.start ? py::object(py::make_tuple(s.start->x(), s.start->y())) : py::none();
+      })
+      .def_property_readonly("goal", [](const scene::Scene& s) -> py::object {
+        return s.goal ? py::object(py::make_tuple(s.goal->x(), s.goal->y())) : py::none();
+      })
+      .def_property_readonly("robot_radius", [](const scene::Scene& s) { return s.robot_radius.value_or(0.0); });
+
+  m.def("load_scene", [](const std::string& path) { return scene::load_scene(path); }, py::arg("path"), "Read a scene JSON file");
+  m.def("import_plan", [](const std::string& path, const std::string& fmt) {
+    if (fmt == "houseexpo") return scene::import_houseexpo(path);
+    if (fmt == "visilibity") return scene::import_visilibity(path);
+    if (fmt == "geojson") return scene::import_geojson(path);
+    if (fmt == "wkt") return scene::import_wkt(path);
+    throw InputError("format: unknown format '" + fmt + "' (expected houseexpo, visilibity, geojson or wkt)");
+  }, py::arg("path"), py::arg("format"), "A floor plan file as a Scene (formats of `preimage import`)");
+
+  m.def("visibility", [](const geometry::Environment& env, const py::handle& q) {
+    const geometry::VisibilityIndex index(env);
+    const auto v = index.compute(to_point(q, "viewpoint"));
+    std::vector<Point> pts;
+    std::vector<bool> free;
+    for (std::size_t i = 0; i < v.vertices.size(); ++i) {
+      pts.push_back(v.vertices[i].approx);
+      free.push_back(v.edges[i].kind == geometry::VisibilityEdge::Kind::Free);
+    }
+    py::dict d;
+    d["vertices"] = to_array(pts);
+    d["free_edges"] = free;
+    d["area"] = v.area();
+    d["location"] = std::string(geometry::to_string(v.location.kind));
+    return d;
+  }, py::arg("environment"), py::arg("viewpoint"), "Exact visibility polygon from a point; edge i runs from vertex i to i+1");
+
+  m.def("decompose", [](const geometry::Environment& env, const std::string& method, double angle) {
+    py::list cells;
+    if (method == "trapezoidal") {
+      if (angle != 0) throw InputError("angle: the trapezoidal decomposition sweeps along x (use method='boustrophedon')");
+      const decompose::TrapezoidalDecomposition d(env);
+      for (std::size_t i = 0; i < d.cells().size(); ++i) {
+        std::vector<Point> ring;
+        for (auto& p : d.polygon(i)) ring.push_back(geometry::to_double(p));
+        cells.append(to_array(ring));
+      }
+    } else if (method == "boustrophedon") {
+      const decompose::BoustrophedonDecomposition b(env, angle);
+      for (std::size_t i = 0; i < b.cells().size(); ++i) cells.append(to_array(b.polygon(i)));
+    } else {
+      throw InputError("method: expected 'trapezoidal' or 'boustrophedon', got '" + method + "'");
+    }
+    return cells;
+  }, py::arg("environment"), py::arg("method") = "trapezoidal", py::arg("angle") = 0.0, "The cells' polygons");
+
+  m.def("plan", [](const geometry::Environment& env, const py::handle& start, const py::handle& goal, double radius, const std::string& method) {
+    if (method != "shortest" && method != "trapezoidal") throw InputError("method: expected 'shortest' or 'trapezoidal', got '" + method + "'");
+    const auto p = decompose::plan_path(env, to_point(start, "start"), to_point(goal, "goal"), radius,
+                                        method == "shortest" ? decompose::PlanMethod::Shortest : decompose::PlanMethod::Trapezoidal);
+    py::dict d;
+    d["found"] = p.found;
+    d["path"] = to_array(p.path);
+    d["length"] = p.length;
+    if (!p.found) d["reason"] = p.why_not;
+    return d;
+  }, py::arg("environment"), py::arg("start"), py::arg("goal"), py::arg("radius") = 0.0, py::arg("method") = "shortest",
+     "A collision-free path for a disc robot (every segment certified in the configuration space)");
+
+  m.def("cover", [](const geometry::Environment& env, double radius, std::optional<double> width, std::optional<double> angle,
+                    const py::object& start) {
+    decompose::CoverageOptions o;
+    o.robot_radius = radius;
+    o.width = width.value_or(0.0);
+    if (!width && radius == 0) throw InputError("width: not given, and without a robot radius it has no default of 2r");
+    o.angle_deg = angle;
+    if (!start.is_none()) o.start = to_point(start, "start");
+    const auto rep = decompose::plan_coverage(env, o);
+    const auto met = decompose::measure_coverage(env, rep);
+    py::list moves;
+    for (auto mv : rep.moves) moves.append(mv == decompose::Move::Lap ? "lap" : mv == decompose::Move::Follow ? "follow" : "transit");
+    py::dict d;
+    d["path"] = to_array(rep.path);
+    d["moves"] = moves;
+    d["length"] = rep.length;
+    d["angle"] = rep.angle;
+    d["laps"] = rep.laps;
+    d["turns"] = rep.turns;
+    d["covered_fraction"] = met.covered_fraction;
+    d["overlap"] = met.overlap;
+    return d;
+  }, py::arg("environment"), py::arg("radius") = 0.0, py::arg("width") = py::none(), py::arg("angle") = py::none(),
+     py::arg("start") = py::none(), "A boustrophedon coverage path (certified); angle None tries candidates and keeps the shortest");
+}

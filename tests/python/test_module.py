@@ -1,0 +1,81 @@
+# SPDX-License-Identifier: Apache-2.0
+"""The Python module against the CLI on the shipped scenes: the same library, so the same
+numbers (issue 22). Run by ctest (python.pytest) with PYTHONPATH=build/python."""
+import json
+import os
+import subprocess
+
+import numpy as np
+import pytest
+
+import preimage
+
+CLI = os.environ["PREIMAGE_CLI"]
+EXAMPLES = os.environ["PREIMAGE_EXAMPLES"]
+GALLERY = os.path.join(EXAMPLES, "gallery.json")
+
+
+def cli_json(*args):
+    out = subprocess.run([CLI, *args, "--json"], check=True, capture_output=True, text=True).stdout
+    return json.loads(out)
+
+
+def test_visibility_matches_cli():
+    env = preimage.load_scene(GALLERY).environment
+    v = preimage.visibility(env, (1, 1))
+    c = cli_json("visibility", GALLERY, "--from", "1,1")
+    assert v["vertices"].shape == (len(c["vertices"]), 2)
+    assert v["area"] == pytest.approx(c["area"], rel=1e-12)
+    cli_vertices = np.array([(p["x"], p["y"]) for p in c["vertices"]], dtype=float)
+    free = [e["kind"] == "free" for e in c["edges"]]
+    assert v["free_edges"] == free
+    assert np.allclose(v["vertices"], cli_vertices, rtol=0, atol=1e-12)
+
+
+def test_plan_matches_cli_and_stays_in_free_space():
+    scene = preimage.load_scene(GALLERY)
+    p = preimage.plan(scene.environment, (0.5, 7.5), (11.5, 0.5), radius=0.2)
+    c = cli_json("plan", GALLERY, "--start", "0.5,7.5", "--goal", "11.5,0.5", "--radius", "0.2")
+    assert p["found"] and c["found"]
+    assert p["length"] == pytest.approx(c["length"], rel=1e-12)
+    assert np.array_equal(p["path"], np.array(c["path"], dtype=float))
+
+
+def test_cover_matches_cli():
+    scene = preimage.load_scene(GALLERY)
+    r = preimage.cover(scene.environment, radius=0.2, angle=0, start=scene.start)  # the CLI starts at the scene's start
+    c = cli_json("cover", GALLERY, "--radius", "0.2", "--angle", "0")
+    assert r["length"] == pytest.approx(c["length"], rel=1e-12)
+    assert r["moves"] == c["moves"]
+    assert r["covered_fraction"] == pytest.approx(c["metrics"]["covered_fraction"])
+
+
+@pytest.mark.parametrize("method", ["trapezoidal", "boustrophedon"])
+def test_decompose_matches_cli(method):
+    env = preimage.load_scene(GALLERY).environment
+    cells = preimage.decompose(env, method)
+    c = cli_json("decompose", GALLERY, "--method", method)
+    assert len(cells) == len(c["cells"])
+    for mine, theirs in zip(cells, c["cells"]):
+        assert np.allclose(mine, np.array(theirs["polygon"], dtype=float), rtol=0, atol=1e-12)
+
+
+def test_environment_from_shapely_style_rings_and_errors():
+    # Closed rings, as Shapely's exterior.coords gives them.
+    square = [(0, 0), (4, 0), (4, 4), (0, 4), (0, 0)]
+    hole = [(1, 1), (1, 2), (2, 2), (2, 1), (1, 1)]
+    env = preimage.Environment(np.array(square, dtype=float), [np.array(hole, dtype=float)])
+    assert env.num_vertices == 8 and env.num_holes == 1
+    assert preimage.visibility(env, (3, 3))["area"] < 16
+    with pytest.raises(preimage.InputError, match=r"holes\[0\] edge .* touches boundary"):
+        preimage.Environment(np.array(square, dtype=float), [np.array([(3, 1), (5, 1), (5, 2), (3, 1)], dtype=float)])
+    with pytest.raises(ValueError, match="expected an \\(n, 2\\) array"):
+        preimage.Environment(np.zeros((3, 3)))
+
+
+def test_import_formats_agree():
+    a = preimage.import_plan(os.path.join(EXAMPLES, "formats", "l_room.wkt"), "wkt").environment
+    b = preimage.import_plan(os.path.join(EXAMPLES, "formats", "l_room.geojson"), "geojson").environment
+    for ra, rb in zip(a.rings, b.rings):
+        assert np.array_equal(ra, rb)
+    assert json.loads(a.to_geojson())["features"][0]["geometry"]["type"] == "Polygon"
