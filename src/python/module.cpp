@@ -11,10 +11,13 @@
 #include <preimage/scene/geojson.hpp>
 #include <preimage/scene/import.hpp>
 #include <preimage/scene/scene.hpp>
+#include <preimage/tracking/replay.hpp>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+
+#include <cmath>
 
 namespace py = pybind11;
 using namespace preimage;
@@ -146,6 +149,28 @@ PYBIND11_MODULE(preimage, m) {
     return d;
   }, py::arg("environment"), py::arg("start"), py::arg("goal"), py::arg("radius") = 0.0, py::arg("method") = "shortest",
      "A collision-free path for a disc robot (every segment certified in the configuration space)");
+
+  m.def("replay_line", [](const std::string& line, double max_range, double radius, double ahead, const std::string& where) -> py::object {
+    const auto scan = tracking::parse_log_line(line, max_range, where);
+    if (!scan) return py::none();  // a line that carries no scan (ODOM, PARAM, comments)
+    tracking::TrackerParams tp;
+    tp.detect.radius = radius;
+    tp.risk.delta = radius;
+    const auto r = tracking::replay_scan(*scan, tp, ahead);
+    py::dict d;
+    d["timestamp"] = r.timestamp;
+    d["vertices"] = r.vertices;
+    d["occlusion_edges"] = r.occlusion;
+    d["range_edges"] = r.range;
+    d["target_rule"] = r.target_rule;
+    d["sde"] = r.has_tree && std::isfinite(r.sde) ? py::object(py::float_(r.sde)) : py::object(py::none());
+    d["escape_paths"] = r.escape_paths;
+    d["micros"] = r.micros;
+    d["points"] = to_array(r.points);
+    d["V"] = to_array(r.map.vertices);
+    return d;
+  }, py::arg("line"), py::arg("max_range") = 50.0, py::arg("radius") = 0.2, py::arg("ahead") = 1.0, py::arg("where") = "line",
+     "TRACK's steps on one log line (CARMEN FLASER/ROBOTLASER1 or the text format), as `preimage track replay` does; None for other lines");
 
   m.def("cover", [](const geometry::Environment& env, double radius, std::optional<double> width, std::optional<double> angle,
                     const py::object& start) {
