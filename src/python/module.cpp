@@ -2,16 +2,21 @@
 // The `preimage` Python module: the library's scenes, visibility, decompositions, plans
 // and coverage, with coordinates as NumPy arrays and InputError as preimage.InputError
 // (a ValueError) carrying the CLI's one-line message.
+#include <preimage/beams/arrangement.hpp>
+#include <preimage/beams/region_filter.hpp>
 #include <preimage/decompose/boustrophedon.hpp>
 #include <preimage/decompose/coverage.hpp>
 #include <preimage/decompose/planner.hpp>
 #include <preimage/decompose/trapezoidal.hpp>
 #include <preimage/error.hpp>
 #include <preimage/geometry/visibility.hpp>
+#include <preimage/landmarks/order_type.hpp>
 #include <preimage/scene/geojson.hpp>
 #include <preimage/scene/import.hpp>
 #include <preimage/scene/scene.hpp>
 #include <preimage/tracking/replay.hpp>
+#include <preimage/wallfollow/cut_ordering.hpp>
+#include <preimage/wallfollow/environment.hpp>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -149,6 +154,54 @@ PYBIND11_MODULE(preimage, m) {
     return d;
   }, py::arg("environment"), py::arg("start"), py::arg("goal"), py::arg("radius") = 0.0, py::arg("method") = "shortest",
      "A collision-free path for a disc robot (every segment certified in the configuration space)");
+
+  m.def("beams_filter", [](const scene::Scene& s, const std::string& word) {
+    const auto A = beams::BeamArrangement::build(s);
+    beams::RegionFilter F(A);
+    const auto symbols = A.alphabet().parse_word(word);
+    py::dict d;
+    d["consistent"] = true;
+    for (std::size_t i = 0; i < symbols.size(); ++i)
+      if (!F.step(symbols[i])) {
+        d["consistent"] = false;
+        d["inconsistent_at"] = i + 1;  // 1-based, as the CLI says it
+        break;
+      }
+    d["regions"] = F.regions();
+    d["num_regions"] = A.num_regions();
+    return d;
+  }, py::arg("scene"), py::arg("word"),
+     "The region filter (beams paper, section 3) on an observation word such as \"a b' c\": the possible final regions");
+
+  m.def("order_type", [](const py::handle& points) {
+    const auto pts = to_points(points, "points");
+    const auto T = landmarks::OrderType::of(pts);
+    const std::size_t n = T.size();
+    py::array_t<int> chi({static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(n)});
+    auto c = chi.mutable_unchecked<3>();
+    for (std::uint32_t i = 0; i < n; ++i)
+      for (std::uint32_t j = 0; j < n; ++j)
+        for (std::uint32_t k = 0; k < n; ++k) c(i, j, k) = T.chi(i, j, k);
+    py::list around;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      auto a = T.around(i);
+      around.append(std::vector<std::uint32_t>(a.begin(), a.end()));
+    }
+    py::dict d;
+    d["chirotope"] = chi;
+    d["hull"] = T.hull();
+    d["around"] = around;
+    return d;
+  }, py::arg("points"), "Order type of landmarks in general position (landmark paper, section 3): chi[i, j, k], hull, cyclic orders");
+
+  m.def("cut_ordering", [](const geometry::Environment& env) {
+    wallfollow::require_general_position(env, "boundary");
+    const auto T = wallfollow::true_cut_ordering(env);
+    py::dict d;
+    d["ordering"] = T.ordering.str();  // v1 = the boundary's first vertex
+    d["canonical"] = T.ordering.canonical().str();
+    return d;
+  }, py::arg("environment"), "The cut ordering (wall-following paper, section 4) of a simple polygon in general position and its canonical form, as `preimage wallfollow cut-ordering` prints them");
 
   m.def("replay_line", [](const std::string& line, double max_range, double radius, double ahead, const std::string& where) -> py::object {
     const auto scan = tracking::parse_log_line(line, max_range, where);

@@ -79,3 +79,49 @@ def test_import_formats_agree():
     for ra, rb in zip(a.rings, b.rings):
         assert np.array_equal(ra, rb)
     assert json.loads(a.to_geojson())["features"][0]["geometry"]["type"] == "Polygon"
+
+
+def test_beams_filter_matches_cli():
+    scene_path = os.path.join(EXAMPLES, "beams", "fig01_six_beams.json")
+    scene = preimage.load_scene(scene_path)
+    for word in ["c b a", "a b a d e", ""]:
+        mine = preimage.beams_filter(scene, word)
+        theirs = cli_json("beams", "filter", scene_path, "--word", word)
+        assert mine["consistent"] == theirs["consistent"], word
+        assert mine["regions"] == theirs["regions"], word
+
+
+def test_order_type_matches_brute_force_orientation():
+    rng = np.random.default_rng(7)
+    pts = rng.uniform(0, 10, size=(7, 2))
+    t = preimage.order_type(pts)
+    chi = t["chirotope"]
+    for i in range(7):
+        for j in range(7):
+            for k in range(7):
+                if len({i, j, k}) < 3:
+                    assert chi[i, j, k] == 0
+                    continue
+                (ax, ay), (bx, by), (cx, cy) = pts[i], pts[j], pts[k]
+                det = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+                assert chi[i, j, k] == (1 if det > 0 else -1)  # random doubles: far from zero
+    assert len(t["hull"]) >= 3 and all(len(a) == 6 for a in t["around"])
+
+
+def test_cut_ordering_matches_cli():
+    path = os.path.join(EXAMPLES, "wallfollow", "fig03_two_reflex.json")
+    mine = preimage.cut_ordering(preimage.load_scene(path).environment)
+    theirs = cli_json("wallfollow", "cut-ordering", path)
+    assert mine["ordering"] == theirs["true"] and mine["canonical"] == theirs["canonical"]
+
+
+def test_replay_line_matches_cli():
+    log = os.path.join(EXAMPLES, "tracking", "corridor_scans.txt")
+    lines = [line for line in open(log) if not line.startswith("#")]
+    out = subprocess.run([CLI, "track", "replay", log, "--json"], check=True, capture_output=True, text=True).stdout
+    cli_rows = [json.loads(row) for row in out.splitlines()]
+    mine = [preimage.replay_line(line) for line in lines]
+    assert len(mine) == len(cli_rows)
+    for a, b in zip(mine, cli_rows):
+        assert (a["vertices"], a["target_rule"], a["escape_paths"]) == (b["vertices"], b["target_rule"], b.get("escape_paths", 0))
+        assert len(a["points"]) == len(b["geometry"]["points"])
