@@ -11,6 +11,9 @@
 #include <preimage/error.hpp>
 #include <preimage/geometry/visibility.hpp>
 #include <preimage/landmarks/order_type.hpp>
+#include <preimage/pursuit/cells.hpp>
+#include <preimage/pursuit/checker.hpp>
+#include <preimage/pursuit/search.hpp>
 #include <preimage/scene/geojson.hpp>
 #include <preimage/scene/import.hpp>
 #include <preimage/scene/scene.hpp>
@@ -202,6 +205,30 @@ PYBIND11_MODULE(preimage, m) {
     d["canonical"] = T.ordering.canonical().str();
     return d;
   }, py::arg("environment"), "The cut ordering (wall-following paper, section 4) of a simple polygon in general position and its canonical form, as `preimage wallfollow cut-ordering` prints them");
+
+  m.def("pursuit_plan", [](const geometry::Environment& env, std::size_t max_pursuers, const py::object& start, std::size_t max_states) {
+    if (max_pursuers < 1 || max_pursuers > 8) throw InputError("max_pursuers: expected 1 to 8, got " + std::to_string(max_pursuers));
+    const auto cells = pursuit::ConservativeCells::build(env);
+    pursuit::SearchOptions o;
+    if (!start.is_none()) o.start = to_point(start, "start");
+    o.max_states = max_states;
+    const auto r = pursuit::least_pursuers(cells, max_pursuers, o);
+    py::dict d;
+    d["outcome"] = std::string(pursuit::to_string(r.outcome));
+    d["pursuers"] = r.pursuers;
+    d["states"] = r.states;
+    if (r.plan) {
+      py::list paths;
+      for (const auto& p : r.plan->paths) paths.append(to_array(p));
+      d["paths"] = paths;
+      d["length"] = r.plan->length;
+      // The independent checker of module pursuit, as `preimage pursuit plan` runs it.
+      d["cleared"] = pursuit::check_paths(env, r.plan->paths).cleared;
+    }
+    return d;
+  }, py::arg("environment"), py::arg("max_pursuers") = 1, py::arg("start") = py::none(), py::arg("max_states") = 4'000'000,
+     "Visibility-based pursuit-evasion (conservative cells, information graph): a plan for the fewest pursuers up to "
+     "max_pursuers, one (n, 2) path each, certified in free space and re-checked by the contamination checker");
 
   m.def("replay_line", [](const std::string& line, double max_range, double radius, double ahead, const std::string& where) -> py::object {
     const auto scan = tracking::parse_log_line(line, max_range, where);

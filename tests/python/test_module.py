@@ -125,3 +125,17 @@ def test_replay_line_matches_cli():
     for a, b in zip(mine, cli_rows):
         assert (a["vertices"], a["target_rule"], a["escape_paths"]) == (b["vertices"], b["target_rule"], b.get("escape_paths", 0))
         assert len(a["points"]) == len(b["geometry"]["points"])
+
+
+def test_pursuit_plan_matches_cli_and_clears():
+    path = os.path.join(EXAMPLES, "pursuit", "pillar.json")
+    scene = preimage.load_scene(path)
+    mine = preimage.pursuit_plan(scene.environment, max_pursuers=2, start=scene.start)
+    theirs = cli_json("pursuit", "plan", path, "--pursuers", "2")
+    assert mine["outcome"] == "plan" and mine["pursuers"] == theirs["pursuers"] == 2
+    assert mine["cleared"] and theirs["check"]["cleared"]
+    assert mine["length"] == pytest.approx(theirs["plan"]["length"], rel=1e-12)
+    for a, b in zip(mine["paths"], theirs["plan"]["paths"]):
+        assert np.array_equal(a, np.array(b, dtype=float))
+    one = preimage.pursuit_plan(scene.environment, max_pursuers=1, start=scene.start)
+    assert one["outcome"] == "no plan" and "paths" not in one  # a pillar needs two (a proof: the search is complete)
