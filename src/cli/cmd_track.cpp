@@ -453,7 +453,7 @@ void run_replay(const std::string& file, bool as_json, const ReplayOptions& o) {
     if (!o.svg.empty()) {
       char title[96];
       std::snprintf(title, sizeof title, "scan %zu, t=%.3f s, target %s", r.index, r.timestamp, r.target_rule.c_str());
-      panels.push_back(tracking::replay_scan_figure(r, title));
+      panels.push_back(tracking::replay_scan_figure(r, title, 420, panels.empty()));
     }
     if (as_json) {
       std::cout << replay_json(r, line_no).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";

@@ -68,7 +68,7 @@ void demo_tracking(DemoContext& ctx) {
     ReplayScan rs = replay_scan(scan, TrackerParams{});
     rs.index = step;
     std::snprintf(line, sizeof line, "step %zu: target %s", step, rs.target_rule.c_str());
-    panels.push_back(replay_scan_figure(rs, line, 360));
+    panels.push_back(replay_scan_figure(rs, line, 360, panels.empty()));
   }
   ctx.figure("tracking-replay.svg", render::panel_grid(panels, 3, "sensor frame (x ahead, y left), metres"),
              "What track replay --svg draws for each scan: the returns (dots), V with solid and free edges, the fitted "

@@ -78,7 +78,7 @@ std::string escape_path_tree_figure(const geometry::Environment* env, const Loca
   return c.str();
 }
 
-std::string replay_scan_figure(const ReplayScan& r, const std::string& title, double width_px) {
+std::string replay_scan_figure(const ReplayScan& r, const std::string& title, double width_px, bool legend) {
   CGAL::Bbox_2 box = box_of(r.map.vertices);
   for (auto& p : r.points) box += p.bbox();
   render::SvgCanvas c(box, width_px);
@@ -100,6 +100,7 @@ std::string replay_scan_figure(const ReplayScan& r, const std::string& title, do
     arrow(c, r.map.observer, r.gradient * -1.0, len, render::Style{"none", "#9467bd", 2.5, 1.0, ""}, "-grad phi-bar");
     c.legend("-grad phi-bar (the observer's move)", render::Style{"none", "#9467bd", 2.5, 1.0, ""});
   }
+  if (!legend) c.clear_legend();
   return c.str();
 }
 

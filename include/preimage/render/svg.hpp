@@ -41,6 +41,8 @@ class SvgCanvas {
   /// timeline at which pts[0] is reached (pieces of one path drawn in several styles).
   void path(const std::vector<Point>& pts, const Style& style, const std::string& title = "", double arrow_spacing_px = 70,
             double arrow_size_px = 5, std::size_t first_step = 0);
+  /// Drops the legend (small multiples: one panel carries it for all).
+  void clear_legend() { legend_.clear(); }
   /// Adds a legend entry drawn with the given style.
   void legend(const std::string& text, const Style& style);
 

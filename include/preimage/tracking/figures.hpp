@@ -16,8 +16,8 @@ std::string escape_path_tree_figure(const geometry::Environment* env, const Loca
 struct ReplayScan;
 /// One replayed scan (sensor frame): its returns, V with edges by kind, the detected
 /// circle, the escape-path tree and the risk descent direction; `title` is written in a
-/// corner.
-std::string replay_scan_figure(const ReplayScan& scan, const std::string& title, double width_px = 420);
+/// corner; `legend` false leaves the legend out (panels after the first).
+std::string replay_scan_figure(const ReplayScan& scan, const std::string& title, double width_px = 420, bool legend = true);
 
 /// A closed-loop run: observer path, target path, where sight was lost.
 std::string tracking_run_figure(const geometry::Environment& env, const SimulationResult& run, const std::string& title);
