@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <preimage/beams/examples.hpp>
+#include <preimage/geometry/random_point.hpp>
 #include <preimage/error.hpp>
 
 #include <random>
@@ -103,7 +104,7 @@ scene::Scene landmark_scene(std::size_t n, std::uint64_t seed) {
   scene::Scene s;
   s.name = std::to_string(n) + " landmarks";
   while (s.landmarks.size() < n) {
-    const Point p(u(rng), u(rng));
+    const Point p = geometry::random_point(rng, u);
     bool ok = true;
     for (std::size_t i = 0; i < s.landmarks.size() && ok; ++i) {
       ok = s.landmarks[i].at.x() != p.x();

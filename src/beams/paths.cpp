@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <preimage/beams/paths.hpp>
+#include <preimage/geometry/random_point.hpp>
 #include <preimage/error.hpp>
 
 #include <algorithm>
@@ -101,7 +102,7 @@ Simulation simulate(const BeamArrangement& A, std::uint64_t seed, std::size_t st
   Simulation sim;
   for (int tries = 0; sim.path.empty(); ++tries) {
     if (tries > 100000) throw std::runtime_error("simulate: no point strictly inside a region found");
-    const ExactPoint p(ux(rng), uy(rng));
+    const ExactPoint p = geometry::random_point<ExactPoint>(rng, ux, uy);
     if (A.locate(p)) sim.path.push_back(p);
   }
   sim.trace = trace_path(A, sim.path);

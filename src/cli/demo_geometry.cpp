@@ -4,6 +4,7 @@
 #include "demo.hpp"
 
 #include <preimage/geometry/general_position.hpp>
+#include <preimage/geometry/random_point.hpp>
 #include <preimage/geometry/generators.hpp>
 #include <preimage/render/figures.hpp>
 
@@ -73,7 +74,7 @@ void demo_geometry(DemoContext& ctx) {
   Point q(0, 0);
   double best = -1;
   for (int i = 0; i < 20;) {
-    Point c(X(rng), Y(rng));
+    Point c = geometry::random_point(rng, X, Y);
     if (!rindex.in_free_space(c)) continue;
     ++i;
     const double a = rindex.compute(c).area();
@@ -83,7 +84,7 @@ void demo_geometry(DemoContext& ctx) {
   const auto poly = canonical_cycle(vq.points());
   int agree = 0, total = 0;
   while (total < 300) {
-    Point t(X(rng), Y(rng));
+    Point t = geometry::random_point(rng, X, Y);
     if (!rindex.in_free_space(t)) continue;
     ++total;
     const bool in_v = CGAL::bounded_side_2(poly.begin(), poly.end(), to_exact(t), ExactKernel()) != CGAL::ON_UNBOUNDED_SIDE;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <preimage/geometry/generators.hpp>
+#include <preimage/geometry/random_point.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -16,7 +17,7 @@ Ring random_simple_polygon(std::size_t n, std::uint64_t seed, double size) {
   std::vector<Point> pts;
   pts.reserve(n);
   while (pts.size() < n) {
-    pts.emplace_back(coord(rng), coord(rng));
+    pts.push_back(random_point(rng, coord));
     if (pts.size() == n) {  // distinct points only
       std::sort(pts.begin(), pts.end(), lex_less_xy);
       pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
@@ -31,7 +32,7 @@ Ring random_simple_polygon(std::size_t n, std::uint64_t seed, double size) {
   // First split by the line s t; points on it are rare and are moved off by resampling.
   auto mid = std::partition(idx.begin(), idx.end(), [&](auto i) { return orientation(pts[s], pts[t], pts[i]) < 0; });
   for (auto it = mid; it != idx.end(); ++it)
-    while (orientation(pts[s], pts[t], pts[*it]) == 0) pts[*it] = Point(coord(rng), coord(rng));
+    while (orientation(pts[s], pts[t], pts[*it]) == 0) pts[*it] = random_point(rng, coord);
   mid = std::partition(idx.begin(), idx.end(), [&](auto i) { return orientation(pts[s], pts[t], pts[i]) < 0; });
   const std::size_t k = static_cast<std::size_t>(mid - idx.begin());
   std::vector<Task> stack{{t, s, k, idx.size()}, {s, t, 0, k}};  // right chain s->t first

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <preimage/landmarks/order_type.hpp>
+#include <preimage/geometry/random_point.hpp>
 #include <preimage/error.hpp>
 
 #include <algorithm>
@@ -295,7 +296,7 @@ std::vector<Point> random_landmarks(std::size_t n, std::uint64_t seed, int range
   std::uniform_int_distribution<int> u(-range, range);
   std::vector<Point> P(n);
   for (;;) {
-    for (auto& p : P) p = Point(u(rng), u(rng));
+    for (auto& p : P) p = geometry::random_point(rng, u);
     try {
       require_general_position(P);
       return P;

@@ -173,7 +173,8 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> polar_pairs(std::size_t n, 
 std::vector<std::pair<std::uint32_t, std::uint32_t>> meeting_polar_lines(std::size_t n, const Chirotope& chi, const Reading& g) {
   const auto polar = polar_pairs(n, chi, g);
   std::vector<std::pair<std::uint32_t, std::uint32_t>> out;
-  for (auto [i, j] : polar) {
+  for (const auto& ij : polar) {
+    const std::uint32_t i = ij.first, j = ij.second;  // not a structured binding: clang 14 cannot capture those
     const bool met = std::any_of(polar.begin(), polar.end(), [&](const auto& o) {
       const auto [k, l] = o;
       if (std::minmax(i, j) == std::minmax(k, l)) return false;

@@ -4,6 +4,8 @@
 #include <preimage/error.hpp>
 #include <preimage/geometry/coordinates.hpp>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <set>
@@ -169,6 +171,11 @@ Scene parse_scene(const std::string& text, const std::string& source) {
       for (const char* k : {"label", "from", "to"})
         if (!B[i].contains(k)) fail(p, std::string("missing key \"") + k + "\"");
       Beam b{string_at(B[i]["label"], p + ".label"), point(B[i]["from"], p + ".from"), point(B[i]["to"], p + ".to"), true};
+      // Observation words are white-space-separated labels with an optional prime, so a
+      // label with white space, a trailing prime or no characters could never be observed.
+      const bool spaced = std::any_of(b.label.begin(), b.label.end(), [](char c) { return std::isspace(static_cast<unsigned char>(c)); });
+      if (b.label.empty() || spaced || b.label.back() == '\'')
+        fail(p + ".label", "'" + b.label + "' cannot be written in an observation word (a label is one or more characters, no white space, not ending in ')");
       if (B[i].contains("directed")) {
         if (!B[i]["directed"].is_boolean()) fail(p + ".directed", "expected true or false, got " + type_name(B[i]["directed"]));
         b.directed = B[i]["directed"].get<bool>();

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <preimage/error.hpp>
+#include <preimage/geometry/random_point.hpp>
 #include <preimage/geometry/coordinates.hpp>
 #include <preimage/geometry/queries.hpp>
 #include <preimage/tracking/simulation.hpp>
@@ -419,7 +420,7 @@ SimulationResult simulate(const TrackingScenario& sc, const SimulationParams& sp
     const auto box = env.bbox();
     std::uniform_real_distribution<double> X(box.xmin(), box.xmax()), Y(box.ymin(), box.ymax());
     for (;;) {
-      Point p(X(rng), Y(rng));
+      Point p = geometry::random_point(rng, X, Y);
       if (world.interior(p)) return p;
     }
   };

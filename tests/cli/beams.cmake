@@ -112,6 +112,8 @@ cli_test(beams_landmarks_north_indistinguishable fail "--indistinguishable: only
 cli_test(beams_landmarks_filter 0 "possible regions after" - beams filter ${BEAMS}/fig10_landmarks_undirected.json --word "1~2 2~3")
 cli_test(beams_bad_beam fail "\\$\\.beams\\[0\\] \\('a'\\): from \\(1, 1\\) is not on the boundary \\(it is in free space\\)$" - beams graph ${FIX}/scenes/beam_off_boundary.json)
 cli_test(beams_bad_shape fail "\\$\\.beams\\[0\\]\\.shape: expected \"segment\", \"ray\" or \"line\"" - beams graph ${FIX}/scenes/beam_bad_shape.json)
+# A label no word can name (it holds a space): rejected where it enters, naming it.
+cli_test(beams_label_with_space fail "\\$\\.beams\\[1\\]\\.label: 'a b' cannot be written in an observation word" - beams graph ${FIX}/scenes/beam_label_with_space.json)
 
 # ---------------------------------------------------------------- homotopy classes and winding numbers (sections 5-6)
 cli_test(beams_winding_paper_example 0 "^winding numbers: \\(2, -3\\)$" -

@@ -3,6 +3,7 @@
 // choice of sweeps; the local search against the exact optimum, and its reported cost and
 // lower bound against the walk it returns.
 #include <preimage/decompose/sweep_order.hpp>
+#include <preimage/geometry/random_point.hpp>
 
 #include <gtest/gtest.h>
 
@@ -31,7 +32,8 @@ std::vector<std::vector<Sweep>> random_cells(std::size_t n, std::mt19937_64& rng
   for (auto& c : cells) {
     const double cx = U(rng), cy = U(rng);
     for (int k = S(rng); k-- > 0;) {
-      const geometry::Point a(cx + D(rng), cy + D(rng)), b(cx + D(rng), cy + D(rng));
+      const geometry::Vector centre(cx, cy);
+      const geometry::Point a = geometry::random_point(rng, D) + centre, b = geometry::random_point(rng, D) + centre;
       c.push_back({a, b, euclid(a, b) + 10 + D(rng)});
     }
   }

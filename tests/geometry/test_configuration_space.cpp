@@ -3,6 +3,7 @@
 // environments with holes, rectilinear plans and offices, for several radii.
 #include <gtest/gtest.h>
 #include <preimage/error.hpp>
+#include <preimage/geometry/random_point.hpp>
 #include <preimage/geometry/configuration_space.hpp>
 #include <preimage/geometry/generators.hpp>
 #include <preimage/geometry/queries.hpp>
@@ -70,7 +71,7 @@ TEST(ConfigurationSpace, ComponentsLieInsideTheExactErodedSetAndMissOnlyTheState
     const auto b = c.env.bbox();
     std::uniform_real_distribution<double> X(b.xmin(), b.xmax()), Y(b.ymin(), b.ymax());
     for (int k = 0; k < 400; ++k) {
-      const Point p(X(rng), Y(rng));
+      const Point p = random_point(rng, X, Y);
       const bool in_comp = cs.component_of(p).has_value();
       const bool admitted = brute_admits(c.env, p, p, c.r);
       ASSERT_EQ(cs.admits(p), admitted) << c.name << " at " << format_point(p);
@@ -96,7 +97,7 @@ TEST(ConfigurationSpace, SegmentsAgreeWithBruteForce) {
     std::uniform_real_distribution<double> X(b.xmin(), b.xmax()), Y(b.ymin(), b.ymax());
     std::normal_distribution<double> step(0, 0.1 * (b.xmax() - b.xmin()));
     for (int k = 0; k < 200; ++k) {
-      const Point p(X(rng), Y(rng)), q(p.x() + step(rng), p.y() + step(rng));
+      const Point p = random_point(rng, X, Y), q = p + (random_point(rng, step) - CGAL::ORIGIN);
       const bool want = brute_admits(c.env, p, q, c.r);
       ASSERT_EQ(cs.admits(p, q), want) << c.name << ": " << format_point(p) << " -> " << format_point(q);
       (want ? yes : no)++;

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 #include <preimage/error.hpp>
+#include <preimage/geometry/random_point.hpp>
 #include <preimage/geometry/general_position.hpp>
 #include <preimage/geometry/generators.hpp>
 
@@ -15,7 +16,7 @@ TEST(GeneralPosition, CollinearTripleAgreesWithBruteForce) {
     std::vector<Point> pts;
     const int n = 3 + trial % 6;
     while (static_cast<int>(pts.size()) < n) {
-      Point p(c(rng), c(rng));
+      Point p = random_point(rng, c);
       if (std::find(pts.begin(), pts.end(), p) == pts.end()) pts.push_back(p);
     }
     bool brute = false;

@@ -1,6 +1,7 @@
 // The filtered predicates of kernel.hpp against exact rational evaluation.
 #include <gtest/gtest.h>
 #include <preimage/geometry/kernel.hpp>
+#include <preimage/geometry/random_point.hpp>
 
 #include <random>
 
@@ -31,11 +32,12 @@ TEST(DotSign, AgreesWithExactArithmeticIncludingNearRightAngles) {
     ++signs[want + 1];
   };
   for (int i = 0; i < 20000; ++i) {
-    const Point a(u(rng), u(rng)), c(u(rng), u(rng));
-    check(a, Point(u(rng), u(rng)), c, Point(u(rng), u(rng)));
+    const Point a = random_point(rng, u), c = random_point(rng, u);
+    const Point b = random_point(rng, u), d = random_point(rng, u);
+    check(a, b, c, d);
     // Exactly perpendicular: integer directions and offsets.
     const int x = k(rng), y = k(rng), s = k(rng);
-    const Point ai(k(rng), k(rng)), ci(k(rng), k(rng));
+    const Point ai = random_point(rng, k), ci = random_point(rng, k);
     check(ai, Point(ai.x() + x, ai.y() + y), ci, Point(ci.x() - s * y, ci.y() + s * x));
     // Nearly perpendicular: the same directions from decimal (rounded) base points.
     const double f = 0.1 * (1 + i % 7);

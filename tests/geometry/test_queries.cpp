@@ -1,6 +1,7 @@
 // Point location, ray shooting and two-point visibility against independent definitions.
 #include <gtest/gtest.h>
 #include <preimage/geometry/generators.hpp>
+#include <preimage/geometry/random_point.hpp>
 #include <preimage/geometry/queries.hpp>
 #include <preimage/geometry/visibility.hpp>
 
@@ -19,7 +20,7 @@ TEST(Locate, AgreesWithCgalBoundedSide) {
   std::uniform_int_distribution<int> c(-2, 202);  // integer queries hit vertices and edges often
   int kinds[5] = {0, 0, 0, 0, 0};
   for (int i = 0; i < 20000; ++i) {
-    Point q(c(rng), c(rng));
+    Point q = random_point(rng, c);
     Location loc = locate(env, q);
     ++kinds[static_cast<int>(loc.kind)];
     auto outer = env.ring(0);
@@ -74,7 +75,7 @@ TEST(RayShooting, FirstHitIsNearestCrossingOnTheBoundary) {
   std::mt19937_64 rng(1);
   std::uniform_real_distribution<double> d(-1, 1);
   for (auto& q : qs) {
-    Point t(q.p.x() + d(rng), q.p.y() + d(rng));
+    Point t = q.p + (random_point(rng, d) - CGAL::ORIGIN);
     auto h = shoot_ray(renv, q.p, t);
     ASSERT_TRUE(h);
     const auto a = to_exact(renv.vertex(h->edge)), b = to_exact(renv.vertex(renv.next(h->edge)));

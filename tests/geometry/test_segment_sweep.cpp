@@ -1,6 +1,7 @@
 // The Shamos–Hoey sweep against its O(n^2) definition, on inputs full of degeneracies.
 #include <gtest/gtest.h>
 #include <preimage/geometry/segment_sweep.hpp>
+#include <preimage/geometry/random_point.hpp>
 
 #include <random>
 
@@ -13,8 +14,8 @@ void random_case(std::mt19937_64& rng, int grid, std::size_t m, std::vector<Poin
   std::uniform_int_distribution<int> c(0, grid);
   pts.clear(), segs.clear();
   for (std::size_t i = 0; i < m; ++i) {
-    pts.emplace_back(c(rng), c(rng));
-    pts.emplace_back(c(rng), c(rng));
+    pts.push_back(random_point(rng, c));
+    pts.push_back(random_point(rng, c));
     if (pts[2 * i] == pts[2 * i + 1]) pts[2 * i + 1] = Point(pts[2 * i].x() + 1, pts[2 * i].y());
     segs.push_back({static_cast<std::uint32_t>(2 * i), static_cast<std::uint32_t>(2 * i + 1)});
   }

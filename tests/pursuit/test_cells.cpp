@@ -2,6 +2,7 @@
 // Arrangement_2, every cell conservative (shadows equal at random points inside it), and
 // transitions symmetric.
 #include <preimage/geometry/generators.hpp>
+#include <preimage/geometry/random_point.hpp>
 #include <preimage/geometry/queries.hpp>
 #include <preimage/geometry/visibility.hpp>
 #include <preimage/pursuit/cells.hpp>
@@ -58,7 +59,7 @@ std::vector<Point> points_in(const ConservativeCells& C, std::size_t c, std::siz
   std::uniform_real_distribution<double> X(x0, x1), Y(y0, y1);
   std::vector<Point> out;
   for (int tries = 0; tries < 400 && out.size() < count; ++tries) {
-    const Point p(X(rng), Y(rng));
+    const Point p = geometry::random_point(rng, X, Y);
     if (C.arrangement().strictly_inside(c, geometry::to_exact(p))) out.push_back(p);
   }
   return out;
@@ -176,7 +177,7 @@ TEST(PursuitCells, WalkMatchesBruteForceCrossings) {
     const auto box = env.bbox();
     std::uniform_real_distribution<double> X(box.xmin(), box.xmax()), Y(box.ymin(), box.ymax());
     for (int trial = 0; trial < 40; ++trial) {
-      const Point p(X(rng), Y(rng)), q(X(rng), Y(rng));
+      const Point p = geometry::random_point(rng, X, Y), q = geometry::random_point(rng, X, Y);
       if (!geometry::visible(env, p, q)) continue;
       const auto w = C.walk(p, q);
       if (!w) continue;  // through a vertex of the arrangement, or an end on a boundary

@@ -111,7 +111,9 @@ TEST(PursuitChecker, InformationGraphLabelsMatchTheCheckerAlongRandomWalks) {
   for (std::size_t i = 0; i < envs.size(); ++i) {
     const auto C = ConservativeCells::build(envs[i]);
     for (int trial = 0; trial < 5; ++trial) {
-      const auto w = random_walk(C, static_cast<std::uint32_t>(rng() % C.size()), 4 + rng() % 12, rng);
+      const auto steps = 4 + rng() % 12;  // drawn before the start: the order g++ gave the arguments
+      const auto start = static_cast<std::uint32_t>(rng() % C.size());
+      const auto w = random_walk(C, start, steps, rng);
       const auto r = pursuit::check_paths(envs[i], {w.path});
       // The checker's contaminated regions, as components of the final cell.
       const Point at = w.path.back();

@@ -46,6 +46,19 @@ TEST(Scene, ErrorsNameTheJsonPath) {
   EXPECT_EQ(error_of("{\n  \"name\": \"x\",\n  oops\n}").rfind("t.json:3:3: JSON syntax error", 0), 0u);
 }
 
+// A beam label no observation word can name (white space splits tokens, a trailing prime
+// means the negative crossing) was accepted, and the beam could never be reported.
+TEST(Scene, BeamLabelsThatNoWordCanNameAreRejected) {
+  const std::string why = "cannot be written in an observation word (a label is one or more characters, no white space, not ending in ')";
+  EXPECT_EQ(load_error(fixture("scenes/beam_label_with_space.json")), "$.beams[1].label: 'a b' " + why);
+  EXPECT_EQ(error_of(R"({"beams": [{"label": "", "from": [0,0], "to": [1,1]}]})"), "$.beams[0].label: '' " + why);
+  EXPECT_EQ(error_of(R"({"beams": [{"label": "b'", "from": [0,0], "to": [1,1]}]})"), "$.beams[0].label: 'b'' " + why);
+  EXPECT_EQ(error_of(R"({"imaginary_beams": [{"label": "x\ty", "from": [0,0], "to": [1,1]}]})"),
+            "$.imaginary_beams[0].label: 'x\ty' " + why);
+  // Primes inside a label, and any other character, stay allowed.
+  EXPECT_EQ(error_of(R"({"beams": [{"label": "b'2", "from": [0,0], "to": [1,1]}, {"label": "1/2", "from": [0,0], "to": [1,1]}]})"), "");
+}
+
 TEST(Scene, GeometryErrorsCarryTheJsonPath) {
   EXPECT_EQ(load_error(fixture("scenes/self_intersecting.json")),
             "$.environment.boundary: edges 1 and 3 intersect near (1, 1)");

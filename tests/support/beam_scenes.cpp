@@ -1,6 +1,7 @@
 #include "beam_scenes.hpp"
 
 #include <preimage/beams/homotopy.hpp>
+#include <preimage/geometry/random_point.hpp>
 #include <preimage/error.hpp>
 #include <preimage/geometry/generators.hpp>
 #include <preimage/geometry/queries.hpp>
@@ -25,7 +26,7 @@ scene::Scene random_beam_scene(std::size_t n, std::size_t holes, std::size_t nbe
     std::uniform_real_distribution<double> ux(box.xmin(), box.xmax()), uy(box.ymin(), box.ymax()), ang(0, 6.283185307179586),
         coin(0, 1);
     while (sc.beams.size() < nbeams) {
-      const geometry::Point p(ux(rng), uy(rng));
+      const geometry::Point p = geometry::random_point(rng, ux, uy);
       if (geometry::locate(*sc.environment, p).kind != geometry::Location::Kind::Interior) continue;
       const double a = ang(rng);
       const std::size_t k = sc.beams.size();
@@ -70,7 +71,7 @@ scene::Scene random_sufficient_scene(std::size_t n, std::size_t holes, std::size
       }
     }
     while (!ddd && sc.beams.size() < holes + lines) {
-      const geometry::Point p(ux(rng), uy(rng));
+      const geometry::Point p = geometry::random_point(rng, ux, uy);
       if (geometry::locate(env, p).kind != geometry::Location::Kind::Interior) continue;
       const double a = ang(rng);
       const std::string l = label(sc.beams.size());

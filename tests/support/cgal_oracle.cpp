@@ -1,6 +1,7 @@
 #include "cgal_oracle.hpp"
 
 #include <preimage/error.hpp>
+#include <preimage/geometry/random_point.hpp>
 #include <preimage/geometry/generators.hpp>
 #include <preimage/geometry/queries.hpp>
 
@@ -55,7 +56,7 @@ std::vector<Query> random_queries(const Environment& env, std::size_t interior, 
   std::uniform_int_distribution<std::size_t> V(0, env.num_vertices() - 1);
   std::size_t tries = 0;
   while (out.size() < interior && ++tries < 1000000) {
-    Point p(X(rng), Y(rng));
+    Point p = geometry::random_point(rng, X, Y);
     auto loc = geometry::locate(env, p);
     if (loc.kind == geometry::Location::Kind::Interior) out.push_back({p, loc});
   }

@@ -2,6 +2,7 @@
 #include "support/escape_oracle.hpp"
 
 #include <preimage/geometry/queries.hpp>
+#include <preimage/geometry/random_point.hpp>
 
 #include <cmath>
 #include <limits>
@@ -61,7 +62,7 @@ Point random_free_point(const geometry::Environment& env, std::mt19937_64& rng) 
   const auto box = env.bbox();
   std::uniform_real_distribution<double> X(box.xmin(), box.xmax()), Y(box.ymin(), box.ymax());
   for (;;) {
-    const Point p(X(rng), Y(rng));
+    const Point p = geometry::random_point(rng, X, Y);
     if (geometry::locate(env, p).kind == geometry::Location::Kind::Interior) return p;
   }
 }

@@ -4,6 +4,7 @@
 // and lost targets, the adversary that stalled at corners, and the new look-ahead target,
 // dynamics and evaluation statistics.
 #include <preimage/error.hpp>
+#include <preimage/geometry/random_point.hpp>
 #include <preimage/geometry/queries.hpp>
 #include <preimage/geometry/visibility.hpp>
 #include <preimage/scene/scene.hpp>
@@ -99,7 +100,7 @@ TEST(RiskControl, CommandDoesNotDependOnTheScaleOfTheRisk) {
   std::uniform_real_distribution<double> U(-4, 4);
   ControlParams cp;
   for (int trial = 0; trial < 200; ++trial) {
-    const Point o(U(rng), U(rng)), k(U(rng), U(rng)), w(U(rng), U(rng)), t(U(rng), U(rng));
+    const Point o = geometry::random_point(rng, U), k = geometry::random_point(rng, U), w = geometry::random_point(rng, U), t = geometry::random_point(rng, U);
     RiskParams a, b;
     b.c = a.c * 37;
     const EdgeRisk ra = corner_risk(o, k, w, 1.0, a), rb = corner_risk(o, k, w, 1.0, b);
@@ -120,7 +121,7 @@ TEST(RiskControl, EquationSixMapsTheDesiredMotionToTheUnicycle) {
   cp.reverse = true;
   for (int trial = 0; trial < 500; ++trial) {
     const RiskAverage risk{0.5 + std::abs(U(rng)), Vec2{U(rng), U(rng)}};
-    const Point t(U(rng), U(rng));
+    const Point t = geometry::random_point(rng, U);
     const ControlTerms c = risk_control(risk, t, cp);
     const Vec2 D = c.descent + c.pull;
     EXPECT_NEAR(c.descent.x, -cp.k_v * risk.gradient.x / risk.phi, 1e-12);
@@ -190,8 +191,8 @@ TEST(Detection, BeamsGrazingTheTargetAreTheTargets) {
   std::uniform_real_distribution<double> U(-4.3, 4.3), H(-M_PI, M_PI);
   int runs = 0;
   for (int trial = 0; trial < 300; ++trial) {
-    const Pose o{Point(U(rng), U(rng)), H(rng)};
-    const Point t(U(rng), U(rng));
+    const Pose o{geometry::random_point(rng, U), H(rng)};
+    const Point t = geometry::random_point(rng, U);
     if (dist(o.position, t) < 1.0 || dist(o.position, t) > 6.0) continue;  // (further, a 1-deg laser gets 3 readings)
     LaserSpec laser;
     laser.noise_sigma = 0.01;
@@ -292,7 +293,7 @@ TEST(Adversary, DoesNotStallAtObstacleCorners) {
   std::uniform_real_distribution<double> X(bb.xmin(), bb.xmax()), Y(bb.ymin(), bb.ymax());
   int runs = 0, wrapped = 0;
   while (runs < 60) {
-    const Point o(X(rng), Y(rng)), t(X(rng), Y(rng));
+    const Point o = geometry::random_point(rng, X, Y), t = geometry::random_point(rng, X, Y);
     if (geometry::locate(*s.environment, o).kind != geometry::Location::Kind::Interior ||
         geometry::locate(*s.environment, t).kind != geometry::Location::Kind::Interior || dist(o, t) < 1 ||
         dist(o, t) > 7 || !geometry::visible(*s.environment, o, t))

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <preimage/error.hpp>
+#include <preimage/geometry/random_point.hpp>
 #include <preimage/geometry/generators.hpp>
 #include <preimage/geometry/queries.hpp>
 #include <preimage/geometry/visibility.hpp>
@@ -27,7 +28,7 @@ Point random_inside(const LocalMap& map, std::mt19937_64& rng) {
   }
   std::uniform_real_distribution<double> X(x0, x1), Y(y0, y1);
   for (;;) {
-    Point p(X(rng), Y(rng));
+    Point p = geometry::random_point(rng, X, Y);
     if (map.strictly_contains(p) && p != map.observer) return p;
   }
 }

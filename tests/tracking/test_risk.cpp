@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <preimage/geometry/generators.hpp>
+#include <preimage/geometry/random_point.hpp>
 #include <preimage/geometry/queries.hpp>
 #include <preimage/geometry/visibility.hpp>
 #include <preimage/tracking/risk.hpp>
@@ -29,7 +30,7 @@ TEST(EscapeRisk, ClosedFormGradientMatchesFiniteDifferencesForBothExits) {
   std::uniform_real_distribution<double> U(-5, 5);
   int tested[2] = {0, 0};
   for (int trial = 0; trial < 4000; ++trial) {
-    const Point o(U(rng), U(rng)), k(U(rng), U(rng)), w(U(rng), U(rng));
+    const Point o = geometry::random_point(rng, U), k = geometry::random_point(rng, U), w = geometry::random_point(rng, U);
     RiskParams rp;
     rp.m = trial % 3;
     rp.delta = 0.1 + 0.4 * (trial % 5) / 4.0;
@@ -79,10 +80,10 @@ TEST(EscapeRisk, PipelineGradientMatchesFiniteDifferencesOfRecomputedTrees) {
     const auto box = env.bbox();
     std::uniform_real_distribution<double> X(box.xmin(), box.xmax()), Y(box.ymin(), box.ymax());
     for (int trial = 0; trial < 6; ++trial) {
-      Point o(X(rng), Y(rng));
+      Point o = geometry::random_point(rng, X, Y);
       if (geometry::locate(env, o).kind != geometry::Location::Kind::Interior) continue;
       const LocalMap map = local_map_from_visibility(index.compute(o));
-      Point t(X(rng), Y(rng));
+      Point t = geometry::random_point(rng, X, Y);
       if (!map.strictly_contains(t) || !geometry::visible(env, o, t)) continue;
       RiskParams rp;
       rp.delta = 0.5;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <preimage/error.hpp>
+#include <preimage/geometry/random_point.hpp>
 #include <preimage/geometry/visibility.hpp>
 #include <preimage/scene/scene.hpp>
 #include <preimage/tracking/replay.hpp>
@@ -188,14 +189,16 @@ TEST(TrackingDetection, PriorWindowFindsTheDiscNearestThePriorAnywhereRound) {
     double a0 = trial % 8 == 0 ? M_PI - 0.05 : bearing(rng);  // often by the seam
     if (cone) a0 = std::clamp(a0, -1.4, 1.4);
     const double a1 = cone ? a0 - std::copysign(1.4, a0) : a0 + (trial % 3 == 0 ? 1.4 : -1.4);
-    const Disc d0{Point(range(rng) * std::cos(a0), range(rng) * std::sin(a0)), dp.radius};
-    const Disc d1{Point(range(rng) * std::cos(a1), range(rng) * std::sin(a1)), dp.radius};
+    // Each coordinate its own range draw, y first (geometry::random_point's order).
+    const Point r0 = geometry::random_point(rng, range), r1 = geometry::random_point(rng, range);
+    const Disc d0{Point(r0.x() * std::cos(a0), r0.y() * std::sin(a0)), dp.radius};
+    const Disc d1{Point(r1.x() * std::cos(a1), r1.y() * std::sin(a1)), dp.radius};
     if (std::sqrt(CGAL::to_double(CGAL::squared_distance(d0.center, d1.center))) < 2 * dp.gate + 0.7) continue;
     const Scan s = scan_of_discs({d0, d1}, cone ? 361 : 720, fov, rng);
     for (const Disc& want : {d0, d1}) {
       const double wb = std::atan2(want.center.y(), want.center.x());
       if (cone && std::abs(wb) > M_PI / 2 - 0.15) continue;  // at the cone's edge: half seen
-      const Point prior(want.center.x() + jitter(rng), want.center.y() + jitter(rng));
+      const Point prior = want.center + (geometry::random_point(rng, jitter) - CGAL::ORIGIN);
       const Detection d = detect_target(s, dp, prior);
       ASSERT_TRUE(d.found) << "trial " << trial << " disc at " << want.center;
       EXPECT_LT(std::sqrt(CGAL::to_double(CGAL::squared_distance(d.center, want.center))), 0.03) << "trial " << trial;

@@ -2,6 +2,7 @@
 // plan executed by the simulator and its path checked by the independent contamination
 // checker of module pursuit.
 #include <preimage/error.hpp>
+#include <preimage/geometry/random_point.hpp>
 #include <preimage/geometry/generators.hpp>
 #include <preimage/geometry/queries.hpp>
 #include <preimage/pursuit/checker.hpp>
@@ -63,7 +64,7 @@ Point random_interior(const Environment& env, std::mt19937_64& rng) {
   const auto box = env.bbox();
   std::uniform_real_distribution<double> x(box.xmin(), box.xmax()), y(box.ymin(), box.ymax());
   for (;;) {
-    const Point p(x(rng), y(rng));
+    const Point p = geometry::random_point(rng, x, y);
     if (geometry::locate(env, p).kind == geometry::Location::Kind::Interior) return p;
   }
 }
@@ -347,18 +348,22 @@ std::optional<Environment> two_hooks(std::mt19937_64& rng) {
     std::vector<geometry::Point> outer, inner;
     for (std::size_t s = 0; s <= k; ++s) {
       const double f = static_cast<double>(s) / static_cast<double>(k), a = start + dir * turn * f, r = r0 * (1 - shrink * f);
-      outer.emplace_back(cx + r * std::cos(a) + 1e-3 * u(rng), cy + r * std::sin(a) + 1e-3 * u(rng));
-      inner.emplace_back(cx + (r - w) * std::cos(a) + 1e-3 * u(rng), cy + (r - w) * std::sin(a) + 1e-3 * u(rng));
+      const Point jo = geometry::random_point(rng, u), ji = geometry::random_point(rng, u);  // jitter
+      outer.emplace_back(cx + r * std::cos(a) + 1e-3 * jo.x(), cy + r * std::sin(a) + 1e-3 * jo.y());
+      inner.emplace_back(cx + (r - w) * std::cos(a) + 1e-3 * ji.x(), cy + (r - w) * std::sin(a) + 1e-3 * ji.y());
     }
     // Out along one side and back along the other, free space on the left.
     if (dir < 0) std::swap(outer, inner);
     for (auto& p : inner) ring.push_back(p);
     for (auto it = outer.rbegin(); it != outer.rend(); ++it) ring.push_back(*it);
   };
-  hook(25 + 10 * u(rng), 0, u(rng) < 0.5 ? 1 : -1, true);
+  // Draws in sequenced statements (the direction first: the order g++ gave the arguments).
+  const double dir_floor = u(rng) < 0.5 ? 1 : -1, x_floor = 25 + 10 * u(rng);
+  hook(x_floor, 0, dir_floor, true);
   ring.emplace_back(100, 0);
   ring.emplace_back(100, 100);
-  hook(65 + 10 * u(rng), 100, u(rng) < 0.5 ? 1 : -1, false);
+  const double dir_ceiling = u(rng) < 0.5 ? 1 : -1, x_ceiling = 65 + 10 * u(rng);
+  hook(x_ceiling, 100, dir_ceiling, false);
   ring.emplace_back(0, 100);
   try {
     auto env = Environment::make(ring, {});

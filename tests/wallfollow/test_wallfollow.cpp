@@ -2,6 +2,7 @@
 // ground truth, the cut ordering against the paper's Fig. 3, Proposition 4 against exact
 // segment intersection, the reflex-chain rule, and Strategy 1 against the true ordering.
 #include <preimage/error.hpp>
+#include <preimage/geometry/random_point.hpp>
 #include <preimage/filter/history.hpp>
 #include <preimage/geometry/generators.hpp>
 #include <preimage/geometry/queries.hpp>
@@ -318,7 +319,8 @@ TEST(CutOrderingStrategy, ManySmallPolygonsFromInteriorStarts) {
     // A random interior start and heading: INIT decides where v_1 ends up.
     std::optional<Point> start;
     for (int tries = 0; tries < 200 && !start; ++tries) {
-      const Point p(std::uniform_real_distribution<double>(0, 100)(rng), std::uniform_real_distribution<double>(0, 100)(rng));
+      std::uniform_real_distribution<double> coord(0, 100);
+      const Point p = geometry::random_point(rng, coord);
       if (geometry::locate(env, p).kind == geometry::Location::Kind::Interior) start = p;
     }
     ASSERT_TRUE(start);
