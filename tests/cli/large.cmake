@@ -28,3 +28,8 @@ foreach(shape circle star collinear office)
   large_test(${shape}_plan 0 "path from .* \\(every segment certified\\)" plan ${f})
   large_test(${shape}_plan_trapezoidal 0 "through [0-9]+ of [0-9]+ cells \\(every segment certified\\)" plan ${f} --method trapezoidal)
 endforeach()
+
+# The wall-following robot on 3,000 vertices (issue 26): seconds, dominated by the
+# n^2 log n general-position check (docs/wallfollow.md).
+large_test(random_3k_wallfollow_count 0 "^vertex count 3000 \\(k8, Prop. 2\\)" wallfollow count ${LARGE}/random_3k.json)
+large_test(random_3k_cut_ordering 0 "^3000 vertices, [0-9]+ reflex. cut ordering \\(v1, " wallfollow cut-ordering ${LARGE}/random_3k.json)

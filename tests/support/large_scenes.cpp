@@ -56,6 +56,14 @@ std::vector<LargeScene> large_scenes() {
   out.push_back({"collinear_100k", make(Environment::make(std::move(square), {}), Point(1.5, 1.25), Point(90.5, 1.25),
                                         "square with 25,000 collinear vertices per side and a tooth: 100,002 vertices")});
 
+  // Random simple polygon of 3,000 vertices in general position, for the wall-following
+  // commands (issue 26: count and cut-ordering took more than 10 s), started at vertex 0.
+  {
+    Environment env = geometry::generators::random_environment(3000, 0, 26);
+    const Point v0 = env.vertex(0), v1 = env.vertex(1);
+    out.push_back({"random_3k", make(std::move(env), v0, v1, "random simple polygon of 3,000 vertices")});
+  }
+
   // Office floor plan: 65 x 65 rooms of side 4, 16,640 walls with doors.
   out.push_back({"office_100k", make(geometry::generators::office(65, 65), Point(2.1, 2.3), Point(257.9, 257.7),
                                      "office of 65 x 65 rooms")});
