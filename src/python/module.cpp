@@ -55,15 +55,17 @@ Point to_point(const py::handle& obj, const std::string& what) {
   return pts.at(0);
 }
 
+// A ring as Shapely gives it (closed: last point = first) or open.
+geometry::Ring to_ring(const py::handle& obj, const std::string& what) {
+  std::vector<Point> r = to_points(obj, what);
+  if (r.size() > 3 && r.front() == r.back()) r.pop_back();
+  return r;
+}
+
 geometry::Environment make_environment(const py::handle& boundary, const std::vector<py::handle>& holes) {
-  std::vector<Point> outer = to_points(boundary, "boundary");
-  if (outer.size() > 3 && outer.front() == outer.back()) outer.pop_back();  // closed, as Shapely gives rings
+  geometry::Ring outer = to_ring(boundary, "boundary");
   std::vector<geometry::Ring> hs;
-  for (std::size_t i = 0; i < holes.size(); ++i) {
-    auto h = to_points(holes[i], "holes[" + std::to_string(i) + "]");
-    if (h.size() > 3 && h.front() == h.back()) h.pop_back();
-    hs.push_back(std::move(h));
-  }
+  for (std::size_t i = 0; i < holes.size(); ++i) hs.push_back(to_ring(holes[i], "holes[" + std::to_string(i) + "]"));
   return geometry::Environment::make(std::move(outer), std::move(hs), "boundary", "holes");
 }
 
