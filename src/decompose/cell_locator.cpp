@@ -12,7 +12,7 @@ namespace {
 constexpr std::uint32_t kNil = UINT32_MAX;
 }
 
-CellLocator::CellLocator(const TrapezoidalDecomposition& d) : d_(&d) {
+CellLocator::CellLocator(const TrapezoidalDecomposition& d) {
   const auto& cells = d.cells();
   const auto& env = d.environment();
   auto ends = [&](std::uint32_t e) {

@@ -1,7 +1,7 @@
 // Classes that keep a pointer or reference to an input must not accept a temporary: a
 // temporary would be destroyed at the end of the statement and leave them dangling
 // (issue 25, defect 6). Their rvalue constructors are deleted; this file fails to compile
-// if one comes back.
+// if one comes back. (CellLocator copies what it needs and accepts temporaries.)
 #include <gtest/gtest.h>
 #include <preimage/beams/alphabet.hpp>
 #include <preimage/beams/homotopy.hpp>
@@ -23,6 +23,8 @@
 #include <preimage/wallfollow/robot.hpp>
 
 #include <istream>
+#include <memory>
+#include <optional>
 #include <type_traits>
 
 using namespace preimage;
@@ -43,7 +45,6 @@ static_assert(lvalue_only<geometry::ConfigurationSpace, Environment, double>);
 static_assert(lvalue_only<decompose::TrapezoidalDecomposition, Environment>);
 static_assert(lvalue_only<decompose::BoustrophedonDecomposition, Environment>);
 static_assert(lvalue_only<decompose::BoustrophedonDecomposition, Environment, double>);
-static_assert(lvalue_only<decompose::CellLocator, decompose::TrapezoidalDecomposition>);
 static_assert(lvalue_only<decompose::TrapezoidalPlanner, decompose::TrapezoidalDecomposition>);
 static_assert(lvalue_only<filter::SubsetFilter, TransitionSystem>);
 static_assert(lvalue_only<filter::SubsetAutomaton, TransitionSystem>);
@@ -82,4 +83,21 @@ TEST(Lifetimes, ImportersTakingAPathSayTheFileCannotBeOpened) {
   ASSERT_TRUE(s.environment);
   EXPECT_EQ(s.environment->num_vertices(), 8u);
   EXPECT_EQ(s.environment->num_holes(), 1u);
+}
+
+// CellLocator copies the bounds it searches, so it may outlive its decomposition (and be
+// built from a temporary): the same answers after the decomposition is destroyed.
+TEST(Lifetimes, CellLocatorOutlivesItsDecomposition) {
+  const Environment env = Environment::make({{0, 0}, {10, 0}, {10, 6}, {0, 6}}, {{{3, 2}, {5, 2}, {5, 4}, {3, 4}}});
+  auto d = std::make_unique<decompose::TrapezoidalDecomposition>(env);
+  const decompose::CellLocator kept(*d);
+  std::vector<std::optional<std::uint32_t>> before;
+  const std::vector<geometry::Point> qs = {{1, 1}, {4, 1}, {4, 5}, {8, 3}, {4, 3}, {11, 3}};
+  for (const auto& q : qs) before.push_back(kept.locate(q));
+  d.reset();
+  for (std::size_t i = 0; i < qs.size(); ++i) EXPECT_EQ(kept.locate(qs[i]), before[i]) << i;
+  EXPECT_FALSE(before[4]);  // inside the hole
+  EXPECT_TRUE(before[0] && before[1] && before[2] && before[3]);
+  const decompose::CellLocator from_temporary(decompose::TrapezoidalDecomposition{env});
+  EXPECT_EQ(from_temporary.locate(qs[1]), before[1]);
 }

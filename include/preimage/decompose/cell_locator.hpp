@@ -12,8 +12,8 @@ namespace preimage::decompose {
 
 class CellLocator {
  public:
+  /// Copies what it needs from d: the locator may outlive the decomposition.
   explicit CellLocator(const TrapezoidalDecomposition& d);
-  CellLocator(TrapezoidalDecomposition&&) = delete;  // keeps a pointer to the decomposition
   /// The cell whose closure contains q, or none when q is not in closed free space.
   /// A point on an extension belongs to two cells; either may be returned.
   std::optional<std::uint32_t> locate(const Point& q) const;
@@ -27,7 +27,6 @@ class CellLocator {
   bool cell_below(std::uint32_t a, std::uint32_t b) const;  // a's floor below b's floor in a shared slab
   std::optional<std::uint32_t> search(std::uint32_t root, const Point& q) const;
 
-  const TrapezoidalDecomposition* d_;
   // Floor and ceiling of each cell, left end first: the search reads only this array.
   struct Bounds { Point floor_l, floor_r, ceil_l, ceil_r; };
   std::vector<Bounds> bounds_;
