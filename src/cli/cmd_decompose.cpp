@@ -68,8 +68,13 @@ void run_boustrophedon(const scene::Scene& s, double angle, bool as_json, const 
   std::cout << "boustrophedon decomposition at " << geometry::format_number(angle) << " degrees: " << b.cells().size()
             << " cells (" << b.trapezoids().cells().size() << " trapezoids), " << slices.size()
             << " critical points; Reeb graph " << slices.size() << " nodes, " << b.cells().size() << " edges; "
-            << "N_cells = N_critical + N_obstacles - 1: " << b.cells().size() << " = " << slices.size() << " + "
-            << s.require_environment().num_holes() << " - 1\n";
+            << "N_cells = N_critical + N_obstacles - 1";
+  // With holes touching at vertices, each merge (k rings at a point: k - 1) is one loop less.
+  const auto& env = s.require_environment();
+  if (env.has_contacts()) std::cout << " - N_merges";
+  std::cout << ": " << b.cells().size() << " = " << slices.size() << " + " << env.num_holes() << " - 1";
+  if (env.has_contacts()) std::cout << " - " << env.contact_merges();
+  std::cout << "\n";
   if (!svg.empty()) std::cout << "wrote " << svg << "\n";
   if (!geojson.empty()) std::cout << "wrote " << geojson << "\n";
 }

@@ -40,10 +40,12 @@ void run_validate(const std::string& path, bool as_json) {
                           {"free_area", env.area()},
                           {"reflex_vertices", [&] { std::size_t r = 0; for (std::size_t v = 0; v < env.num_vertices(); ++v) r += env.is_reflex(v); return r; }()},
                           {"straight_vertices", straight.size()},
+                          {"contacts", env.num_contacts()},
                           {"general_position", {{"three_collinear_vertices", search_triples ? json(collinear.has_value()) : json(nullptr)},
                                                 {"equal_x_coordinates", equal_x.has_value()}}}};
     text += ": " + std::to_string(env.num_vertices()) + " vertices (" + std::to_string(env.ring_size(0)) +
             " on the boundary), " + count_of(env.num_holes(), "obstacle") + ", free area " + geometry::format_number(env.area());
+    if (env.has_contacts()) text += ", " + count_of(env.num_contacts(), "contact") + " (rings touching at a vertex)";
     // Every degeneracy the JSON reports is named in the text too.
     std::vector<std::string> degenerate;
     if (collinear)

@@ -6,6 +6,7 @@
 #include <preimage/geometry/queries.hpp>
 #include <preimage/geometry/visibility_graph.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -14,7 +15,40 @@
 
 namespace preimage::decompose {
 
-TrapezoidalPlanner::TrapezoidalPlanner(const TrapezoidalDecomposition& d) : d_(&d), locator_(d) {}
+TrapezoidalPlanner::TrapezoidalPlanner(const TrapezoidalDecomposition& d) : d_(&d), locator_(d) {
+  const Environment& E = d.environment();
+  contact_off_.assign(1, 0);
+  if (!E.has_contacts()) return;
+  // A cell holds a contact point in its closure iff its floor or ceiling edge ends there at
+  // one of the cell's sides (cells are bounded by vertical lines through vertices).
+  std::vector<std::uint32_t> contact_of(E.num_vertices(), UINT32_MAX);
+  for (std::size_t v = 0; v < E.num_vertices(); ++v) {
+    if (!E.is_contact(v) || contact_of[v] != UINT32_MAX) continue;
+    for (std::size_t w = v;;) {
+      contact_of[w] = static_cast<std::uint32_t>(contacts_.size());
+      w = E.same_point_next(w);
+      if (w == v) break;
+    }
+    contacts_.push_back(E.vertex(v));
+  }
+  std::vector<std::vector<std::uint32_t>> cells_at(contacts_.size());
+  cell_contacts_.resize(d.cells().size());
+  for (std::uint32_t c = 0; c < d.cells().size(); ++c) {
+    const auto& t = d.cells()[c];
+    for (std::uint32_t e : {t.floor, t.ceiling})
+      for (std::size_t w : {std::size_t(e), E.next(e)}) {
+        const std::uint32_t k = contact_of[w];
+        if (k == UINT32_MAX || (E.vertex(w).x() != t.x_left && E.vertex(w).x() != t.x_right)) continue;
+        if (std::find(cell_contacts_[c].begin(), cell_contacts_[c].end(), k) != cell_contacts_[c].end()) continue;
+        cell_contacts_[c].push_back(k);
+        cells_at[k].push_back(c);
+      }
+  }
+  for (const auto& cs : cells_at) {
+    contact_cells_.insert(contact_cells_.end(), cs.begin(), cs.end());
+    contact_off_.push_back(static_cast<std::uint32_t>(contact_cells_.size()));
+  }
+}
 
 Point TrapezoidalPlanner::extension_midpoint(std::size_t x) const {
   auto [a, b] = d_->segment(x);
@@ -41,17 +75,21 @@ Plan TrapezoidalPlanner::plan(const Point& start, const Point& goal, bool shorte
   const std::uint32_t cs = locate_or_throw(start, "start"), cg = locate_or_throw(goal, "goal");
   Plan out;
 
-  // Dijkstra over cells, entering each through an extension; cost = distance between the
-  // entry points (midpoints), which is what the unshortened path will travel.
+  // Dijkstra over cells, entering each through an extension (or a contact point); cost =
+  // distance between the entry points (portals), which the unshortened path will travel.
   const std::size_t m = d_->cells().size();
   std::vector<double> dist(m, std::numeric_limits<double>::infinity());
-  std::vector<std::uint32_t> via(m, UINT32_MAX);  // extension used to enter the cell
-  std::vector<Point> entry(m, start);
+  std::vector<std::uint32_t> from(m, UINT32_MAX);  // cell the cell was entered from
+  std::vector<Point> entry(m, start);              // its portal
   using Item = std::pair<double, std::uint32_t>;
   std::priority_queue<Item, std::vector<Item>, std::greater<>> pq;
   dist[cs] = 0;
   pq.push({0, cs});
   auto gap = [](const Point& a, const Point& b) { return std::sqrt(CGAL::to_double(CGAL::squared_distance(a, b))); };
+  auto relax = [&](std::uint32_t c, std::uint32_t o, const Point& portal) {
+    const double nd = dist[c] + gap(entry[c], portal);
+    if (nd < dist[o]) dist[o] = nd, from[o] = c, entry[o] = portal, pq.push({nd, o});
+  };
   while (!pq.empty()) {
     auto [dcur, c] = pq.top();
     pq.pop();
@@ -59,30 +97,24 @@ Plan TrapezoidalPlanner::plan(const Point& start, const Point& goal, bool shorte
     if (c == cg) break;
     for (auto x : d_->extensions_of(c)) {
       const auto& ext = d_->extensions()[x];
-      const std::uint32_t o = ext.left_cell == c ? ext.right_cell : ext.left_cell;
-      const Point mid = extension_midpoint(x);
-      const double nd = dcur + gap(entry[c], mid);
-      if (nd < dist[o]) dist[o] = nd, via[o] = x, entry[o] = mid, pq.push({nd, o});
+      relax(c, ext.left_cell == c ? ext.right_cell : ext.left_cell, extension_midpoint(x));
     }
+    if (!cell_contacts_.empty())
+      for (std::uint32_t k : cell_contacts_[c])
+        for (std::uint32_t i = contact_off_[k]; i < contact_off_[k + 1]; ++i)
+          if (contact_cells_[i] != c) relax(c, contact_cells_[i], contacts_[k]);
   }
   if (!std::isfinite(dist[cg])) return out;
 
-  // Cells and extensions back from the goal; the path as in the text: start, then per
-  // cell crossed its extension midpoint and the next cell's centroid, then the goal.
-  std::vector<std::uint32_t> exts;
-  for (std::uint32_t c = cg; c != cs;) {
-    out.cells.push_back(c);
-    const auto& ext = d_->extensions()[via[c]];
-    exts.push_back(via[c]);
-    c = ext.left_cell == c ? ext.right_cell : ext.left_cell;
-  }
+  // Cells back from the goal; the path as in the text: start, then per cell crossed its
+  // portal (extension midpoint or contact point) and the next cell's centroid, then the goal.
+  for (std::uint32_t c = cg; c != cs; c = from[c]) out.cells.push_back(c);
   out.cells.push_back(cs);
   std::reverse(out.cells.begin(), out.cells.end());
-  std::reverse(exts.begin(), exts.end());
   out.path.push_back(start);
-  for (std::size_t k = 0; k < exts.size(); ++k) {
-    out.path.push_back(extension_midpoint(exts[k]));
-    if (out.cells[k + 1] != cg) out.path.push_back(centroid(out.cells[k + 1]));
+  for (std::size_t k = 1; k < out.cells.size(); ++k) {
+    out.path.push_back(entry[out.cells[k]]);
+    if (out.cells[k] != cg) out.path.push_back(centroid(out.cells[k]));
   }
   out.path.push_back(goal);
   if (shorten && out.path.size() > 2) {

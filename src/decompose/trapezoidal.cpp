@@ -67,6 +67,7 @@ TrapezoidalDecomposition::TrapezoidalDecomposition(const Environment& env) : env
   std::vector<std::uint32_t> rank_of_vertex(n, kNoneId), rank_of_crossing(n, kNoneId);
   std::vector<std::uint32_t> L, R, vertex_prefix;
   std::vector<std::uint32_t> left_closed, right_opened;  // cell per gap, or kNoneId
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> aliases;  // (vertex, the contact's entry)
 
   for (std::size_t g = 0; g < order.size();) {
     std::size_t g_end = g;
@@ -82,18 +83,25 @@ TrapezoidalDecomposition::TrapezoidalDecomposition(const Environment& env) : env
     const std::uint32_t B = it_B == status.end() ? kNoneId : *it_B;
     const std::uint32_t T = it_T == status.end() ? kNoneId : *it_T;
 
-    // Q: [B] + vertices at c merged with the edges crossing x = c strictly + [T].
+    // Q: [B] + vertices at c merged with the edges crossing x = c strictly + [T]. The
+    // vertices of a contact (rings touching at one point) are one entry: every edge ending
+    // or starting there must get the same rank.
     Q.clear();
+    aliases.clear();
+    auto push_vertex = [&](std::uint32_t v) {
+      if (!Q.empty() && Q.back().is_vertex && P[Q.back().id] == P[v]) aliases.emplace_back(v, Q.back().id);
+      else Q.push_back({true, v});
+    };
     if (B != kNoneId) Q.push_back({false, B});
     {
       std::size_t vi = g;
       for (auto it = it_lo; it != it_hi; ++it) {
         const std::uint32_t e = *it;
         if (P[hi[e]].x() == c) continue;  // ends here: represented by its end vertex
-        while (vi < g_end && orientation(P[lo[e]], P[hi[e]], P[order[vi]]) < 0) Q.push_back({true, order[vi++]});
+        while (vi < g_end && orientation(P[lo[e]], P[hi[e]], P[order[vi]]) < 0) push_vertex(order[vi++]);
         Q.push_back({false, e});
       }
-      while (vi < g_end) Q.push_back({true, order[vi++]});
+      while (vi < g_end) push_vertex(order[vi++]);
     }
     if (T != kNoneId) Q.push_back({false, T});
     vertex_prefix.assign(Q.size() + 1, 0);
@@ -101,6 +109,7 @@ TrapezoidalDecomposition::TrapezoidalDecomposition(const Environment& env) : env
       (Q[k].is_vertex ? rank_of_vertex : rank_of_crossing)[Q[k].id] = static_cast<std::uint32_t>(k);
       vertex_prefix[k + 1] = vertex_prefix[k] + (Q[k].is_vertex ? 1 : 0);
     }
+    for (auto [v, head] : aliases) rank_of_vertex[v] = rank_of_vertex[head];
     auto has_vertex = [&](std::uint32_t r0, std::uint32_t r1) { return vertex_prefix[r1 + 1] > vertex_prefix[r0]; };
     // Rank on the line of an edge of the left (ending) or right (starting) side.
     auto left_rank = [&](std::uint32_t e) { return P[hi[e]].x() == c ? rank_of_vertex[hi[e]] : rank_of_crossing[e]; };
@@ -161,7 +170,8 @@ TrapezoidalDecomposition::TrapezoidalDecomposition(const Environment& env) : env
     for (std::size_t k = 0; k + 1 < Q.size(); ++k) {
       const Entry &a = Q[k], &b = Q[k + 1];
       if (!a.is_vertex && !b.is_vertex) continue;
-      if (a.is_vertex && b.is_vertex && (env.next(a.id) == b.id || env.next(b.id) == a.id)) continue;  // a wall
+      if (a.is_vertex && b.is_vertex && (env.edge_between(a.id, b.id) != SIZE_MAX || env.edge_between(b.id, a.id) != SIZE_MAX))
+        continue;  // a wall
       while (li + 1 < L.size() && left_rank(L[li + 1]) <= k) ++li;
       while (ri + 1 < R.size() && right_rank(R[ri + 1]) <= k) ++ri;
       if (li + 1 >= L.size() || ri + 1 >= R.size()) continue;
@@ -171,6 +181,7 @@ TrapezoidalDecomposition::TrapezoidalDecomposition(const Environment& env) : env
       extensions_.push_back({lc, rc, c, a.is_vertex, b.is_vertex, a.id, b.id});
     }
     for (auto& q : Q) (q.is_vertex ? rank_of_vertex : rank_of_crossing)[q.id] = kNoneId;
+    for (auto [v, head] : aliases) rank_of_vertex[v] = kNoneId;
     g = g_end;
   }
   for (std::uint32_t e = 0; e < n; ++e)

@@ -10,6 +10,8 @@
 //      outside and inside, counted from the far triangle.
 // A monotone partition with triangulated pieces, flipped to Delaunay afterwards, needed
 // quadratically many flips on long collinear runs (a minute for 10^5 vertices).
+// At a contact (rings touching at a point) the point is inserted once, under the smallest
+// vertex id there; the caller (Triangulation) relabels each corner with its wedge.
 #include "constrained_delaunay.hpp"
 
 #include <algorithm>
@@ -48,18 +50,26 @@ std::uint64_t hilbert(std::uint32_t x, std::uint32_t y) {
 
 class Builder {
  public:
-  explicit Builder(const Environment& env) : env_(env), n_(static_cast<std::uint32_t>(env.num_vertices())) {}
+  explicit Builder(const Environment& env) : env_(env), n_(static_cast<std::uint32_t>(env.num_vertices())) {
+    rep_.resize(n_);
+    for (std::uint32_t v = 0; v < n_; ++v) {
+      rep_[v] = v;
+      for (std::size_t w = env.same_point_next(v); w != v; w = env.same_point_next(w))
+        rep_[v] = std::min(rep_[v], static_cast<std::uint32_t>(w));
+    }
+  }
 
   std::vector<std::array<std::uint32_t, 3>> run() {
     make_far_triangle();
     for (std::uint32_t v : insertion_order()) insert(v);
-    for (std::uint32_t e = 0; e < n_; ++e) force_edge(e, static_cast<std::uint32_t>(env_.next(e)));
+    for (std::uint32_t e = 0; e < n_; ++e) force_edge(rep_[e], rep_[env_.next(e)]);
     return free_space_triangles();
   }
 
  private:
   const Environment& env_;
   const std::uint32_t n_;    // environment vertices are 0..n-1, the far triangle's n..n+2
+  std::vector<std::uint32_t> rep_;  // smallest vertex id at each vertex's point (contacts)
   std::vector<Point> p_;
   std::vector<Tri> t_;
   std::vector<std::uint32_t> vt_;  // a live triangle at each vertex
@@ -110,6 +120,7 @@ class Builder {
   std::vector<std::uint32_t> insertion_order() const {
     std::vector<std::uint32_t> order(n_);
     std::iota(order.begin(), order.end(), 0u);
+    if (env_.has_contacts()) std::erase_if(order, [&](std::uint32_t v) { return rep_[v] != v; });
     std::mt19937_64 rng(0x5eed);
     for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[rng() % i]);
     const CGAL::Bbox_2 b = env_.bbox();
@@ -307,7 +318,9 @@ class Builder {
 
   // ---------------------------------------------------------------- 3. free space
   bool environment_edge(std::uint32_t x, std::uint32_t y) const {
-    return x < n_ && y < n_ && (env_.next(x) == y || env_.next(y) == x);
+    if (x >= n_ || y >= n_) return false;
+    if (!env_.has_contacts()) return env_.next(x) == y || env_.next(y) == x;
+    return env_.edge_between(x, y) != SIZE_MAX || env_.edge_between(y, x) != SIZE_MAX;
   }
 
   std::vector<std::array<std::uint32_t, 3>> free_space_triangles() {

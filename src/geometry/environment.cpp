@@ -136,33 +136,44 @@ Environment Environment::make(Ring outer, std::vector<Ring> holes, const std::st
     }
     begin.push_back(pts.size());
   }
-  auto where = [&](std::size_t v) { return names[ring_of[v]] + " vertex " + std::to_string(local[v]); };
 
-  // Repeated vertices (within a ring, or two rings touching at a vertex).
+  // Repeated vertices: within a ring an error; in different rings a contact (the rings
+  // touch there). rep[v] is the smallest vertex at v's point, so edges of different rings
+  // meeting at a contact share an endpoint index in the sweep below and may meet there.
+  std::vector<std::uint32_t> rep(pts.size());
+  std::iota(rep.begin(), rep.end(), 0u);
+  std::vector<std::vector<std::uint32_t>> touching(rings.size());  // rings sharing a contact with r
   {
     std::vector<std::size_t> ord(pts.size());
     std::iota(ord.begin(), ord.end(), 0);
     std::sort(ord.begin(), ord.end(), [&](auto a, auto b) {
       return lex_less_xy(pts[a], pts[b]) || (pts[a] == pts[b] && a < b);
     });
-    for (std::size_t k = 0; k + 1 < ord.size(); ++k) {
-      auto a = ord[k], b = ord[k + 1];
-      if (pts[a] != pts[b]) continue;
-      if (ring_of[a] == ring_of[b])
-        throw InputError(names[ring_of[a]] + ": vertices " + std::to_string(local[a]) + " and " +
-                         std::to_string(local[b]) + " are repeated at " + format_point(pts[a]));
-      throw InputError(where(b) + " touches " + where(a) + " at " + format_point(pts[a]));
+    for (std::size_t k = 0; k < ord.size();) {
+      std::size_t m = k + 1;
+      while (m < ord.size() && pts[ord[m]] == pts[ord[k]]) ++m;
+      for (std::size_t i = k; i < m; ++i)
+        for (std::size_t j = k; j < i; ++j) {
+          const auto a = ord[j], b = ord[i];
+          if (ring_of[a] == ring_of[b])
+            throw InputError(names[ring_of[a]] + ": vertices " + std::to_string(local[a]) + " and " +
+                             std::to_string(local[b]) + " are repeated at " + format_point(pts[a]));
+          touching[ring_of[a]].push_back(ring_of[b]);
+          touching[ring_of[b]].push_back(ring_of[a]);
+        }
+      for (std::size_t i = k; i < m; ++i) rep[ord[i]] = static_cast<std::uint32_t>(ord[k]);
+      k = m;
     }
   }
 
-  // Edges of all rings: no two may meet except consecutive edges at their shared vertex.
+  // Edges of all rings: no two may meet except consecutive edges at their shared vertex and
+  // edges of different rings at a contact (collinear overlap there is still a contact).
   {
     std::vector<IndexedSegment> segs;
     segs.reserve(pts.size());
     for (std::size_t r = 0; r + 1 < begin.size(); ++r)
       for (std::size_t v = begin[r]; v < begin[r + 1]; ++v)
-        segs.push_back({static_cast<std::uint32_t>(v),
-                        static_cast<std::uint32_t>(v + 1 == begin[r + 1] ? begin[r] : v + 1)});
+        segs.push_back({rep[v], rep[v + 1 == begin[r + 1] ? begin[r] : v + 1]});
     if (auto c = find_segment_contact(pts, segs)) {
       auto e = c->first, f = c->second;  // segment index == start vertex index
       std::string near = " near " + format_point(c->near);
@@ -170,21 +181,26 @@ Environment Environment::make(Ring outer, std::vector<Ring> holes, const std::st
         throw InputError(names[ring_of[e]] + ": edges " + std::to_string(local[e]) + " and " +
                          std::to_string(local[f]) + " intersect" + near);
       throw InputError(names[ring_of[f]] + " edge " + std::to_string(local[f]) + " touches " +
-                       names[ring_of[e]] + " edge " + std::to_string(local[e]) + near);
+                       names[ring_of[e]] + " edge " + std::to_string(local[e]) + near +
+                       " (rings may touch only at a vertex of both)");
     }
   }
 
-  // Holes inside the outer boundary and not inside one another (boundaries are disjoint
-  // now, so one vertex decides for a whole ring).
+  // Holes inside the outer boundary and not inside one another (boundaries do not cross
+  // now, so one vertex decides for a whole ring). The parity is meaningless for a ring the
+  // vertex lies on (a contact): for two rings that touch, the order of their edges around
+  // the contact decides instead (check_contacts, below).
   if (!holes.empty()) {
     const RingIndex index(pts, begin, ring_of);
     for (std::size_t h = 0; h < holes.size(); ++h) {
+      const auto& near = touching[h + 1];
+      auto touches = [&](std::uint32_t g) { return std::find(near.begin(), near.end(), g) != near.end(); };
       const std::vector<std::uint32_t> around = index.around(static_cast<std::uint32_t>(begin[h + 1]));
-      if (std::find(around.begin(), around.end(), 0u) == around.end())
+      if (!touches(0) && std::find(around.begin(), around.end(), 0u) == around.end())
         throw InputError(names[h + 1] + ": lies outside " + outer_name);
       std::uint32_t inside = 0;  // the first hole holding it, as the message names one
       for (std::uint32_t g : around)
-        if (g != 0 && (inside == 0 || g < inside)) inside = g;
+        if (g != 0 && !touches(g) && (inside == 0 || g < inside)) inside = g;
       if (inside != 0) throw InputError(names[h + 1] + ": lies inside " + names[inside]);
     }
   }
@@ -205,12 +221,96 @@ Environment Environment::make(Ring outer, std::vector<Ring> holes, const std::st
       env.ring_of_.push_back(static_cast<std::uint32_t>(r));
     }
   }
+  env.link_contacts(names, rep);
   env.exact_pts_.reserve(env.pts_.size());
   for (const Point& p : env.pts_) env.exact_pts_.push_back(to_exact(p));
   env.exact_lines_.reserve(env.pts_.size());
   for (std::size_t e = 0; e < env.pts_.size(); ++e)
     env.exact_lines_.emplace_back(env.exact_pts_[e], env.exact_pts_[env.next(e)]);
   return env;
+}
+
+// Around each contact: sort the rings' edge directions counter-clockwise and check that
+// every ring's material sector (from its in-edge to its out-edge, counter-clockwise) holds
+// no other direction; then the free wedges are the gaps out(v) -> in(u) between sectors.
+// Directions are compared exactly (half-plane, then orientation), never as angles.
+void Environment::link_contacts(const std::vector<std::string>& names, const std::vector<std::uint32_t>& input_rep) {
+  const std::size_t n = pts_.size();
+  same_next_.resize(n), wedge_end_.resize(n), wedge_start_.resize(n);
+  std::iota(same_next_.begin(), same_next_.end(), 0u);
+  std::iota(wedge_end_.begin(), wedge_end_.end(), 0u);
+  std::iota(wedge_start_.begin(), wedge_start_.end(), 0u);
+  // Group stored vertices by the input representative of their point.
+  std::vector<std::uint32_t> input_id(n);  // stored vertex -> flat input index
+  for (std::size_t v = 0; v < n; ++v) input_id[v] = static_cast<std::uint32_t>(ring_begin_[ring_of_[v]] + input_index_[v]);
+  std::vector<std::uint32_t> by_rep(n, UINT32_MAX);  // input rep -> first stored vertex
+  std::vector<std::uint32_t> stored_of_input(n);
+  for (std::size_t v = 0; v < n; ++v) stored_of_input[input_id[v]] = static_cast<std::uint32_t>(v);
+  for (std::size_t v = 0; v < n; ++v) {
+    const std::uint32_t r = input_rep[input_id[v]];
+    if (r == input_id[v]) continue;
+    // v joins the cycle of its representative's stored vertex.
+    const std::uint32_t head = stored_of_input[r];
+    same_next_[v] = same_next_[head];
+    same_next_[head] = static_cast<std::uint32_t>(v);
+    by_rep[r] = head;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (by_rep[i] == UINT32_MAX) continue;
+    ++num_contacts_;
+    std::vector<std::uint32_t> group;
+    for (std::uint32_t v = by_rep[i];;) {
+      group.push_back(v);
+      v = same_next_[v];
+      if (v == by_rep[i]) break;
+    }
+    contact_merges_ += group.size() - 1;
+    const Point& p = pts_[group[0]];
+    // Directions: (vertex id, is_out) for every ring at p.
+    struct Dir { std::uint32_t v; bool out; const Point* to; };
+    std::vector<Dir> dirs;
+    for (std::uint32_t v : group) dirs.push_back({v, false, &pts_[prev(v)]}), dirs.push_back({v, true, &pts_[next(v)]});
+    auto half = [&](const Point& a) { return a.y() > p.y() || (a.y() == p.y() && a.x() > p.x()) ? 0 : 1; };
+    std::sort(dirs.begin(), dirs.end(), [&](const Dir& a, const Dir& b) {
+      const int ha = half(*a.to), hb = half(*b.to);
+      if (ha != hb) return ha < hb;
+      return orientation(p, *a.to, *b.to) > 0;
+    });
+    auto name = [&](std::uint32_t v) {
+      return names[ring_of_[v]] + " vertex " + std::to_string(input_index_[v]);
+    };
+    const std::size_t m = dirs.size();
+    for (std::size_t k = 0; k < m; ++k) {
+      const Dir &d = dirs[k], &e = dirs[(k + 1) % m];
+      if (!d.out && (!e.out || e.v != d.v))
+        throw InputError(name(e.v) + " and " + name(d.v) + " overlap at " + format_point(p) +
+                         ": rings may touch at a contact, not cross or overlap there");
+      if (d.out) wedge_end_[d.v] = e.v, wedge_start_[e.v] = d.v;  // e is an in-edge (checked at e)
+    }
+  }
+}
+
+std::size_t Environment::edge_between(std::size_t a, std::size_t b) const {
+  if (next(a) == b) return a;
+  if (!has_contacts()) return SIZE_MAX;
+  for (std::size_t x = a;;) {
+    if (pts_[next(x)] == pts_[b]) return x;
+    x = same_next_[x];
+    if (x == a) return SIZE_MAX;
+  }
+}
+
+void require_no_contacts(const Environment& env, const std::string& who) {
+  for (std::size_t v = 0; v < env.num_vertices(); ++v) {
+    if (!env.is_contact(v)) continue;
+    std::string rings;
+    for (std::size_t w = v;;) {
+      rings.append(rings.empty() ? "" : ", ").append(env.ring_name(env.ring_of(w))).append(" vertex ").append(std::to_string(env.input_index(w)));
+      w = env.same_point_next(w);
+      if (w == v) break;
+    }
+    throw InputError(std::string(who).append(": rings touch at ").append(format_point(env.vertex(v))).append(" (").append(rings).append("), which ").append(who).append(" does not support yet"));
+  }
 }
 
 Ring Environment::ring(std::size_t r) const {

@@ -152,6 +152,29 @@ Ring spiral(double turns, double corridor, std::size_t per_turn) {
   return r;
 }
 
+Environment touching_squares(std::size_t m, double fill, std::uint64_t seed, bool sheared) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> coin(0, 1);
+  auto map = [&](double x, double y) { return sheared ? Point(2 * x + y, x + 3 * y) : Point(x, y); };
+  const double M = static_cast<double>(m);
+  Ring outer;
+  for (std::size_t k = 0; k < m; ++k) outer.push_back(map(static_cast<double>(k), 0));
+  outer.push_back(map(M, 0)), outer.push_back(map(M, M)), outer.push_back(map(0, M));
+  std::vector<Ring> holes;
+  for (std::size_t j = 1; j + 1 < m; ++j)
+    for (std::size_t i = 1; i + 1 < m; ++i) {
+      if ((i + j) % 2 != 0 || coin(rng) >= fill) continue;
+      const double x = static_cast<double>(i), y = static_cast<double>(j);
+      holes.push_back({map(x, y), map(x + 1, y), map(x + 1, y + 1), map(x, y + 1)});
+    }
+  for (std::size_t k = 1; k < m; ++k)
+    if (coin(rng) < fill / 2) {
+      const double x = static_cast<double>(k);
+      holes.push_back({map(x, 0), map(x + 0.375, 0.75), map(x - 0.375, 0.75)});
+    }
+  return Environment::make(std::move(outer), std::move(holes));
+}
+
 Environment office(std::size_t rows, std::size_t cols, double room) {
   const double W = static_cast<double>(cols) * room, H = static_cast<double>(rows) * room;
   const double t = 0.1 * room / 4, door = room / 4, junction = room / 8;

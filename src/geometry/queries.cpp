@@ -118,7 +118,7 @@ std::optional<RayHit> shoot_ray(const Environment& env, const ExactPoint& o, con
 
 namespace {
 template <class P>
-bool in_free_wedge_as(const Environment& env, std::size_t v, const P& t) {
+bool in_ring_free_wedge_as(const Environment& env, std::size_t v, const P& t) {
   const P &u = vertex_as<P>(env, env.prev(v)), &c = vertex_as<P>(env, v), &w = vertex_as<P>(env, env.next(v));
   // Free space is to the left of u->c and of c->w.
   const auto turn = CGAL::orientation(u, c, w);
@@ -127,6 +127,16 @@ bool in_free_wedge_as(const Environment& env, std::size_t v, const P& t) {
   if (turn == CGAL::LEFT_TURN) return left_of_out && left_of_in;
   if (turn == CGAL::RIGHT_TURN) return left_of_out || left_of_in;
   return left_of_out;
+}
+// At a contact the free directions are those outside every ring's material sector there.
+template <class P>
+bool in_free_wedge_as(const Environment& env, std::size_t v, const P& t) {
+  std::size_t w = v;
+  do {
+    if (!in_ring_free_wedge_as(env, w, t)) return false;
+    w = env.same_point_next(w);
+  } while (w != v);
+  return true;
 }
 
 // Is t on the closed free side of the edge e (whose relative interior contains the point)?
@@ -155,9 +165,10 @@ bool visible_as(const Environment& env, const P& p, const P& q) {
     const int o1 = CGAL::orientation(p, q, a), o2 = CGAL::orientation(p, q, b);
     const int o3 = CGAL::orientation(a, b, p), o4 = CGAL::orientation(a, b, q);
     if (o1 * o2 < 0 && o3 * o4 < 0) return false;  // proper crossing
-    // A vertex strictly inside pq: the segment must pass within the free wedge both ways.
+    // A vertex strictly inside pq: the segment must pass within the free wedge both ways
+    // (each ring at a contact is met as its own vertex e).
     if (o1 == 0 && strictly_between(p, q, a))
-      if (!in_free_wedge_as(env, e, p) || !in_free_wedge_as(env, e, q)) return false;
+      if (!in_ring_free_wedge_as(env, e, p) || !in_ring_free_wedge_as(env, e, q)) return false;
     // p or q strictly inside edge e while the other lies strictly across it.
     if (o3 == 0 && strictly_between(a, b, p) && o4 < 0) return false;
     if (o4 == 0 && strictly_between(a, b, q) && o3 < 0) return false;

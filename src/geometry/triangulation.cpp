@@ -9,11 +9,51 @@
 
 namespace preimage::geometry {
 
+namespace {
+
+// Counter-clockwise order of directions from p, from the +x axis: 0 when equal.
+int compare_direction(const Point& p, const Point& a, const Point& b) {
+  auto half = [&](const Point& x) { return x.y() > p.y() || (x.y() == p.y() && x.x() > p.x()) ? 0 : 1; };
+  const int ha = half(a), hb = half(b);
+  if (ha != hb) return ha < hb ? -1 : 1;
+  return -orientation(p, a, b);
+}
+
+// Is direction p->d in the counter-clockwise range [p->o, p->i) (o != i)?
+bool in_ccw_range(const Point& p, const Point& o, const Point& i, const Point& d) {
+  const bool from_o = compare_direction(p, o, d) <= 0, before_i = compare_direction(p, d, i) < 0;
+  return compare_direction(p, o, i) < 0 ? from_o && before_i : from_o || before_i;
+}
+
+}  // namespace
+
 Triangulation::Triangulation(const Environment& env) : env_(&env) {
   const auto triples = constrained_delaunay_triangles(env);
   tris_.reserve(triples.size());
   for (const auto& v : triples) tris_.push_back({v, {kNone, kNone, kNone}, {kNone, kNone, kNone}});
+  if (env.has_contacts()) label_wedges();
   link();
+}
+
+// A contact point was triangulated once; each triangle corner there is given the id of the
+// vertex whose out-edge starts the free wedge the triangle lies in (its clockwise edge at
+// the corner lies in [out(v), in(wedge_end(v))) counter-clockwise). Then every corner id
+// names one wedge, and the boundary edge (a, b) of a triangle is environment edge a.
+void Triangulation::label_wedges() {
+  const Environment& E = *env_;
+  const auto& P = E.vertices();
+  for (Triangle& t : tris_)
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t c = t.v[k];
+      if (!E.is_contact(c)) continue;
+      const Point& d = P[t.v[(k + 1) % 3]];
+      std::size_t w = c;
+      while (!in_ccw_range(P[c], P[E.next(w)], P[E.prev(E.wedge_end(w))], d)) {
+        w = E.same_point_next(w);
+        if (w == c) throw std::logic_error("triangulation: a triangle at a contact lies in no free wedge");
+      }
+      t.v[k] = static_cast<std::uint32_t>(w);
+    }
 }
 
 // ---------------------------------------------------------------- adjacency
@@ -25,7 +65,7 @@ void Triangulation::link() {
   for (std::uint32_t t = 0; t < tris_.size(); ++t) {
     for (std::uint8_t i = 0; i < 3; ++i) {
       std::uint32_t a = tris_[t].v[i], b = tris_[t].v[(i + 1) % 3];
-      if (E.next(a) == b) {  // boundary edge, free space on its left as in the triangle
+      if (E.wedge_start(E.next(a)) == b) {  // boundary edge, free space on its left as in the triangle
         tris_[t].edge[i] = a;
         edge_slot_[a] = {t, i};
         continue;
@@ -65,8 +105,11 @@ void Triangulation::check() const {
   const Environment& E = *env_;
   const auto& P = E.vertices();
   auto fail = [](const std::string& m) { throw std::logic_error("triangulation check: " + m); };
-  if (tris_.size() != E.num_vertices() + 2 * E.num_holes() - 2)
-    fail("triangle count " + std::to_string(tris_.size()) + " != n + 2h - 2");
+  // Euler on the closed free space (connected, h holes: chi = 1 - h) with n boundary edges
+  // and n - c distinct points, c = vertices merged at contacts: T = n - 2c + 2h - 2.
+  const std::size_t merged = E.contact_merges();
+  if (tris_.size() + 2 * merged != E.num_vertices() + 2 * E.num_holes() - 2)
+    fail("triangle count " + std::to_string(tris_.size()) + " != n - 2c + 2h - 2");
   std::decay_t<decltype(CGAL::exact(std::declval<ExactFT>()))> area = 0;  // exact type: see Environment::exact_area
   std::vector<int> boundary_seen(E.num_vertices(), 0);
   for (std::uint32_t t = 0; t < tris_.size(); ++t) {
@@ -77,7 +120,7 @@ void Triangulation::check() const {
     for (int i = 0; i < 3; ++i) {
       const std::uint32_t a = T.v[i], b = T.v[(i + 1) % 3];
       if (T.nbr[i] == kNone) {
-        if (T.edge[i] != a || E.next(a) != b) fail("boundary slot without its environment edge");
+        if (T.edge[i] != a || E.wedge_start(E.next(a)) != b) fail("boundary slot without its environment edge");
         ++boundary_seen[a];
       } else {
         const Triangle& U = tris_[T.nbr[i]];

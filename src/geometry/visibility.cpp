@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace preimage::geometry {
 
@@ -210,14 +212,21 @@ struct Piece {  // visible part of one boundary edge, between two cone rays
 
 VisibilityPolygon VisibilityIndex::compute(const Point& q) const { return compute_at(q, q); }
 
+VisibilityPolygon VisibilityIndex::compute_in_wedge(std::uint32_t v) const {
+  if (v >= env_->num_vertices()) throw std::out_of_range("compute_in_wedge: no vertex " + std::to_string(v));
+  return compute_at(env_->vertex(v), env_->vertex(v), v);
+}
+
 VisibilityPolygon VisibilityIndex::compute(const ExactPoint& q) const {
   const auto& a = q.approx();
   return compute_at(q, Point(CGAL::to_double(a.x()), CGAL::to_double(a.y())));
 }
 
 template <class Q>
-VisibilityPolygon VisibilityIndex::compute_at(const Q& q, const Point& approx) const {
-  const Located where = locate_triangle(q, approx);
+VisibilityPolygon VisibilityIndex::compute_at(const Q& q, const Point& approx, std::uint32_t only_wedge) const {
+  const Located where = only_wedge == kNone
+                            ? locate_triangle(q, approx)
+                            : Located{{Location::Kind::AtVertex, only_wedge}, tri_.boundary_slot(only_wedge).first, 0};
   if (!where.loc.in_free_space())
     throw InputError("visibility: query point " + format_point(approx) + " is not in free space: it lies " +
                      (where.loc.kind == Location::Kind::InHole ? "inside " + env_->ring_name(where.loc.index + 1)
@@ -296,23 +305,32 @@ VisibilityPolygon VisibilityIndex::compute_at(const Q& q, const Point& approx) c
       pieces.push_back({t0.edge[s], a, kNone, sym_vertex(a), sym_query});
       break;
     }
-    case Location::Kind::AtVertex: {  // fan of triangles around v inside the free wedge
-      const std::uint32_t v = static_cast<std::uint32_t>(where.loc.index);
-      const std::uint32_t w = static_cast<std::uint32_t>(E.next(v)), pv = static_cast<std::uint32_t>(E.prev(v));
-      pieces.push_back({v, kNone, w, sym_vertex(v), sym_vertex(w)});
-      auto [t, s] = tri_.boundary_slot(v);  // slot s = (v, w)
-      while (true) {
-        const Triangle& tr = T[t];
-        const int opp = (s + 1) % 3;  // edge opposite v
-        run(t, opp, tr.v[opp], tr.v[(opp + 1) % 3]);
-        const int back = (s + 2) % 3;  // edge (x, v): continue counter-clockwise around v
-        if (tr.nbr[back] == kNone) break;
-        const std::uint32_t u = tr.nbr[back];
-        int k = 0;
-        while (T[u].v[k] != v) ++k;
-        t = u, s = static_cast<std::uint8_t>(k);
-      }
-      pieces.push_back({pv, pv, kNone, sym_vertex(pv), sym_vertex(v)});
+    case Location::Kind::AtVertex: {
+      // The fan of triangles around v inside its free wedge; at a contact, every wedge there
+      // in counter-clockwise order (wedge_end(v) starts the next one), so V(q) is their
+      // union, a weakly simple polygon through q once per wedge. The point is named by one
+      // id throughout so the wedges' pieces join without a gap.
+      const std::uint32_t v0 = static_cast<std::uint32_t>(where.loc.index);
+      std::uint32_t v = v0;
+      do {
+        const std::uint32_t w = static_cast<std::uint32_t>(E.next(v));
+        const std::uint32_t pv = static_cast<std::uint32_t>(E.prev(E.wedge_end(v)));
+        pieces.push_back({v, kNone, w, sym_vertex(v0), sym_vertex(w)});
+        auto [t, s] = tri_.boundary_slot(v);  // slot s = (v, w)
+        while (true) {
+          const Triangle& tr = T[t];
+          const int opp = (s + 1) % 3;  // edge opposite v
+          run(t, opp, tr.v[opp], tr.v[(opp + 1) % 3]);
+          const int back = (s + 2) % 3;  // edge (x, v): continue counter-clockwise around v
+          if (tr.nbr[back] == kNone) break;
+          const std::uint32_t u = tr.nbr[back];
+          int k = 0;
+          while (T[u].v[k] != v) ++k;
+          t = u, s = static_cast<std::uint8_t>(k);
+        }
+        pieces.push_back({pv, pv, kNone, sym_vertex(pv), sym_vertex(v0)});
+        v = static_cast<std::uint32_t>(E.wedge_end(v));
+      } while (v != v0 && only_wedge == kNone);
       break;
     }
     default: break;
@@ -365,13 +383,15 @@ VisibilityPolygon VisibilityIndex::compute_at(const Q& q, const Point& approx) c
     const Sym &X = pc.end, &Y = pieces[(k + 1) % m].start;
     const bool both_vertices = X.kind == VisibilityVertex::Kind::EnvironmentVertex &&
                                Y.kind == VisibilityVertex::Kind::EnvironmentVertex;
-    if (both_vertices && E.next(X.vertex) == Y.vertex) {  // the ray runs along an edge
-      out.edges.push_back({VisibilityEdge::Kind::Solid, X.vertex, kNone, false});
-      continue;
-    }
-    if (both_vertices && E.next(Y.vertex) == X.vertex) {
-      out.edges.push_back({VisibilityEdge::Kind::Solid, Y.vertex, kNone, false});
-      continue;
+    if (both_vertices) {  // the ray may run along an edge (ids at a contact name one wedge: compare points)
+      if (const std::size_t e = E.edge_between(X.vertex, Y.vertex); e != SIZE_MAX) {
+        out.edges.push_back({VisibilityEdge::Kind::Solid, static_cast<std::uint32_t>(e), kNone, false});
+        continue;
+      }
+      if (const std::size_t e = E.edge_between(Y.vertex, X.vertex); e != SIZE_MAX) {
+        out.edges.push_back({VisibilityEdge::Kind::Solid, static_cast<std::uint32_t>(e), kNone, false});
+        continue;
+      }
     }
     // Usually one end is c itself, the occluder, nearer to q; otherwise compare exactly.
     bool outward;
@@ -427,32 +447,39 @@ bool VisibilityIndex::walk(const Point& a, const Point& b, std::uint32_t start, 
   };
   // Leave vertex w (on the line) in direction a -> b: the fan triangle of w whose closed
   // wedge holds it. For x off the line, orientation(w, x, w + (b - a)) = -orientation(a, b, x).
-  auto turn_at = [&](std::uint32_t w) -> Step {
-    const Point& W = P[w];
-    auto [u, s] = tri_.boundary_slot(w);  // triangle with edge (w, next(w)) at slot s
-    while (true) {
-      const Triangle& tr = T[u];
-      const int sa = (s + 1) % 3, sb = (s + 2) % 3;
-      const std::uint32_t x = tr.v[sa], y = tr.v[sb];  // counter-clockwise around w: x then y
-      const int ox = -orientation(a, b, P[x]), oy = -orientation(a, b, P[y]);
-      for (std::uint32_t e : {x, y}) {
-        if ((e == x ? ox : oy) == 0 && dot_sign(W, P[e], a, b) > 0) {  // along edge w -> e
-          if (within(W, P[e])) return Step::Reached;
-          on_vertex(e);
-          pivot = e;
-          return Step::Pivot;
+  // At a contact the point has one fan per free wedge: try each (ids linked by
+  // same_point_next); a direction in none of them enters a ring's material.
+  auto turn_at = [&](std::uint32_t w0) -> Step {
+    const Point& W = P[w0];
+    std::uint32_t w = w0;
+    do {
+      auto [u, s] = tri_.boundary_slot(w);  // triangle with edge (w, next(w)) at slot s
+      while (true) {
+        const Triangle& tr = T[u];
+        const int sa = (s + 1) % 3, sb = (s + 2) % 3;
+        const std::uint32_t x = tr.v[sa], y = tr.v[sb];  // counter-clockwise around w: x then y
+        const int ox = -orientation(a, b, P[x]), oy = -orientation(a, b, P[y]);
+        for (std::uint32_t e : {x, y}) {
+          if ((e == x ? ox : oy) == 0 && dot_sign(W, P[e], a, b) > 0) {  // along edge w -> e
+            if (within(W, P[e])) return Step::Reached;
+            on_vertex(e);
+            pivot = e;
+            return Step::Pivot;
+          }
         }
+        if (ox > 0 && oy < 0) {  // strictly inside the wedge: through triangle u
+          if (inside(u)) return Step::Reached;
+          return cross(u, sa);  // edge (x, y) is slot sa
+        }
+        if (tr.nbr[sb] == kNone) break;  // last triangle of the fan: outside this free wedge
+        const std::uint32_t nu = tr.nbr[sb];
+        int k = 0;
+        while (T[nu].v[k] != w) ++k;
+        u = nu, s = k;
       }
-      if (ox > 0 && oy < 0) {  // strictly inside the wedge: through triangle u
-        if (inside(u)) return Step::Reached;
-        return cross(u, sa);  // edge (x, y) is slot sa
-      }
-      if (tr.nbr[sb] == kNone) return Step::Blocked;  // last triangle of the fan: outside the free wedge
-      const std::uint32_t nu = tr.nbr[sb];
-      int k = 0;
-      while (T[nu].v[k] != w) ++k;
-      u = nu, s = k;
-    }
+      w = static_cast<std::uint32_t>(env_->same_point_next(w));
+    } while (w != w0);
+    return Step::Blocked;
   };
 
   Step step = Step::Blocked;
@@ -552,6 +579,12 @@ std::vector<std::uint32_t> VisibilityIndex::visible_vertices(const Point& q) con
     if (env_->vertex(c) == q) continue;
     walk(q, env_->vertex(c), c, false, [&](std::uint32_t w) { out.push_back(w); });
   }
+  // A contact point is listed under one id per wedge seen; seeing the point is seeing every
+  // ring's vertex there (a shortest path may bend there around any of them).
+  if (env_->has_contacts())
+    for (std::size_t i = 0, m = out.size(); i < m; ++i)
+      for (std::size_t w = env_->same_point_next(out[i]); w != out[i]; w = env_->same_point_next(w))
+        out.push_back(static_cast<std::uint32_t>(w));
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;

@@ -96,6 +96,8 @@ SightLine trace(const Environment& env, std::size_t first, const Direction& d) {
 }  // namespace
 
 std::vector<CriticalSegment> critical_segments(const Environment& env) {
+  // Critical rays along a ring's edge would run into a touching ring's material.
+  geometry::require_no_contacts(env, "pursuit");
   const std::size_t n = env.num_vertices();
   std::vector<std::uint32_t> reflex;
   for (std::size_t v = 0; v < n; ++v)

@@ -130,3 +130,16 @@ cli_test(validate_number_overflow fail "\\$\\.environment\\.boundary\\[1\\]\\[0\
          validate ${FIX}/scenes/number_overflow.json)
 cli_test(import_houseexpo 0 "wrote .*: 6 vertices, 0 obstacles" ${OUT}/l_shape.json import ${FIX}/houseexpo/l_shape.json --from houseexpo -o ${OUT}/l_shape.json)
 cli_test(import_missing_file fail "nope\\.json: cannot open file$" - import ${FIX}/nope.json --from houseexpo -o ${OUT}/never.json)
+
+# Holes touching at vertices (issue 29): accepted by every command that takes an environment
+# (pursuit says it does not support them yet), a point robot passes a contact, a disc not.
+set(CONTACTS ${FIX}/contacts)
+cli_test(contacts_validate 0 "3 obstacles|2 obstacles, free area 18, 3 contacts .rings touching at a vertex." - validate ${CONTACTS}/corridor_closed_at_points.json)
+cli_test(contacts_visibility_at_contact 0 "from .5, 1. .at-vertex.: 14 vertices, 10 solid and 4 free edges, area 16" - visibility ${CONTACTS}/corridor_closed_at_points.json --from 5,1)
+cli_test(contacts_plan_point_robot_through_contacts 0 "2 points, length 8 .every segment certified" - plan ${CONTACTS}/corridor_closed_at_points.json --radius 0)
+cli_test(contacts_plan_trapezoidal_through_contacts 0 "length 8, through 4 of 8 cells" - plan ${CONTACTS}/corridor_closed_at_points.json --radius 0 --method trapezoidal)
+cli_test(contacts_plan_disc_robot_blocked 0 "no path .* different components of the configuration space" - plan ${CONTACTS}/corridor_closed_at_points.json --radius 0.05)
+cli_test(contacts_boustrophedon_euler 0 "N_cells = N_critical \\+ N_obstacles - 1 - N_merges: 6 = 6 \\+ 5 - 1 - 4" - decompose ${CONTACTS}/checkerboard.json --method boustrophedon)
+cli_test(contacts_cover 0 "covered 100% of the configuration space" - cover ${CONTACTS}/checkerboard.json --width 0.2 --radius 0)
+cli_test(contacts_overlap_rejected fail "obstacles.1. vertex 0 and .*obstacles.0. vertex 2 overlap at .4, 4." - validate ${CONTACTS}/overlap_at_contact.json)
+cli_test(contacts_pursuit_says_unsupported fail "pursuit: rings touch at .2, 2. .* which pursuit does not support yet" - pursuit plan ${CONTACTS}/checkerboard.json)

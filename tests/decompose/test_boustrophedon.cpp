@@ -15,8 +15,9 @@ void check(const Environment& env, double angle, const std::string& what) {
   BoustrophedonDecomposition b(env, angle);
   const auto& cells = b.cells();
   const auto& slices = b.critical_slices();
-  // Euler's formula for the Reeb graph: N_cells = N_critical + N_obstacles - 1.
-  EXPECT_EQ(cells.size(), slices.size() + env.num_holes() - 1) << what;
+  // Euler's formula for the Reeb graph: N_cells = N_critical + N_obstacles - 1, one less per
+  // merge where holes touch (Environment::contact_merges).
+  EXPECT_EQ(cells.size() + env.contact_merges(), slices.size() + env.num_holes() - 1) << what;
   geometry::ExactFT total = 0;
   for (std::size_t c = 0; c < cells.size(); ++c) {
     total += b.area(c);
@@ -52,6 +53,16 @@ TEST(Boustrophedon, EulerOnRandomEnvironmentsAtManyAngles) {
     auto env = geometry::generators::random_environment(120 + 30 * s, s % 6, s);
     for (double angle : {0.0, 90.0, 180.0, 270.0, 30.0, 77.5})
       check(env, angle, "seed " + std::to_string(s) + " angle " + std::to_string(angle));
+  }
+}
+
+// Holes touching at vertices (issue 29): Euler's formula and areas at many angles.
+TEST(Boustrophedon, EulerWithTouchingHoles) {
+  for (std::uint64_t s = 1; s <= 8; ++s) {
+    auto env = geometry::generators::touching_squares(4 + s % 4, 0.8, s, s % 2 == 0);
+    ASSERT_TRUE(env.has_contacts());
+    for (double angle : {0.0, 90.0, 45.0, 30.0, 77.5})
+      check(env, angle, "touching_squares " + std::to_string(s) + " angle " + std::to_string(angle));
   }
 }
 

@@ -6,6 +6,7 @@
 #include <preimage/geometry/generators.hpp>
 #include <preimage/geometry/queries.hpp>
 #include <preimage/scene/import.hpp>
+#include <preimage/scene/scene.hpp>
 
 #include "support/cgal_oracle.hpp"
 
@@ -61,7 +62,8 @@ void check(const Environment& env, const std::string& what, bool with_cgal = tru
     EXPECT_LT(d.cells()[c].x_left, d.cells()[c].x_right);
   }
   EXPECT_EQ(total, env.exact_area()) << what << ": cell areas do not sum to the free area";
-  // Adjacency: the cell graph of one connected free space is connected.
+  // Adjacency: the cell graph of one connected free space is connected (with contacts,
+  // cells may meet only at a contact point: Trapezoidal.TouchingHoles checks the planner).
   std::vector<int> seen(d.cells().size(), 0);
   std::vector<std::uint32_t> stack{0};
   seen[0] = 1;
@@ -72,7 +74,9 @@ void check(const Environment& env, const std::string& what, bool with_cgal = tru
       for (auto o : {d.extensions()[x].left_cell, d.extensions()[x].right_cell})
         if (!seen[o]) seen[o] = 1, stack.push_back(o);
   }
-  EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<long>(d.cells().size())) << what << ": cell graph not connected";
+  if (!env.has_contacts()) {
+    EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<long>(d.cells().size())) << what << ": cell graph not connected";
+  }
   // Extensions run through free space, on x = const, between their two cells.
   for (std::size_t x = 0; x < d.extensions().size(); ++x) {
     auto [p, q] = d.segment(x);
@@ -175,6 +179,35 @@ TEST(Planner, PathsAreCollisionFreeAndConnectStartToGoal) {
       }
     }
   }
+}
+
+// Holes touching at vertices (issue 29): the same checks against CGAL's vertical
+// decomposition, on the contact fixtures and random touching squares (sheared too), and
+// the planner joins cells through contact points, every segment in free space.
+TEST(Trapezoidal, TouchingHolesMatchCgalAndPlansPassContacts) {
+  std::vector<std::pair<std::string, Environment>> envs;
+  for (const char* name : {"checkerboard", "hole_touches_boundary", "corridor_closed_at_points"})
+    envs.emplace_back(name, std::move(*scene::load_scene(std::string(PREIMAGE_FIXTURES) + "/contacts/" + name + ".json").environment));
+  for (std::uint64_t s = 1; s <= 8; ++s)
+    envs.emplace_back("touching_squares " + std::to_string(s), geometry::generators::touching_squares(4 + s % 4, 0.8, s, s % 2 == 0));
+  for (const auto& [what, env] : envs) {
+    ASSERT_TRUE(env.has_contacts()) << what;
+    check(env, what);
+    TrapezoidalDecomposition d(env);
+    decompose::TrapezoidalPlanner planner(d);
+    auto qs = preimage::testing::random_queries(env, 16, 0, 0, 5);
+    for (std::size_t k = 0; k + 1 < qs.size(); k += 2)
+      for (bool shorten : {false, true}) {
+        auto plan = planner.plan(qs[k].p, qs[k + 1].p, shorten);
+        ASSERT_TRUE(plan.found) << what;
+        for (std::size_t i = 0; i + 1 < plan.path.size(); ++i)
+          EXPECT_TRUE(geometry::visible(env, plan.path[i], plan.path[i + 1])) << what << " segment " << i;
+      }
+  }
+  // Through the contacts only: the corridor's halves meet at three points.
+  const auto& corridor = envs[2].second;
+  TrapezoidalDecomposition d(corridor);
+  EXPECT_TRUE(decompose::TrapezoidalPlanner(d).plan(geometry::Point(1, 1), geometry::Point(9, 1)).found);
 }
 
 TEST(Planner, RejectsPointsOutsideFreeSpace) {

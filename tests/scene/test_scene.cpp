@@ -62,8 +62,11 @@ TEST(Scene, BeamLabelsThatNoWordCanNameAreRejected) {
 TEST(Scene, GeometryErrorsCarryTheJsonPath) {
   EXPECT_EQ(load_error(fixture("scenes/self_intersecting.json")),
             "$.environment.boundary: edges 1 and 3 intersect near (1, 1)");
-  EXPECT_EQ(load_error(fixture("scenes/touching_obstacles.json")),
-            "$.environment.obstacles[1] vertex 0 touches $.environment.obstacles[0] vertex 2 at (3, 3)");
+  // Holes touching at a vertex are accepted (a contact); overlapping there is an error.
+  EXPECT_EQ(load_error(fixture("scenes/touching_obstacles.json")), "");
+  EXPECT_EQ(load_error(fixture("contacts/overlap_at_contact.json")),
+            "$.environment.obstacles[1] vertex 0 and $.environment.obstacles[0] vertex 2 overlap at (4, 4): rings may "
+            "touch at a contact, not cross or overlap there");
   EXPECT_EQ(load_error(fixture("scenes/bad_coordinate.json")),
             "$.environment.obstacles[0][2][1]: expected a number, got string");
   EXPECT_EQ(load_error(fixture("scenes/missing.json")), fixture("scenes/missing.json") + ": cannot open file");

@@ -23,8 +23,10 @@ class TrapezoidalPlanner {
   explicit TrapezoidalPlanner(const TrapezoidalDecomposition& d);
   TrapezoidalPlanner(TrapezoidalDecomposition&&) = delete;  // keeps a pointer to the decomposition
   /// Throws InputError when start or goal is not in free space (naming which and where).
-  /// `found` is false when the cell graph does not connect them (the free space of a valid
-  /// Environment is connected, so today that means start and goal were both rejected first).
+  /// Cells are joined through extensions and, where rings touch, through the contact point
+  /// (cells meeting only there: free space is closed, a point robot passes). `found` is
+  /// false when nothing connects them (never for a valid Environment, whose free space is
+  /// connected).
   /// Shortening asks exact visibility of `index` (of the same environment) when given,
   /// else of one it builds: O(k) per segment for the k triangles it crosses, not O(n).
   Plan plan(const Point& start, const Point& goal, bool shorten = true, const geometry::VisibilityIndex* index = nullptr) const;
@@ -37,6 +39,11 @@ class TrapezoidalPlanner {
  private:
   const TrapezoidalDecomposition* d_;
   CellLocator locator_;
+  // Cells whose closure holds each contact point (CSR: contact k's cells are
+  // contact_cells_[contact_off_[k] .. contact_off_[k + 1]), and the contacts of each cell.
+  std::vector<Point> contacts_;
+  std::vector<std::uint32_t> contact_off_, contact_cells_;
+  std::vector<std::vector<std::uint32_t>> cell_contacts_;
 };
 
 enum class PlanMethod { Shortest, Trapezoidal };

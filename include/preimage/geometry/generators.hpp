@@ -36,4 +36,12 @@ Environment office(std::size_t rows, std::size_t cols, double room = 4.0);
 /// horizontal edges, several vertices on one vertical line, collinear runs.
 Environment random_rectilinear(std::size_t cols, std::size_t rows, bool holes, std::uint64_t seed);
 
+/// Holes that touch at vertices (Environment contacts): an m x m grid in [0, m]^2 whose
+/// inner black cells ((i + j) even, not on the border) are unit-square holes with
+/// probability `fill`, so diagonal neighbours touch at corners; and triangles whose apex
+/// touches the bottom wall at a boundary vertex (the wall has a vertex at every integer).
+/// `sheared` maps everything by the integer matrix [[2, 1], [1, 3]] (exact in doubles), so
+/// no edge is axis-aligned. Valid by construction for m >= 3.
+Environment touching_squares(std::size_t m, double fill, std::uint64_t seed, bool sheared = false);
+
 }  // namespace preimage::geometry::generators

@@ -52,7 +52,7 @@ bool visible(const Environment& env, const Point& p, const Point& q);
 bool visible(const Environment& env, const ExactPoint& p, const ExactPoint& q);
 
 /// Is direction towards t, from boundary vertex v, inside the closed free-space wedge at v?
-bool in_free_wedge(const Environment& env, std::size_t v, const Point& t);
+bool in_free_wedge(const Environment& env, std::size_t v, const Point& t);  // at a contact: outside every ring there
 
 /// Winding number of the closed polyline `loop` (last point joined to the first) about
 /// c, counter-clockwise positive. Exact (crossings of the ray from c to +x, decided by

@@ -18,6 +18,9 @@ namespace preimage::geometry {
 
 inline constexpr std::uint32_t kNone = UINT32_MAX;
 
+/// At a contact point (Environment::same_point_next) a corner's id is the vertex whose
+/// out-edge starts the free wedge the triangle lies in, so the triangles around one id
+/// form one wedge's fan and a boundary edge (v[i], v[i+1]) is environment edge v[i].
 struct Triangle {
   std::array<std::uint32_t, 3> v;    // environment vertex ids, counter-clockwise
   std::array<std::uint32_t, 3> nbr;  // nbr[i]: triangle across edge (v[i], v[i+1]); kNone on the boundary
@@ -37,13 +40,15 @@ class Triangulation {
 
   /// Throws std::logic_error if any structural invariant fails (tests use this):
   /// positive orientation, symmetric adjacency, boundary edges exactly the
-  /// environment's, triangle count n + 2h - 2, exact area equal to the free area.
+  /// environment's, triangle count n - 2c + 2h - 2 (c vertices merged at contacts), exact
+  /// area equal to the free area.
   void check() const;
   /// Number of interior edges that are not locally Delaunay (0 after construction).
   std::size_t non_delaunay_edges() const;
 
  private:
   void link();
+  void label_wedges();
 
   const Environment* env_;
   std::vector<Triangle> tris_;

@@ -67,8 +67,14 @@ class VisibilityIndex {
   /// Whether q is in free space (open free space, an edge or a vertex): O(1) expected.
   bool in_free_space(const Point& q) const;
   /// V(q) for q in the interior, on an edge, or at a vertex; throws InputError if q is
-  /// outside free space.
+  /// outside free space. At a contact point (rings touching there) V(q) is the union of
+  /// what q sees in each free wedge there: a weakly simple polygon through q once per
+  /// wedge, wedges in counter-clockwise order.
   VisibilityPolygon compute(const Point& q) const;
+  /// V of vertex v's point within one free wedge: the one starting at v's out-edge
+  /// (counter-clockwise to the in-edge of Environment::wedge_end(v)). Without contacts the
+  /// same as compute(vertex(v)).
+  VisibilityPolygon compute_in_wedge(std::uint32_t v) const;
   /// V(q) for a constructed (lazy-exact) query, e.g. a point inside a region thinner than
   /// double precision resolves. The same decisions on lazy-exact predicates: slower.
   VisibilityPolygon compute(const ExactPoint& q) const;
@@ -79,7 +85,8 @@ class VisibilityIndex {
   /// outside free space.
   bool visible(const Point& p, const Point& q) const;
   /// Environment vertices visible from q (q in closed free space), ascending: every
-  /// vertex w with visible(q, w), needles and grazed vertices included.
+  /// vertex w with visible(q, w), needles and grazed vertices included (at a contact, every
+  /// ring's vertex there).
   std::vector<std::uint32_t> visible_vertices(const Point& q) const;
 
  private:
@@ -87,7 +94,7 @@ class VisibilityIndex {
   template <class Q>
   Located locate_triangle(const Q& q, const Point& approx, bool name_outside = true) const;
   template <class Q>
-  VisibilityPolygon compute_at(const Q& q, const Point& approx) const;
+  VisibilityPolygon compute_at(const Q& q, const Point& approx, std::uint32_t only_wedge = kNone) const;
   template <class OnVertex>
   bool walk(const Point& a, const Point& b, std::uint32_t start, bool to_b, OnVertex&& on_vertex) const;
 
