@@ -181,8 +181,7 @@ Environment Environment::make(Ring outer, std::vector<Ring> holes, const std::st
         throw InputError(names[ring_of[e]] + ": edges " + std::to_string(local[e]) + " and " +
                          std::to_string(local[f]) + " intersect" + near);
       throw InputError(names[ring_of[f]] + " edge " + std::to_string(local[f]) + " touches " +
-                       names[ring_of[e]] + " edge " + std::to_string(local[e]) + near +
-                       " (rings may touch only at a vertex of both)");
+                       names[ring_of[e]] + " edge " + std::to_string(local[e]) + near);
     }
   }
 
