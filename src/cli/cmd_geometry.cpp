@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// preimage validate | import | render | visibility
+// preimage validate | import | render (visibility: cmd_visibility.cpp)
 #include "common.hpp"
-
-#include <preimage/scene/geojson.hpp>
 
 #include <preimage/error.hpp>
 #include <preimage/geometry/general_position.hpp>
@@ -97,78 +95,6 @@ void run_render(const std::string& path, const std::string& out, bool triangulat
   std::cout << "wrote " << out << "\n";
 }
 
-json visibility_json(const geometry::VisibilityPolygon& v) {
-  const auto& env = *v.environment;
-  json verts = json::array(), edges = json::array();
-  for (std::size_t i = 0; i < v.vertices.size(); ++i) {
-    const auto& vv = v.vertices[i];
-    json j{{"x", vv.approx.x()}, {"y", vv.approx.y()}};
-    switch (vv.kind) {
-      case geometry::VisibilityVertex::Kind::EnvironmentVertex:
-        j["kind"] = "vertex";
-        j["ring"] = env.ring_name(env.ring_of(vv.vertex));
-        j["index"] = env.input_index(vv.vertex);
-        break;
-      case geometry::VisibilityVertex::Kind::Query: j["kind"] = "query"; break;
-      case geometry::VisibilityVertex::Kind::RayHit: {
-        const auto p = v.exact(i);
-        j["kind"] = "ray-hit";
-        j["through"] = {{"ring", env.ring_name(env.ring_of(vv.vertex))}, {"index", env.input_index(vv.vertex)}};
-        j["exact"] = {exact_string(p.x()), exact_string(p.y())};
-        break;
-      }
-    }
-    verts.push_back(j);
-  }
-  for (const auto& e : v.edges) {
-    if (e.kind == geometry::VisibilityEdge::Kind::Solid) {
-      edges.push_back({{"kind", "solid"}, {"on", edge_json(env, e.edge)}});
-    } else {
-      edges.push_back({{"kind", "free"},
-                       {"occluding_vertex", {{"ring", env.ring_name(env.ring_of(e.reflex))}, {"index", env.input_index(e.reflex)}}},
-                       {"occluder_side", e.occluder_on_left ? "left" : "right"}});
-    }
-  }
-  return json{{"query", {v.query.x(), v.query.y()}},
-              {"location", geometry::to_string(v.location.kind)},
-              {"area", v.area()},
-              {"vertices", verts},
-              {"edges", edges}};
-}
-
-void run_visibility(const std::string& path, const std::string& from, bool as_json, const std::string& svg, const std::string& geojson) {
-  const scene::Scene s = scene::load_scene(path);
-  const geometry::Point q = parse_point(from, "--from");
-  geometry::VisibilityIndex index(s.require_environment());
-  const auto v = index.compute(q);
-  if (!svg.empty()) {
-    render::SvgCanvas canvas(render::scene_box(s));
-    render::draw_scene(canvas, s);
-    render::draw_visibility(canvas, v);
-    canvas.save(svg);
-  }
-  if (!geojson.empty()) {
-    std::vector<geometry::Point> ring;
-    for (const auto& vv : v.vertices) ring.push_back(vv.approx);
-    scene::GeoJsonWriter()
-        .environment(s.require_environment(), {{"kind", "environment"}})
-        .polygon({ring}, {{"kind", "visibility polygon"}, {"area", v.area()}})
-        .point(q, {{"kind", "viewpoint"}})
-        .save(geojson);
-  }
-  if (as_json) {
-    print_json(visibility_json(v));
-    return;
-  }
-  std::size_t free = 0;
-  for (auto& e : v.edges) free += e.kind == geometry::VisibilityEdge::Kind::Free;
-  std::cout << "visibility polygon from " << geometry::format_point(q) << " (" << geometry::to_string(v.location.kind)
-            << "): " << v.vertices.size() << " vertices, " << v.edges.size() - free << " solid and " << free
-            << " free edges, area " << geometry::format_number(v.area()) << "\n";
-  if (!svg.empty()) std::cout << "wrote " << svg << "\n";
-  if (!geojson.empty()) std::cout << "wrote " << geojson << "\n";
-}
-
 }  // namespace
 
 void add_geometry_commands(CLI::App& app) {
@@ -203,21 +129,6 @@ void add_geometry_commands(CLI::App& app) {
     cmd->add_option("-o,--output", *out, "SVG file to write")->required();
     cmd->add_flag("--triangulation", *tri, "Overlay the constrained Delaunay triangulation");
     cmd->callback([=] { run_render(*path, *out, *tri); });
-  }
-  {
-    auto* cmd = app.add_subcommand("visibility", "Exact visibility polygon from a point (interior, on an edge, or at a vertex)");
-    set_examples(cmd, {"preimage visibility examples/gallery.json --from 1,1", "preimage visibility examples/gallery.json --from 1,1 --svg vis.svg --json"});
-    auto path = std::make_shared<std::string>();
-    auto from = std::make_shared<std::string>();
-    auto json_out = std::make_shared<bool>(false);
-    auto svg = std::make_shared<std::string>();
-    cmd->add_option("scene", *path, "Scene JSON file")->required();
-    cmd->add_option("--from", *from, "Viewpoint X,Y")->required();
-    add_json_flag(cmd, *json_out, "Machine-readable output on stdout");
-    auto geojson = std::make_shared<std::string>();
-    cmd->add_option("--svg", *svg, "Also draw the polygon to this SVG file");
-    cmd->add_option("--geojson", *geojson, "Also write the environment, the polygon and the viewpoint as GeoJSON features");
-    cmd->callback([=] { run_visibility(*path, *from, *json_out, *svg, *geojson); });
   }
 }
 

@@ -55,6 +55,7 @@ std::string count_of(std::size_t n, const std::string& singular, const std::stri
 
 /// Registration of each command group.
 void add_geometry_commands(CLI::App& app);
+void add_visibility_commands(CLI::App& app);  // visibility, visibility-graph
 void add_decompose_commands(CLI::App& app);
 void add_beams_commands(CLI::App& app);
 void add_beams_homotopy_commands(CLI::App* beams_cmd);  // homotopy, winding

@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.option_defaults()->always_capture_default();  // every --help shows every default
   preimage::cli::add_geometry_commands(app);
+  preimage::cli::add_visibility_commands(app);
   preimage::cli::add_decompose_commands(app);
   preimage::cli::add_beams_commands(app);
   preimage::cli::add_wallfollow_commands(app);

@@ -76,6 +76,40 @@ void draw_visibility(SvgCanvas& c, const geometry::VisibilityPolygon& v, const s
   c.legend("free edges (occlusion gaps)", free);
 }
 
+void draw_range_visibility(SvgCanvas& c, const geometry::RangeVisibility& r, const std::string& colour, const std::string& label) {
+  using geometry::RangePiece;
+  const Point& q = r.query();
+  std::vector<RegionStep> steps;
+  Point start;
+  if (r.full_disc) {
+    start = Point(q.x() + r.range, q.y());
+    steps = {{Point(q.x() - r.range, q.y()), r.range, 3.141592653589793}, {start, r.range, 3.141592653589793}};
+  } else {
+    start = r.pieces.front().from.approx;
+    for (const auto& p : r.pieces) steps.push_back({p.to.approx, p.kind == RangePiece::Kind::Arc ? r.range : 0.0, p.span});
+  }
+  c.region(start, steps, Style{colour, "none", 0, 0.35, ""});
+  // The whole range circle, dotted.
+  c.region(Point(q.x() + r.range, q.y()), {{Point(q.x() - r.range, q.y()), r.range, 3.141592653589793}, {Point(q.x() + r.range, q.y()), r.range, 3.141592653589793}},
+           Style{"none", "#5f6368", 1.0, 0.8, "2 3"}, "range " + geometry::format_number(r.range));
+  Style solid{"none", colour, 2.5, 1.0, ""}, free{"none", "#d93025", 1.5, 1.0, "5 3"}, arc{"none", "#1a73e8", 2.0, 1.0, ""};
+  for (const auto& p : r.pieces) {
+    if (p.kind == RangePiece::Kind::Arc) {
+      if (r.full_disc) continue;
+      c.region(p.from.approx, {{p.to.approx, r.range, p.span}}, arc, "range limit", false);
+      continue;
+    }
+    const auto& e = r.polygon.edges[p.edge];
+    const bool is_free = e.kind == geometry::VisibilityEdge::Kind::Free;
+    c.segment(p.from.approx, p.to.approx, is_free ? free : solid,
+              is_free ? "free edge: occlusion at vertex " + std::to_string(e.reflex) : "on edge " + std::to_string(e.edge));
+  }
+  c.point(q, 4.5, Style{"#202124", "#ffffff", 1.5, 1.0, ""}, "query " + geometry::format_point(q));
+  c.legend(label, Style{colour, colour, 2.5, 0.6, ""});
+  c.legend("free edges (occlusion gaps)", free);
+  if (!r.full_disc) c.legend("range limit (circle arcs)", arc);
+}
+
 void draw_route(SvgCanvas& c, const std::vector<Point>& path, const std::string& label, const std::string& colour, double stroke,
                 const std::string& dash) {
   if (path.empty()) return;

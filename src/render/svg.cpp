@@ -91,6 +91,22 @@ void SvgCanvas::polyline(const std::vector<Point>& pts, const Style& s, const st
   body_ += "<polyline points=\"" + p + "\"" + style_attr(s) + ">" + (title.empty() ? "" : "<title>" + escape(title) + "</title>") + "</polyline>\n";
 }
 
+void SvgCanvas::region(const Point& start, const std::vector<RegionStep>& steps, const Style& s, const std::string& title, bool closed) {
+  std::string d = "M";
+  d.append(px(start));
+  for (const auto& st : steps) {
+    if (st.arc_radius <= 0) {
+      d.append(" L").append(px(st.to));
+    } else {
+      // World counter-clockwise is sweep-flag 0 in SVG's y-down coordinates.
+      const std::string r = num(st.arc_radius * scale_);
+      d.append(" A").append(r).append(",").append(r).append(" 0 ").append(st.arc_span > 3.141592653589793 ? "1" : "0").append(" 0 ").append(px(st.to));
+    }
+  }
+  if (closed) d.append(" Z");
+  body_ += "<path d=\"" + d + "\"" + style_attr(s) + ">" + (title.empty() ? "" : "<title>" + escape(title) + "</title>") + "</path>\n";
+}
+
 void SvgCanvas::segment(const Point& a, const Point& b, const Style& s, const std::string& title) {
   polyline({a, b}, s, title);
 }

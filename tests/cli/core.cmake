@@ -143,3 +143,56 @@ cli_test(contacts_boustrophedon_euler 0 "N_cells = N_critical \\+ N_obstacles - 
 cli_test(contacts_cover 0 "covered 100% of the configuration space" - cover ${CONTACTS}/checkerboard.json --width 0.2 --radius 0)
 cli_test(contacts_overlap_rejected fail "obstacles.1. vertex 0 and .*obstacles.0. vertex 2 overlap at .4, 4." - validate ${CONTACTS}/overlap_at_contact.json)
 cli_test(contacts_pursuit_says_unsupported fail "pursuit: rings touch at .2, 2. .* which pursuit does not support yet" - pursuit plan ${CONTACTS}/checkerboard.json)
+
+# Issue 29: range-limited visibility, batches of viewpoints, full visibility graphs.
+cli_test(visibility_range_text 0 "visibility from \\(4, 4\\) \\(interior\\) within range 3: [0-9]+ segments and [0-9]+ arcs, area [0-9.]+ \\(unlimited: [0-9.]+\\)" -
+         visibility ${EXAMPLES}/gallery.json --from 4,4 --range 3)
+cli_test(visibility_range_json 0 "\"kind\":\"arc\".*\"kind\":\"circle-crossing\"|\"kind\":\"circle-crossing\".*\"kind\":\"arc\"" -
+         visibility ${EXAMPLES}/gallery.json --from 4,4 --range 3 --json)
+cli_test(visibility_range_whole_disc 0 "within range 0\\.5: the whole disc, area 0\\.785" - visibility ${EXAMPLES}/gallery.json --from 1,1 --range 0.5)
+cli_test(visibility_range_huge_is_v 0 "within range 1000: [0-9]+ segments and 0 arcs, area ([0-9.]+) \\(unlimited: \\1\\)" -
+         visibility ${EXAMPLES}/gallery.json --from 1,1 --range 1000)
+cli_test(visibility_range_at_vertex 0 "\\(at-vertex\\) within range 2: " - visibility ${EXAMPLES}/gallery.json --from 3,3 --range 2)
+cli_test(visibility_range_svg_arcs 0 "wrote .*range\\.svg" ${OUT}/range.svg visibility ${EXAMPLES}/gallery.json --from 4,4 --range 3 --svg ${OUT}/range.svg)
+add_test(NAME cli.visibility_range_svg_has_arcs COMMAND grep -Eq "<path d=\"M[0-9.,]+ .*A[0-9.]+,[0-9.]+ 0 [01] 0 " ${OUT}/range.svg)
+set_tests_properties(cli.visibility_range_svg_has_arcs PROPERTIES DEPENDS cli.visibility_range_svg_arcs)
+cli_test(visibility_range_geojson 0 "wrote .*range\\.geojson" ${OUT}/range.geojson visibility ${EXAMPLES}/gallery.json --from 4,4 --range 3 --geojson ${OUT}/range.geojson)
+cli_test(visibility_range_zero fail "--range: expected a number in \\(0, 1e\\+12\\], got 0" - visibility ${EXAMPLES}/gallery.json --from 1,1 --range 0)
+cli_test(visibility_range_not_a_number fail "--range" - visibility ${EXAMPLES}/gallery.json --from 1,1 --range far)
+cli_test(visibility_range_in_obstacle fail "query point \\(2.5, 2.5\\) is not in free space: it lies inside \\$\\.environment\\.obstacles\\[0\\]$" -
+         visibility ${EXAMPLES}/gallery.json --from 2.5,2.5 --range 1)
+cli_test(visibility_points_batch 0 "^\\{\"area\":.*\"line\":8,.*\\}$" - visibility ${EXAMPLES}/gallery.json --points ${EXAMPLES}/gallery_points.txt)
+cli_test(visibility_points_batch_range 0 "\"line\":8,.*\"range\":2.5" - visibility ${EXAMPLES}/gallery.json --points ${EXAMPLES}/gallery_points.txt --range 2.5)
+cli_test(visibility_points_bad_token fail "bad_token\\.txt:3: expected 'x y' \\(two numbers\\), got 'zero'$" -
+         visibility ${EXAMPLES}/gallery.json --points ${FIX}/points/bad_token.txt)
+# JSON Lines: one record per point (six in the file), and the records before a bad line are out.
+add_test(NAME cli.visibility_points_one_record_per_point
+         COMMAND bash -c "\"$0\" visibility \"$1\" --points \"$2\" | grep -c '^{.*\"line\":[0-9]*,.*}$'"
+                 $<TARGET_FILE:preimage_cli> ${EXAMPLES}/gallery.json ${EXAMPLES}/gallery_points.txt)
+set_tests_properties(cli.visibility_points_one_record_per_point PROPERTIES PASS_REGULAR_EXPRESSION "^6\n$")
+add_test(NAME cli.visibility_points_records_before_a_bad_line
+         COMMAND bash -c "\"$0\" visibility \"$1\" --points \"$2\" 2>/dev/null | grep -c '\"line\":[12],'"
+                 $<TARGET_FILE:preimage_cli> ${EXAMPLES}/gallery.json ${FIX}/points/bad_token.txt)
+set_tests_properties(cli.visibility_points_records_before_a_bad_line PROPERTIES PASS_REGULAR_EXPRESSION "^2\n$")
+cli_test(visibility_points_three_numbers fail "three_numbers\\.txt:3: expected 'x y' \\(two numbers\\), got 3 tokens \\(extra '5'\\)$" -
+         visibility ${EXAMPLES}/gallery.json --points ${FIX}/points/three_numbers.txt --range 1)
+cli_test(visibility_points_in_obstacle fail "in_obstacle\\.txt:3: .*query point \\(2.5, 2.5\\) is not in free space: it lies inside \\$\\.environment\\.obstacles\\[0\\]$" -
+         visibility ${EXAMPLES}/gallery.json --points ${FIX}/points/in_obstacle.txt)
+cli_test(visibility_points_missing_file fail "nope\\.txt: cannot open file$" - visibility ${EXAMPLES}/gallery.json --points ${FIX}/points/nope.txt)
+cli_test(visibility_needs_from_or_points fail "--from or --points: give one viewpoint" - visibility ${EXAMPLES}/gallery.json)
+cli_test(visibility_from_excludes_points fail "--from excludes --points|--points excludes --from" - visibility ${EXAMPLES}/gallery.json --from 1,1 --points ${EXAMPLES}/gallery_points.txt)
+cli_test(visibility_points_no_svg fail "--svg: draws one viewpoint \\(--from\\), not a batch \\(--points\\)" -
+         visibility ${EXAMPLES}/gallery.json --points ${EXAMPLES}/gallery_points.txt --svg ${OUT}/never.svg)
+cli_test(visibility_graph_vertex 0 "^vertex-vertex visibility graph: 20 vertices, [0-9]+ edges$" - visibility-graph ${EXAMPLES}/gallery.json)
+cli_test(visibility_graph_points_json 0 "\"kind\":\"point-point\".*\"points\":\\[\\[1(\\.0)?,1(\\.0)?\\]" - visibility-graph ${EXAMPLES}/gallery.json --points ${EXAMPLES}/gallery_points.txt --json)
+cli_test(visibility_graph_point_vertex_svg 0 "point-vertex visibility graph: 20 vertices and 6 points, [0-9]+ edges" ${OUT}/graph.svg
+         visibility-graph ${EXAMPLES}/gallery.json --points ${EXAMPLES}/gallery_points.txt --kind point-vertex --svg ${OUT}/graph.svg)
+cli_test(visibility_graph_unknown_kind fail "--kind: unknown graph 'edge' \\(expected vertex, point or point-vertex\\)" -
+         visibility-graph ${EXAMPLES}/gallery.json --kind edge)
+cli_test(visibility_graph_kind_needs_points fail "--kind point-vertex: needs --points FILE" - visibility-graph ${EXAMPLES}/gallery.json --kind point-vertex)
+cli_test(visibility_graph_vertex_takes_no_points fail "--points: the vertex graph joins environment vertices only" -
+         visibility-graph ${EXAMPLES}/gallery.json --kind vertex --points ${EXAMPLES}/gallery_points.txt)
+cli_test(visibility_graph_point_in_obstacle fail "in_obstacle\\.txt:3: point \\(2.5, 2.5\\) is not in free space: it lies inside \\$\\.environment\\.obstacles\\[0\\]$" -
+         visibility-graph ${EXAMPLES}/gallery.json --points ${FIX}/points/in_obstacle.txt)
+cli_test(visibility_graph_bad_token fail "bad_token\\.txt:3: expected 'x y' \\(two numbers\\), got 'zero'$" -
+         visibility-graph ${EXAMPLES}/gallery.json --points ${FIX}/points/bad_token.txt)

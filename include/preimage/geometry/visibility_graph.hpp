@@ -9,8 +9,9 @@
 // triangular expansion (VisibilityIndex), so every edge is exact; lengths are doubles
 // (they choose among exact paths, they decide nothing geometric).
 //
-// Used for coverage transits, planning with a footprint (on the configuration space) and
-// the `visibility-graph` command; it is built once per environment.
+// Used for coverage transits and planning with a footprint (on the configuration space);
+// it is built once per environment. The full graphs
+// (every visible pair, and graphs over points) are in visibility_graphs.hpp.
 #pragma once
 #include <preimage/geometry/visibility.hpp>
 

@@ -3,6 +3,7 @@
 #pragma once
 #include <preimage/geometry/configuration_space.hpp>
 #include <preimage/geometry/triangulation.hpp>
+#include <preimage/geometry/range_visibility.hpp>
 #include <preimage/geometry/visibility.hpp>
 #include <preimage/render/svg.hpp>
 #include <preimage/scene/scene.hpp>
@@ -17,6 +18,10 @@ void draw_triangulation(SvgCanvas& canvas, const geometry::Triangulation& t);
 /// Filled polygon, solid edges along walls, dashed free (occlusion) edges, the query point.
 void draw_visibility(SvgCanvas& canvas, const geometry::VisibilityPolygon& v, const std::string& colour = "#f4b400",
                      const std::string& label = "visibility polygon (thick edges lie on walls)");
+/// Range-limited visibility V(q) within radius R: the region with its circle arcs as SVG
+/// arcs, pieces on walls thick, free pieces dashed, the range circle dotted, the query point.
+void draw_range_visibility(SvgCanvas& canvas, const geometry::RangeVisibility& r, const std::string& colour = "#f4b400",
+                           const std::string& label = "visible within range (arcs: the range limit)");
 
 /// A robot's route: the polyline with arrows showing the way it runs, and start and end
 /// markers (each with a legend entry).

@@ -10,6 +10,16 @@ namespace preimage::render {
 
 using geometry::Point;
 
+/// One step of a region's boundary (SvgCanvas::region): to `to`, straight, or along a
+/// circle of radius `arc_radius` (world units) counter-clockwise in the world, sweeping
+/// `arc_span` radians, less than 2 pi (SVG cannot draw an arc between equal ends: give a
+/// full circle as two half-turns).
+struct RegionStep {
+  Point to;
+  double arc_radius = 0;  // 0: a straight step
+  double arc_span = 0;
+};
+
 struct Style {
   std::string fill = "none";
   std::string stroke = "#222";
@@ -29,6 +39,11 @@ class SvgCanvas {
   /// Several rings filled together with the even-odd rule (a region with holes).
   void rings(const std::vector<std::vector<Point>>& rings, const Style& style, const std::string& title = "");
   void polyline(const std::vector<Point>& pts, const Style& style, const std::string& title = "");
+  /// A closed region bounded by segments and circular arcs (real SVG arcs, not polygons):
+  /// from `start` through each step, closed back to `start` (left open if not `closed`:
+  /// a stroke only, e.g. one arc).
+  void region(const Point& start, const std::vector<RegionStep>& steps, const Style& style, const std::string& title = "",
+              bool closed = true);
   void segment(const Point& a, const Point& b, const Style& style, const std::string& title = "");
   void point(const Point& p, double radius_px, const Style& style, const std::string& title = "");
   void label(const Point& p, const std::string& text, double size_px = 12, const std::string& colour = "#222");
