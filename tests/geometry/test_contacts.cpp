@@ -7,8 +7,10 @@
 #include <preimage/geometry/generators.hpp>
 #include <preimage/geometry/queries.hpp>
 #include <preimage/geometry/random_point.hpp>
+#include <preimage/geometry/range_visibility.hpp>
 #include <preimage/geometry/visibility.hpp>
 #include <preimage/geometry/visibility_graph.hpp>
+#include <preimage/geometry/visibility_graphs.hpp>
 #include <preimage/scene/scene.hpp>
 
 #include "support/cgal_oracle.hpp"
@@ -217,4 +219,42 @@ TEST(Contacts, ShortestPathsMatchBruteForce) {
   EXPECT_TRUE(index.visible({4, 0.75}, {6, 1.25}));   // through (5, 1), between the diamonds on both sides
   EXPECT_FALSE(index.visible({4.5, 0}, {5.5, 2}));    // through (5, 1) but across both diamonds
   EXPECT_FALSE(visible(env, Point(4.5, 0), Point(5.5, 2)));
+}
+
+// Range-limited visibility and the vertex visibility graph where holes touch: membership
+// against brute force (|p - q| <= R and the segment in free space), at contact points too.
+TEST(Contacts, RangeVisibilityAndVertexGraphMatchBruteForce) {
+  std::mt19937_64 rng(77);
+  std::size_t samples = 0, at_contacts = 0, edges = 0;
+  for (const auto& [what, env] : contact_environments()) {
+    const VisibilityIndex index(env);
+    std::vector<Point> qs;
+    for (int i = 0; i < 4; ++i) qs.push_back(random_free_point(env, index, rng));
+    for (std::size_t v = 0; v < env.num_vertices(); ++v)
+      if (env.is_contact(v) && v < env.same_point_next(v)) qs.push_back(env.vertex(v)), ++at_contacts;
+    for (const Point& q : qs)
+      for (double R : {0.7, 1.9}) {
+        const auto r = range_visibility(index, q, R);
+        for (int k = 0; k < 60; ++k) {
+          const Point p = random_free_point(env, index, rng);
+          const bool in = CGAL::squared_distance(to_exact(p), to_exact(q)) <= ExactFT(R) * ExactFT(R) && visible(env, q, p);
+          EXPECT_EQ(r.contains(p), in) << what << ": q " << format_point(q) << " R " << R << " p " << format_point(p);
+          ++samples;
+        }
+      }
+    // Edges present iff the vertices see each other (two ids at one contact do).
+    const auto graph = vertex_visibility_graph(index, 2);
+    std::size_t g = 0;
+    for (std::uint32_t a = 0; a < env.num_vertices(); ++a)
+      for (std::uint32_t b = a + 1; b < env.num_vertices(); ++b) {
+        const bool listed = g < graph.size() && graph[g] == std::make_pair(a, b);
+        g += listed;
+        EXPECT_EQ(listed, visible(env, env.vertex(a), env.vertex(b))) << what << ": vertices " << a << ", " << b;
+        edges += listed;
+      }
+    EXPECT_EQ(g, graph.size()) << what;
+  }
+  EXPECT_GE(at_contacts, 20u);
+  EXPECT_GE(samples, 10000u);
+  EXPECT_GE(edges, 1000u);
 }
