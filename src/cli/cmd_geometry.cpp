@@ -71,16 +71,19 @@ void run_validate(const std::string& path, bool as_json) {
   else std::cout << text << "\n";
 }
 
-void run_import(const std::string& in, const std::string& from, const std::string& out) {
+void run_import(const std::string& in, const std::string& from, const std::string& out, bool merge_holes) {
   scene::Scene s;
+  const scene::ImportOptions options{merge_holes};
   if (from == "houseexpo") s = scene::import_houseexpo(in);
-  else if (from == "visilibity") s = scene::import_visilibity(in);
-  else if (from == "geojson") s = scene::import_geojson(in);
-  else if (from == "wkt") s = scene::import_wkt(in);
+  else if (from == "visilibity") s = scene::import_visilibity(in, options);
+  else if (from == "geojson") s = scene::import_geojson(in, options);
+  else if (from == "wkt") s = scene::import_wkt(in, options);
   else throw InputError("--from: unknown format '" + from + "' (expected houseexpo, visilibity, geojson or wkt)");
   scene::save_scene(s, out);
   const auto& env = s.require_environment();
-  std::cout << "wrote " << out << ": " << count_of(env.num_vertices(), "vertex", "vertices") << ", " << count_of(env.num_holes(), "obstacle") << "\n";
+  std::cout << "wrote " << out << ": " << count_of(env.num_vertices(), "vertex", "vertices") << ", " << count_of(env.num_holes(), "obstacle");
+  if (env.has_contacts()) std::cout << ", " << count_of(env.num_contacts(), "contact");
+  std::cout << "\n";
 }
 
 void run_render(const std::string& path, const std::string& out, bool triangulation) {
@@ -117,7 +120,11 @@ void add_geometry_commands(CLI::App& app) {
     cmd->add_option("file", *in, "Input file")->required();
     cmd->add_option("--from", *from, "Input format: houseexpo | visilibity | geojson | wkt")->required();
     cmd->add_option("-o,--output", *out, "Scene JSON to write")->required();
-    cmd->callback([=] { run_import(*in, *from, *out); });
+    auto merge = std::make_shared<bool>(false);
+    cmd->add_flag("--merge-holes", *merge,
+                  "Replace holes that overlap (share an edge, cross, nest) by their union, snapped to a power-of-two grid "
+                  "2^-49 of the largest coordinate (without it they are an error naming both; holes touching at a vertex are accepted either way)");
+    cmd->callback([=] { run_import(*in, *from, *out, *merge); });
   }
   {
     auto* cmd = app.add_subcommand("render", "Draw a scene to SVG");

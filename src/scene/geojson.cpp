@@ -35,7 +35,7 @@ geometry::Ring geojson_ring(const json& j, const std::string& source, const std:
 }
 
 // The polygon's coordinates member: [outer, hole, ...].
-Scene polygon_scene(const json& coords, const std::string& source, const std::string& path) {
+Scene polygon_scene(const json& coords, const std::string& source, const std::string& path, const ImportOptions& options) {
   if (!coords.is_array() || coords.empty()) geojson_fail(source, path, "expected an array of rings (boundary first)");
   geometry::Ring outer = geojson_ring(coords[0], source, path + "[0]");
   std::vector<geometry::Ring> holes;
@@ -45,6 +45,7 @@ Scene polygon_scene(const json& coords, const std::string& source, const std::st
   s.name = source;
   s.description = "GeoJSON polygon";
   try {
+    apply_import_options(holes, options);
     s.environment = geometry::Environment::make(std::move(outer), std::move(holes), path + "[0]", path + "[1+]");
   } catch (const InputError& e) {
     throw InputError(source + ": " + e.what());
@@ -52,12 +53,12 @@ Scene polygon_scene(const json& coords, const std::string& source, const std::st
   return s;
 }
 
-Scene geometry_scene(const json& g, const std::string& source, const std::string& path) {
+Scene geometry_scene(const json& g, const std::string& source, const std::string& path, const ImportOptions& options) {
   if (!g.is_object() || !g.contains("type") || !g["type"].is_string()) geojson_fail(source, path, "expected a GeoJSON object with a \"type\"");
   const std::string type = g["type"].get<std::string>();
   if (type == "Feature") {
     if (!g.contains("geometry") || g["geometry"].is_null()) geojson_fail(source, path + ".geometry", "the feature has no geometry");
-    Scene s = geometry_scene(g["geometry"], source, path + ".geometry");
+    Scene s = geometry_scene(g["geometry"], source, path + ".geometry", options);
     if (g.contains("properties") && g["properties"].is_object() && g["properties"].contains("name") && g["properties"]["name"].is_string())
       s.name = g["properties"]["name"].get<std::string>();
     return s;
@@ -66,16 +67,16 @@ Scene geometry_scene(const json& g, const std::string& source, const std::string
     if (!g.contains("features") || !g["features"].is_array()) geojson_fail(source, path + ".features", "expected an array of features");
     if (g["features"].size() != 1)
       geojson_fail(source, path + ".features", "expected exactly one feature (one floor plan), got " + std::to_string(g["features"].size()));
-    return geometry_scene(g["features"][0], source, path + ".features[0]");
+    return geometry_scene(g["features"][0], source, path + ".features[0]", options);
   }
   if (!g.contains("coordinates")) geojson_fail(source, path + ".coordinates", "missing");
-  if (type == "Polygon") return polygon_scene(g["coordinates"], source, path + ".coordinates");
+  if (type == "Polygon") return polygon_scene(g["coordinates"], source, path + ".coordinates", options);
   if (type == "MultiPolygon") {
     const auto& c = g["coordinates"];
     if (!c.is_array() || c.size() != 1)
       geojson_fail(source, path + ".coordinates", "expected a MultiPolygon of exactly one polygon, got " +
                                                       (c.is_array() ? std::to_string(c.size()) : std::string(c.type_name())));
-    return polygon_scene(c[0], source, path + ".coordinates[0]");
+    return polygon_scene(c[0], source, path + ".coordinates[0]", options);
   }
   geojson_fail(source, path + ".type", "expected Polygon, MultiPolygon, Feature or FeatureCollection, got \"" + type + "\"");
 }
@@ -88,11 +89,11 @@ json ring_json(const std::vector<geometry::Point>& ring) {
 }
 }  // namespace
 
-Scene import_geojson(const std::string& text, const std::string& source) {
-  return geometry_scene(parse_json(text, source), source, "$");
+Scene import_geojson(const std::string& text, const std::string& source, const ImportOptions& options) {
+  return geometry_scene(parse_json(text, source), source, "$", options);
 }
 
-Scene import_geojson(const std::string& path) { return import_geojson(read_file(path), path); }
+Scene import_geojson(const std::string& path, const ImportOptions& options) { return import_geojson(read_file(path), path, options); }
 
 GeoJsonWriter& GeoJsonWriter::polygon(const std::vector<std::vector<geometry::Point>>& rings, nlohmann::json properties) {
   nlohmann::json coords = nlohmann::json::array();

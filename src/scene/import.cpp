@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <preimage/scene/import.hpp>
 
+#include <preimage/geometry/hole_union.hpp>
+
 #include <preimage/error.hpp>
 
 #include <cmath>
@@ -40,7 +42,11 @@ Scene import_houseexpo(const std::string& text, const std::string& source) {
   return s;
 }
 
-Scene import_visilibity(const std::string& text, const std::string& source) {
+void apply_import_options(std::vector<geometry::Ring>& holes, const ImportOptions& options) {
+  if (options.merge_holes) holes = geometry::merge_overlapping_holes(holes).holes;
+}
+
+Scene import_visilibity(const std::string& text, const std::string& source, const ImportOptions& options) {
   std::vector<geometry::Ring> rings;
   std::vector<std::size_t> first_line;
   bool need_new = true;
@@ -72,6 +78,8 @@ Scene import_visilibity(const std::string& text, const std::string& source) {
   geometry::Ring outer = std::move(rings[0]);
   rings.erase(rings.begin());
   try {
+    if (options.merge_holes) first_line.resize(1);  // merged holes no longer match the file's polygons
+    apply_import_options(rings, options);
     s.environment = geometry::Environment::make(std::move(outer), std::move(rings), "outer boundary (line " +
                                                 std::to_string(first_line[0]) + ")", "holes");
   } catch (const InputError& e) {
@@ -89,6 +97,8 @@ Scene import_visilibity(const std::string& text, const std::string& source) {
 
 Scene import_houseexpo(const std::string& path) { return import_houseexpo(read_file(path), path); }
 
-Scene import_visilibity(const std::string& path) { return import_visilibity(read_file(path), path); }
+Scene import_visilibity(const std::string& path, const ImportOptions& options) {
+  return import_visilibity(read_file(path), path, options);
+}
 
 }  // namespace preimage::scene

@@ -12,7 +12,8 @@ namespace preimage::scene {
 namespace {
 class WktReader {
  public:
-  WktReader(const std::string& text, const std::string& source) : t_(text), source_(source) {}
+  WktReader(const std::string& text, const std::string& source, const ImportOptions& options)
+      : t_(text), source_(source), options_(options) {}
 
   Scene read() {
     const std::string tag = word();
@@ -40,6 +41,7 @@ class WktReader {
     geometry::Ring outer = std::move(rings[0]);
     rings.erase(rings.begin());
     try {
+      apply_import_options(rings, options_);
       s.environment = geometry::Environment::make(std::move(outer), std::move(rings), "ring 1 (boundary)", "holes");
     } catch (const InputError& e) {
       throw InputError(source_ + ": " + e.what());
@@ -116,12 +118,15 @@ class WktReader {
 
   const std::string& t_;
   const std::string& source_;
+  const ImportOptions options_;
   std::size_t pos_ = 0;
 };
 }  // namespace
 
-Scene import_wkt(const std::string& text, const std::string& source) { return WktReader(text, source).read(); }
+Scene import_wkt(const std::string& text, const std::string& source, const ImportOptions& options) {
+  return WktReader(text, source, options).read();
+}
 
-Scene import_wkt(const std::string& path) { return import_wkt(read_file(path), path); }
+Scene import_wkt(const std::string& path, const ImportOptions& options) { return import_wkt(read_file(path), path, options); }
 
 }  // namespace preimage::scene

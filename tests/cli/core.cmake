@@ -196,3 +196,7 @@ cli_test(visibility_graph_point_in_obstacle fail "in_obstacle\\.txt:3: point \\(
          visibility-graph ${EXAMPLES}/gallery.json --points ${FIX}/points/in_obstacle.txt)
 cli_test(visibility_graph_bad_token fail "bad_token\\.txt:3: expected 'x y' \\(two numbers\\), got 'zero'$" -
          visibility-graph ${EXAMPLES}/gallery.json --points ${FIX}/points/bad_token.txt)
+# Overlapping wall rectangles: an error naming both, or their union with --merge-holes (the
+# two that only touch at (7, 2) stay two obstacles with a contact).
+cli_test(import_overlapping_holes_rejected fail "holes.1. edge .* touches holes.0. edge" - import ${CONTACTS}/overlapping_walls.wkt --from wkt -o ${OUT}/overlapping_walls.json)
+cli_test(import_merge_holes 0 "wrote .*: 19 vertices, 3 obstacles, 1 contact" ${OUT}/merged_walls.json import ${CONTACTS}/overlapping_walls.wkt --from wkt --merge-holes -o ${OUT}/merged_walls.json)
