@@ -148,8 +148,8 @@ ExactPoint exact_of(const Point& q) { return to_exact(q); }
 const ExactPoint& exact_of(const ExactPoint& q) { return q; }
 }  // namespace
 
-template <class Q>
-VisibilityIndex::Located VisibilityIndex::locate_triangle(const Q& q, const Point& approx, bool name_outside) const {
+template <class Q, class Count>
+VisibilityIndex::Located VisibilityIndex::locate_triangle(const Q& q, const Point& approx, bool name_outside, Count count) const {
   const auto P = vertices_for(env_, &q);
   const auto& T = tri_.triangles();
   auto test = [&](std::uint32_t t) -> std::optional<Located> {
@@ -157,6 +157,7 @@ VisibilityIndex::Located VisibilityIndex::locate_triangle(const Q& q, const Poin
     int o[3];
     for (int i = 0; i < 3; ++i) {
       o[i] = orientation(P(tr.v[i]), P(tr.v[(i + 1) % 3]), q);
+      count();
       if (o[i] < 0) return std::nullopt;
     }
     for (int i = 0; i < 3; ++i)
@@ -189,6 +190,12 @@ VisibilityIndex::Located VisibilityIndex::locate_triangle(const Q& q, const Poin
 Location VisibilityIndex::locate(const Point& q) const { return locate_triangle(q, q).loc; }
 
 bool VisibilityIndex::in_free_space(const Point& q) const { return locate_triangle(q, q, false).tri != kNone; }
+
+std::size_t VisibilityIndex::locate_tests(const Point& q) const {
+  std::size_t n = 0;
+  locate_triangle(q, q, false, [&n] { ++n; });
+  return n;
+}
 
 // ---------------------------------------------------------------- expansion
 namespace {

@@ -66,6 +66,9 @@ class VisibilityIndex {
   Location locate(const Point& q) const;
   /// Whether q is in free space (open free space, an edge or a vertex): O(1) expected.
   bool in_free_space(const Point& q) const;
+  /// Diagnostic for benchmarks: the number of exact orientation tests locate(q) makes to
+  /// find q's triangle (the same code as locate, instantiated with a counter).
+  std::size_t locate_tests(const Point& q) const;
   /// V(q) for q in the interior, on an edge, or at a vertex; throws InputError if q is
   /// outside free space.
   VisibilityPolygon compute(const Point& q) const;
@@ -84,8 +87,11 @@ class VisibilityIndex {
 
  private:
   struct Located { Location loc; std::uint32_t tri; int slot; };
-  template <class Q>
-  Located locate_triangle(const Q& q, const Point& approx, bool name_outside = true) const;
+  struct NoCount {
+    void operator()() const {}
+  };
+  template <class Q, class Count = NoCount>
+  Located locate_triangle(const Q& q, const Point& approx, bool name_outside = true, Count count = {}) const;
   template <class Q>
   VisibilityPolygon compute_at(const Q& q, const Point& approx) const;
   template <class OnVertex>
