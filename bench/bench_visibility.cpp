@@ -5,11 +5,15 @@
 //
 // Per map:
 //   locate/<map>                    point location alone (counter tests_per_locate)
-//   compute/preimage/<map>          V(q) with double coordinates, by value
-//   compute/reference/<map>         CGAL TE (its face located outside the loop)
+//   abstract/preimage/<map>         compute_abstract into a reused polygon: ids only
+//   compute/preimage/<map>          compute(q, out) into a reused polygon, with coordinates
+//   compute-by-value/<map>          compute(q), a new polygon per query
+//   {abstract,compute}/reference    CGAL TE (its face located outside the loop)
 //   compute+exact-points/preimage   ... plus every vertex's lazy-exact coordinates
-// Counters: allocs_per_query (global operator new in this binary), preprocess_ms (building
-// the index, once), vertices, out_vertices.
+//   batch-{1,2}-threads/<map>       compute_many over the map's 500 queries (real time)
+// Breakdown per query: locate = locate/, expand = abstract - locate, output = compute -
+// abstract. Counters: allocs_per_query (global operator new in this binary, steady state),
+// preprocess_ms (building the index, once), vertices, out_vertices.
 #if defined(__GNUC__) && !defined(__clang__)
 // The counting operator new/delete below pair malloc with free; GCC sees CGAL's inlined
 // new/delete through them and warns of a mismatch that is not one.
@@ -118,7 +122,7 @@ void bm_locate(benchmark::State& state, const std::string& name) {
   state.counters["tests_per_locate"] = static_cast<double>(tests) / static_cast<double>(c.queries.size());
 }
 
-void bm_compute(benchmark::State& state, const std::string& name) {
+void bm_compute_by_value(benchmark::State& state, const std::string& name) {
   Case& c = get_case(name);
   if (!c.identical) state.SkipWithError("outputs differ from CGAL");
   std::size_t i = 0, verts = 0;
@@ -130,6 +134,36 @@ void bm_compute(benchmark::State& state, const std::string& name) {
   }
   common_counters(state, c, g_allocations.load() - a0, i);
   state.counters["out_vertices"] = static_cast<double>(verts) / static_cast<double>(std::max<std::size_t>(1, i));
+}
+
+// Into one reused polygon; one pass over the queries first, so the output's and this
+// thread's scratch capacity are grown and allocs_per_query is the steady state.
+void bm_compute_reused(benchmark::State& state, const std::string& name, bool abstract) {
+  Case& c = get_case(name);
+  if (!c.identical) state.SkipWithError("outputs differ from CGAL");
+  VisibilityPolygon out;
+  for (const auto& q : c.queries) abstract ? c.ours->compute_abstract(q.p, out) : c.ours->compute(q.p, out);
+  std::size_t i = 0;
+  const std::size_t a0 = g_allocations.load();
+  for (auto _ : state) {
+    const Point& q = c.queries[i++ % c.queries.size()].p;
+    if (abstract) c.ours->compute_abstract(q, out);
+    else c.ours->compute(q, out);
+    benchmark::DoNotOptimize(out.vertices.data());
+    benchmark::ClobberMemory();
+  }
+  common_counters(state, c, g_allocations.load() - a0, i);
+}
+
+void bm_batch(benchmark::State& state, const std::string& name, unsigned threads) {
+  Case& c = get_case(name);
+  std::vector<Point> qs;
+  for (const auto& q : c.queries) qs.push_back(q.p);
+  for (auto _ : state) {
+    auto all = c.ours->compute_many(qs, threads);
+    benchmark::DoNotOptimize(all.data());
+  }
+  state.counters["queries"] = static_cast<double>(qs.size());
 }
 
 void bm_compute_exact_points(benchmark::State& state, const std::string& name) {
@@ -159,14 +193,21 @@ void bm_reference(benchmark::State& state, const std::string& name) {
 }
 
 void register_all() {
+  auto reg = [](const char* what, auto fn, const std::string& name, auto... extra) {
+    return benchmark::RegisterBenchmark(std::string(what).append(name).c_str(), fn, name, extra...)
+        ->Unit(benchmark::kMicrosecond);
+  };
   for (const auto& [name, make] : maps()) {
-    benchmark::RegisterBenchmark(std::string("locate/").append(name).c_str(), bm_locate, name)->Unit(benchmark::kMicrosecond);
-    benchmark::RegisterBenchmark(std::string("compute/preimage/").append(name).c_str(), bm_compute, name)->Unit(benchmark::kMicrosecond);
-    benchmark::RegisterBenchmark(std::string("compute/reference/").append(name).c_str(), bm_reference, name)->Unit(benchmark::kMicrosecond);
-    benchmark::RegisterBenchmark(std::string("compute+exact-points/preimage/").append(name).c_str(), bm_compute_exact_points, name)
-        ->Unit(benchmark::kMicrosecond);
-    benchmark::RegisterBenchmark(std::string("compute+exact-points/reference/").append(name).c_str(), bm_reference, name)
-        ->Unit(benchmark::kMicrosecond);
+    reg("locate/", bm_locate, name);
+    reg("abstract/preimage/", bm_compute_reused, name, true);
+    reg("abstract/reference/", bm_reference, name);
+    reg("compute/preimage/", bm_compute_reused, name, false);
+    reg("compute/reference/", bm_reference, name);
+    reg("compute-by-value/", bm_compute_by_value, name);
+    reg("compute+exact-points/preimage/", bm_compute_exact_points, name);
+    reg("compute+exact-points/reference/", bm_reference, name);
+    reg("batch-1-thread/", bm_batch, name, 1u)->UseRealTime();
+    reg("batch-2-threads/", bm_batch, name, 2u)->UseRealTime();
   }
 }
 

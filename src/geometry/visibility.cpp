@@ -167,8 +167,8 @@ VisibilityIndex::VisibilityIndex(const Environment& env) : env_(&env), tri_(env)
   const double w = std::max(box.xmax() - box.xmin(), 1e-300), h = std::max(box.ymax() - box.ymin(), 1e-300);
   const double cells = std::max<double>(1.0, 2.0 * static_cast<double>(T.size()));
   const double aspect = w / h;
-  gx_ = static_cast<std::uint32_t>(std::clamp(std::sqrt(cells * aspect), 1.0, 65536.0));
-  gy_ = static_cast<std::uint32_t>(std::clamp(cells / gx_, 1.0, 65536.0));
+  gx_ = static_cast<std::uint32_t>(std::clamp(std::sqrt(cells * aspect), 1.0, 4096.0));
+  gy_ = static_cast<std::uint32_t>(std::clamp(cells / gx_, 1.0, 4096.0));
   cw_ = w / gx_, ch_ = h / gy_;
   // Cell bounds consistent with cell_x / cell_y: xs[i] is the least double that cell_x maps
   // to i or beyond (cell_x is monotone), so every double point that cell_x, cell_y map to
@@ -206,13 +206,6 @@ VisibilityIndex::VisibilityIndex(const Environment& env) : env_(&env), tri_(env)
     while (bi1 + 1 < gx_ && xs[bi1 + 1] <= xhi) ++bi1;
     while (bj0 > 0 && ys[bj0] >= ylo) --bj0;
     while (bj1 + 1 < gy_ && ys[bj1 + 1] <= yhi) ++bj1;
-    auto file = [&](std::uint32_t i, std::uint32_t j) {
-      if (!vis_triangle_meets_box(V, xs[i], ys[j], xs[i + 1], ys[j + 1])) return false;
-      const bool inside = vis_box_inside_triangle(V, xs[i], ys[j], xs[i + 1], ys[j + 1]);
-      entries.push_back({j * gx_ + i, inside ? t | kInsideCell : t,
-                         inside ? std::numeric_limits<double>::infinity() : vis_clipped_area(V, xs[i], ys[j], xs[i + 1], ys[j + 1])});
-      return true;
-    };
     for (std::uint32_t j = bj0; j <= bj1; ++j) {
       // The cells of a row that the triangle meets are consecutive (the triangle's part in
       // the row's slab is convex). Guess them from the x-extent of that part in doubles,
@@ -235,16 +228,29 @@ VisibilityIndex::VisibilityIndex(const Environment& env) : env_(&env), tri_(env)
         g0 = std::clamp(cell_x(exlo), bi0, bi1), g1 = std::clamp(cell_x(exhi), bi0, bi1);
         g0 = g0 > bi0 ? g0 - 1 : g0, g1 = g1 < bi1 ? g1 + 1 : g1;
       }
+      // Find the first and last cells meeting the triangle (exact tests); every cell
+      // between them meets it too (convexity), and only needs its inside test and area.
       std::uint32_t first = kNone, last = kNone;
-      for (std::uint32_t i = g0; i <= g1; ++i)
-        if (file(i, j)) first = std::min(first, i), last = i;
-      if (first == kNone) {
-        for (std::uint32_t i = bi0; i <= bi1; ++i)
-          if ((i < g0 || i > g1) && file(i, j)) first = std::min(first, i), last = i;
-        continue;
+      for (std::uint32_t i = g0; i <= g1 && first == kNone; ++i)
+        if (vis_triangle_meets_box(V, xs[i], ys[j], xs[i + 1], ys[j + 1])) first = i;
+      for (std::uint32_t i = bi0; i <= bi1 && first == kNone; ++i)  // the guess held none
+        if (vis_triangle_meets_box(V, xs[i], ys[j], xs[i + 1], ys[j + 1])) first = i;
+      if (first == kNone) continue;
+      while (first > bi0 && vis_triangle_meets_box(V, xs[first - 1], ys[j], xs[first], ys[j + 1])) --first;
+      last = std::max(first, g1);
+      while (last > first && !vis_triangle_meets_box(V, xs[last], ys[j], xs[last + 1], ys[j + 1])) --last;
+      while (last < bi1 && vis_triangle_meets_box(V, xs[last + 1], ys[j], xs[last + 2], ys[j + 1])) ++last;
+      // Long runs (thin triangles across many cells): one clipped area for the run, shared
+      // out, instead of one per cell (the area only orders the lists).
+      const std::uint32_t run = last - first + 1;
+      const double shared = run > 4 ? vis_clipped_area(V, xs[first], ys[j], xs[last + 1], ys[j + 1]) / run : 0;
+      for (std::uint32_t i = first; i <= last; ++i) {
+        const bool inside = vis_box_inside_triangle(V, xs[i], ys[j], xs[i + 1], ys[j + 1]);
+        const double area = inside ? std::numeric_limits<double>::infinity()
+                            : run > 4 ? shared
+                                      : vis_clipped_area(V, xs[i], ys[j], xs[i + 1], ys[j + 1]);
+        entries.push_back({j * gx_ + i, inside ? t | kInsideCell : t, area});
       }
-      while (first > bi0 && file(first - 1, j)) --first;
-      while (last < bi1 && file(last + 1, j)) ++last;
     }
   }
   std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
@@ -435,41 +441,67 @@ void VisibilityIndex::compute_at(const Q& q, const Point& approx, VisibilityPoly
   auto sym_hit = [](std::uint32_t through, std::uint32_t e) { return Sym{VisibilityVertex::Kind::RayHit, through, e}; };
   const Sym sym_query{VisibilityVertex::Kind::Query, kNone, kNone};
 
-  VisScratch& scratch = vis_scratch();
-  std::vector<Piece>& pieces = scratch.pieces;
-  std::vector<VisItem>& stack = scratch.stack;
-  pieces.clear();
-  stack.clear();
+  // This thread's scratch, moved into locals for the query (the hot loop then keeps the
+  // vectors' pointers in registers across predicate calls) and handed back at the end.
+  struct Borrow {
+    VisScratch& home;
+    std::vector<Piece> pieces;
+    std::vector<VisItem> stack;
+    explicit Borrow(VisScratch& h) : home(h), pieces(std::move(h.pieces)), stack(std::move(h.stack)) {
+      pieces.clear();
+    }
+    ~Borrow() { home.pieces = std::move(pieces), home.stack = std::move(stack); }
+    Borrow(const Borrow&) = delete;
+    Borrow& operator=(const Borrow&) = delete;
+  } borrow(vis_scratch());
+  std::vector<Piece>& pieces = borrow.pieces;
+  // The work stack as a bare array over the scratch vector's storage: a push is a store and
+  // an increment (growth, rare, out of the loop's way); vector::push_back was left out of
+  // line here and cost a call per step.
+  std::vector<VisItem>& stack_store = borrow.stack;
+  if (stack_store.size() < 64) stack_store.resize(64);
+  VisItem* stack = stack_store.data();
+  std::size_t top = 0;
+  auto push = [&](VisItem item) {
+    if (top == stack_store.size()) [[unlikely]] {
+      stack_store.resize(2 * top);
+      stack = stack_store.data();
+    }
+    stack[top++] = item;
+  };
   auto run = [&](std::uint32_t t0, int s0, std::uint32_t R0, std::uint32_t L0) {
-    stack.push_back({t0, s0, R0, L0});
-    while (!stack.empty()) {
-      VisItem it = stack.back();
-      stack.pop_back();
-      const Triangle& tr = T[it.t];
-      const std::uint32_t r = tr.v[it.slot], l = tr.v[(it.slot + 1) % 3];
-      if (tr.nbr[it.slot] == kNone) {  // boundary: emit the visible piece of this edge
-        const std::uint32_t e = tr.edge[it.slot];
-        Piece pc{e, it.R, it.L, {}, {}};
-        pc.start = (it.R == r || orientation(q, Pq(it.R), Pq(r)) == 0) ? sym_vertex(r) : sym_hit(it.R, e);
-        pc.end = (it.L == l || orientation(q, Pq(it.L), Pq(l)) == 0) ? sym_vertex(l) : sym_hit(it.L, e);
-        pieces.push_back(pc);
-        continue;
-      }
-      const std::uint32_t u = tr.nbr[it.slot];
-      const Triangle& nt = T[u];
-      int j = 0;
-      while (nt.v[j] != l) ++j;  // entry edge in u runs l -> r
-      const std::uint32_t c = nt.v[(j + 2) % 3];
-      const int right_slot = (j + 1) % 3, left_slot = (j + 2) % 3;  // (r, c) and (c, l)
-      const int cr = orientation(q, Pq(it.R), Pq(c));
-      const int cl = orientation(q, Pq(it.L), Pq(c));
-      if (cr <= 0) {
-        stack.push_back({u, left_slot, it.R, it.L});
-      } else if (cl >= 0) {
-        stack.push_back({u, right_slot, it.R, it.L});
-      } else {  // c splits the cone; right part first (counter-clockwise output)
-        stack.push_back({u, left_slot, c, it.L});
-        stack.push_back({u, right_slot, it.R, c});
+    push({t0, s0, R0, L0});
+    while (top > 0) {
+      VisItem it = stack[--top];
+      // Follow one cone across triangles; a split pushes its left part and goes on with
+      // the right one (the order of the pieces is that of a plain stack).
+      while (true) {
+        const Triangle& tr = T[it.t];
+        const std::uint32_t r = tr.v[it.slot], l = tr.v[(it.slot + 1) % 3];
+        if (tr.nbr[it.slot] == kNone) {  // boundary: emit the visible piece of this edge
+          const std::uint32_t e = tr.edge[it.slot];
+          Piece pc{e, it.R, it.L, {}, {}};
+          pc.start = (it.R == r || orientation(q, Pq(it.R), Pq(r)) == 0) ? sym_vertex(r) : sym_hit(it.R, e);
+          pc.end = (it.L == l || orientation(q, Pq(it.L), Pq(l)) == 0) ? sym_vertex(l) : sym_hit(it.L, e);
+          pieces.push_back(pc);
+          break;
+        }
+        const std::uint32_t u = tr.nbr[it.slot];
+        const Triangle& nt = T[u];
+        int j = 0;
+        while (nt.v[j] != l) ++j;  // entry edge in u runs l -> r
+        const std::uint32_t c = nt.v[(j + 2) % 3];
+        const int right_slot = (j + 1) % 3, left_slot = (j + 2) % 3;  // (r, c) and (c, l)
+        const int cr = orientation(q, Pq(it.R), Pq(c));
+        const int cl = orientation(q, Pq(it.L), Pq(c));
+        if (cr <= 0) {
+          it = {u, left_slot, it.R, it.L};
+        } else if (cl >= 0) {
+          it = {u, right_slot, it.R, it.L};
+        } else {  // c splits the cone; right part first (counter-clockwise output)
+          push({u, left_slot, c, it.L});
+          it = {u, right_slot, it.R, c};
+        }
       }
     }
   };
