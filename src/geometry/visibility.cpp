@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <exception>
 #include <limits>
@@ -176,19 +177,27 @@ VisibilityIndex::VisibilityIndex(const Environment& env) : env_(&env), tri_(env)
   // environment's bounding box, which holds every triangle). Filing a triangle in every
   // cell whose box it meets (exactly) then makes the cell of any double point in free
   // space list the triangle holding it: no widening, no rounding to guard against.
-  auto bounds = [](std::uint32_t g, double lo, double hi, double step, auto&& index) {
+  auto bounds = [](std::uint32_t g, double lo, double hi, auto&& index) {
+    // Bisection over the doubles in their order (as 64-bit keys): 64 steps per bound.
+    auto key = [](double x) {
+      const auto u = std::bit_cast<std::uint64_t>(x);
+      return u >> 63 ? ~u : u | (std::uint64_t(1) << 63);
+    };
+    auto value = [](std::uint64_t k) { return std::bit_cast<double>(k >> 63 ? k & ~(std::uint64_t(1) << 63) : ~k); };
     std::vector<double> b(g + 1);
     b[0] = lo, b[g] = hi;
     for (std::uint32_t i = 1; i < g; ++i) {
-      double x = lo + static_cast<double>(i) * step;
-      while (index(x) >= i) x = std::nextafter(x, -std::numeric_limits<double>::infinity());
-      while (index(x) < i) x = std::nextafter(x, std::numeric_limits<double>::infinity());
-      b[i] = std::clamp(x, lo, hi);
+      std::uint64_t a = key(lo), c = key(hi);  // index(lo) = 0 < i <= g - 1 = index(hi)
+      while (c - a > 1) {
+        const std::uint64_t m = a + (c - a) / 2;
+        (index(value(m)) >= i ? c : a) = m;
+      }
+      b[i] = value(c);  // the least double with index >= i
     }
     return b;
   };
-  const std::vector<double> xs = bounds(gx_, box.xmin(), box.xmax(), cw_, [this](double x) { return cell_x(x); });
-  const std::vector<double> ys = bounds(gy_, box.ymin(), box.ymax(), ch_, [this](double y) { return cell_y(y); });
+  const std::vector<double> xs = bounds(gx_, box.xmin(), box.xmax(), [this](double x) { return cell_x(x); });
+  const std::vector<double> ys = bounds(gy_, box.ymin(), box.ymax(), [this](double y) { return cell_y(y); });
 
   struct Entry {
     std::uint32_t cell, tri;

@@ -90,6 +90,8 @@ std::vector<std::pair<std::string, Environment>> vis_environments() {
   envs.emplace_back("snapped 300 / 4 holes", preimage::testing::snapped_random_environment(300, 4, 13));
   envs.emplace_back("office 4x3", generators::office(4, 3));
   envs.emplace_back("comb 60", Environment::make(generators::comb(60), {}));
+  // Around the origin: grid-cell bounds on both sides of 0 (the doubles are densest there).
+  envs.emplace_back("star 40 around (0, 0)", Environment::make(generators::star(40), {}));
   envs.emplace_back("houseexpo 0000", vis_houseexpo("house_expo_room_0000.json"));
   envs.emplace_back("houseexpo 1451", vis_houseexpo("house_expo_room_1451.json"));
   return envs;
