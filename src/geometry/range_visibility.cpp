@@ -81,7 +81,7 @@ RangeVisibility limit_range(VisibilityPolygon polygon, double range) {
   out.range = range;
   const VisibilityPolygon& V = out.polygon;
   const std::size_t n = V.vertices.size();
-  const ExactPoint& q = V.exact_query;
+  const ExactPoint q = V.exact_query();
   const ExactFT r2 = ExactFT(range) * ExactFT(range);
   const Point qd = V.query;
 
@@ -167,7 +167,7 @@ double crossing_parameter(const RangeVisibility& r, const RangePoint& p) {
   if (p.kind != RangePoint::Kind::Crossing) throw std::invalid_argument("crossing_parameter: not a circle crossing");
   const auto& V = r.polygon;
   const std::size_t n = V.vertices.size();
-  const EdgeQuadratic g = edge_quadratic(V.exact(p.edge), V.exact((p.edge + 1) % n), V.exact_query, ExactFT(r.range) * ExactFT(r.range));
+  const EdgeQuadratic g = edge_quadratic(V.exact(p.edge), V.exact((p.edge + 1) % n), V.exact_query(), ExactFT(r.range) * ExactFT(r.range));
   const auto [lo, hi] = quadratic_roots(g);
   return std::clamp(p.entering ? lo : hi, 0.0, 1.0);
 }
@@ -189,7 +189,7 @@ double RangeVisibility::area() const {
 
 bool RangeVisibility::contains(const Point& p) const {
   const ExactPoint e = to_exact(p);
-  if (CGAL::compare(CGAL::squared_distance(e, polygon.exact_query), ExactFT(range) * ExactFT(range)) == CGAL::LARGER) return false;
+  if (CGAL::compare(CGAL::squared_distance(e, polygon.exact_query()), ExactFT(range) * ExactFT(range)) == CGAL::LARGER) return false;
   const auto pts = polygon.points();
   return CGAL::bounded_side_2(pts.begin(), pts.end(), e, ExactKernel()) != CGAL::ON_UNBOUNDED_SIDE;
 }

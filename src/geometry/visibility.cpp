@@ -4,10 +4,15 @@
 #include <preimage/error.hpp>
 
 #include <algorithm>
+#include <atomic>
+#include <bit>
 #include <cmath>
+#include <exception>
 #include <limits>
+#include <mutex>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 namespace preimage::geometry {
 
@@ -24,9 +29,28 @@ ExactPoint exact_vertex(const Environment* environment, const ExactPoint& query,
   const auto hit = CGAL::intersection(ray, environment->exact_edge_line(v.edge));
   return *boost::get<ExactPoint>(&*hit);
 }
+
+// Double rounding of a visibility vertex seen from o, for drawing only; decisions never read it.
+Point approx_vertex(const Environment& E, const Point& o, const VisibilityVertex& v) {
+  switch (v.kind) {
+    case VisibilityVertex::Kind::EnvironmentVertex: return E.vertex(v.vertex);
+    case VisibilityVertex::Kind::Query: return o;
+    case VisibilityVertex::Kind::RayHit: break;
+  }
+  const Point &w = E.vertex(v.vertex), &a = E.vertex(v.edge), &b = E.vertex(E.next(v.edge));
+  const double dx = w.x() - o.x(), dy = w.y() - o.y(), ex = b.x() - a.x(), ey = b.y() - a.y();
+  const double s = ((a.x() - o.x()) * ey - (a.y() - o.y()) * ex) / (dx * ey - dy * ex);
+  return Point(o.x() + s * dx, o.y() + s * dy);
+}
 }  // namespace
 
-ExactPoint VisibilityPolygon::exact(std::size_t i) const { return exact_vertex(environment, exact_query, vertices[i]); }
+ExactPoint VisibilityPolygon::exact_query() const { return constructed_query ? *constructed_query : to_exact(query); }
+
+ExactPoint VisibilityPolygon::exact(std::size_t i) const {
+  const auto& v = vertices[i];
+  if (v.kind == VisibilityVertex::Kind::EnvironmentVertex) return environment->exact_vertex(v.vertex);
+  return exact_vertex(environment, exact_query(), v);
+}
 
 ExactPoint exact_point(const Environment& env, const ExactPoint& query, const VisibilityVertex& v) {
   return exact_vertex(&env, query, v);
@@ -35,15 +59,20 @@ ExactPoint exact_point(const Environment& env, const ExactPoint& query, const Vi
 std::vector<ExactPoint> VisibilityPolygon::points() const {
   std::vector<ExactPoint> out;
   out.reserve(vertices.size());
-  for (std::size_t i = 0; i < vertices.size(); ++i) out.push_back(exact(i));
+  const ExactPoint q = exact_query();  // built once for all ray hits
+  for (const auto& v : vertices) out.push_back(exact_vertex(environment, q, v));
   return out;
+}
+
+Point VisibilityPolygon::approx_point(std::size_t i) const {
+  return abstract ? approx_vertex(*environment, query, vertices[i]) : vertices[i].approx;
 }
 
 double VisibilityPolygon::area() const {
   double twice = 0;
   const std::size_t n = vertices.size();
   for (std::size_t i = 0; i < n; ++i) {
-    const Point &a = vertices[i].approx, &b = vertices[(i + 1) % n].approx;
+    const Point a = approx_point(i), b = approx_point((i + 1) % n);
     twice += a.x() * b.y() - b.x() * a.y();
   }
   return twice / 2;
@@ -74,63 +103,177 @@ std::vector<ExactPoint> canonical_cycle(std::vector<ExactPoint> pts) {
 }
 
 // ---------------------------------------------------------------- preprocessing
+namespace {
+// Exact: does the closed triangle V meet the closed box [x0, x1] x [y0, y1]? Separating
+// axes of two convex sets: the box's (bounding boxes) and the triangle's edge normals (all
+// four corners strictly right of a counter-clockwise edge). Corners are doubles, so every
+// test is an exact comparison or orientation.
+bool vis_triangle_meets_box(const Point* const V[3], double x0, double y0, double x1, double y1) {
+  if (std::max({V[0]->x(), V[1]->x(), V[2]->x()}) < x0 || std::min({V[0]->x(), V[1]->x(), V[2]->x()}) > x1 ||
+      std::max({V[0]->y(), V[1]->y(), V[2]->y()}) < y0 || std::min({V[0]->y(), V[1]->y(), V[2]->y()}) > y1)
+    return false;
+  const Point c[4] = {Point(x0, y0), Point(x1, y0), Point(x1, y1), Point(x0, y1)};
+  for (int e = 0; e < 3; ++e) {
+    int right = 0;
+    for (const Point& p : c) right += orientation(*V[e], *V[(e + 1) % 3], p) < 0;
+    if (right == 4) return false;
+  }
+  return true;
+}
+// Exact: is the closed box inside the open triangle (every corner strictly left of every edge)?
+bool vis_box_inside_triangle(const Point* const V[3], double x0, double y0, double x1, double y1) {
+  const Point c[4] = {Point(x0, y0), Point(x1, y0), Point(x1, y1), Point(x0, y1)};
+  for (int e = 0; e < 3; ++e)
+    for (const Point& p : c)
+      if (orientation(*V[e], *V[(e + 1) % 3], p) <= 0) return false;
+  return true;
+}
+// Area of the triangle clipped to the box, in doubles (Sutherland-Hodgman): only orders a
+// cell's list, never decides anything.
+double vis_clipped_area(const Point* const V[3], double x0, double y0, double x1, double y1) {
+  double px[10], py[10], qx[10], qy[10];
+  int n = 3;
+  for (int i = 0; i < 3; ++i) px[i] = V[i]->x(), py[i] = V[i]->y();
+  for (int side = 0; side < 4 && n > 0; ++side) {
+    auto value = [&](double x, double y) {  // >= 0 inside this side's half-plane
+      switch (side) {
+        case 0: return x - x0;
+        case 1: return x1 - x;
+        case 2: return y - y0;
+        default: return y1 - y;
+      }
+    };
+    int m = 0;
+    for (int i = 0; i < n; ++i) {
+      const int k = (i + 1) % n;
+      const double a = value(px[i], py[i]), b = value(px[k], py[k]);
+      if (a >= 0) qx[m] = px[i], qy[m] = py[i], ++m;
+      if ((a >= 0) != (b >= 0) && m < 10) {
+        const double t = a / (a - b);
+        qx[m] = px[i] + t * (px[k] - px[i]), qy[m] = py[i] + t * (py[k] - py[i]), ++m;
+      }
+    }
+    n = std::min(m, 9);
+    std::copy(qx, qx + n, px), std::copy(qy, qy + n, py);
+  }
+  double twice = 0;
+  for (int i = 0; i < n; ++i) twice += px[i] * py[(i + 1) % n] - px[(i + 1) % n] * py[i];
+  return std::abs(twice) / 2;
+}
+}  // namespace
+
 VisibilityIndex::VisibilityIndex(const Environment& env) : env_(&env), tri_(env) {
   const auto& P = env.vertices();
   const auto& T = tri_.triangles();
   CGAL::Bbox_2 box = env.bbox();
   x0_ = box.xmin(), y0_ = box.ymin();
   const double w = std::max(box.xmax() - box.xmin(), 1e-300), h = std::max(box.ymax() - box.ymin(), 1e-300);
-  const double cells = std::max<double>(1.0, static_cast<double>(T.size()));
+  const double cells = std::max<double>(1.0, 2.0 * static_cast<double>(T.size()));
   const double aspect = w / h;
   gx_ = static_cast<std::uint32_t>(std::clamp(std::sqrt(cells * aspect), 1.0, 4096.0));
   gy_ = static_cast<std::uint32_t>(std::clamp(cells / gx_, 1.0, 4096.0));
   cw_ = w / gx_, ch_ = h / gy_;
-  auto cx = [&](double x) { return std::min<std::uint32_t>(gx_ - 1, static_cast<std::uint32_t>(std::max(0.0, (x - x0_) / cw_))); };
-  auto cy = [&](double y) { return std::min<std::uint32_t>(gy_ - 1, static_cast<std::uint32_t>(std::max(0.0, (y - y0_) / ch_))); };
-  // Two passes (count, fill) into a CSR layout. A triangle goes into the cells its rows
-  // cross, not its whole bounding box (long thin triangles, as a circle's or a square with
-  // collinear sides has, made the boxes' cells gigabytes). Rows and cells are widened by
-  // one on each side so rounding in a cell index can never lose a triangle; the
-  // containment test itself is exact.
-  cell_off_.assign(std::size_t(gx_) * gy_ + 1, 0);
-  for (int pass = 0; pass < 2; ++pass) {
-    std::vector<std::uint32_t> fill;
-    if (pass == 1) {
-      for (std::size_t i = 1; i < cell_off_.size(); ++i) cell_off_[i] += cell_off_[i - 1];
-      cell_tris_.resize(cell_off_.back());
-      fill.assign(cell_off_.begin(), cell_off_.end() - 1);
+  // Cell bounds consistent with cell_x / cell_y: xs[i] is the least double that cell_x maps
+  // to i or beyond (cell_x is monotone), so every double point that cell_x, cell_y map to
+  // (i, j) lies in the closed box [xs[i], xs[i+1]] x [ys[j], ys[j+1]] (clipped to the
+  // environment's bounding box, which holds every triangle). Filing a triangle in every
+  // cell whose box it meets (exactly) then makes the cell of any double point in free
+  // space list the triangle holding it: no widening, no rounding to guard against.
+  auto bounds = [](std::uint32_t g, double lo, double hi, auto&& index) {
+    // Bisection over the doubles in their order (as 64-bit keys): 64 steps per bound.
+    auto key = [](double x) {
+      const auto u = std::bit_cast<std::uint64_t>(x);
+      return u >> 63 ? ~u : u | (std::uint64_t(1) << 63);
+    };
+    auto value = [](std::uint64_t k) { return std::bit_cast<double>(k >> 63 ? k & ~(std::uint64_t(1) << 63) : ~k); };
+    std::vector<double> b(g + 1);
+    b[0] = lo, b[g] = hi;
+    for (std::uint32_t i = 1; i < g; ++i) {
+      std::uint64_t a = key(lo), c = key(hi);  // index(lo) = 0 < i <= g - 1 = index(hi)
+      while (c - a > 1) {
+        const std::uint64_t m = a + (c - a) / 2;
+        (index(value(m)) >= i ? c : a) = m;
+      }
+      b[i] = value(c);  // the least double with index >= i
     }
-    for (std::uint32_t t = 0; t < T.size(); ++t) {
-      const Point* V[3] = {&P[T[t].v[0]], &P[T[t].v[1]], &P[T[t].v[2]]};
-      const double ylo = std::min({V[0]->y(), V[1]->y(), V[2]->y()}), yhi = std::max({V[0]->y(), V[1]->y(), V[2]->y()});
-      std::uint32_t j0 = cy(ylo), j1 = cy(yhi);
-      j0 = j0 ? j0 - 1 : 0, j1 = std::min(gy_ - 1, j1 + 1);
-      for (std::uint32_t j = j0; j <= j1; ++j) {
-        // x-extent of the triangle within rows j - 1 .. j + 1 (a slab three rows tall).
-        const double sa = std::max(ylo, y0_ + (static_cast<double>(j) - 1) * ch_);
-        const double sb = std::min(yhi, y0_ + (static_cast<double>(j) + 2) * ch_);
-        double xlo = std::numeric_limits<double>::infinity(), xhi = -xlo;
-        for (int e = 0; e < 3; ++e) {
-          const Point &p = *V[e], &q = *V[(e + 1) % 3];
-          const double lo = std::max(sa, std::min(p.y(), q.y())), hi = std::min(sb, std::max(p.y(), q.y()));
-          if (lo > hi) continue;
-          for (double y : {lo, hi}) {
-            const double x = p.y() == q.y() ? p.x() : p.x() + (q.x() - p.x()) * ((y - p.y()) / (q.y() - p.y()));
-            xlo = std::min(xlo, x), xhi = std::max(xhi, x);
-          }
-          if (p.y() == q.y()) xlo = std::min(xlo, q.x()), xhi = std::max(xhi, q.x());
+    return b;
+  };
+  const std::vector<double> xs = bounds(gx_, box.xmin(), box.xmax(), [this](double x) { return cell_x(x); });
+  const std::vector<double> ys = bounds(gy_, box.ymin(), box.ymax(), [this](double y) { return cell_y(y); });
+
+  struct Entry {
+    std::uint32_t cell, tri;
+    double area;
+  };
+  std::vector<Entry> entries;
+  entries.reserve(4 * T.size());
+  for (std::uint32_t t = 0; t < T.size(); ++t) {
+    const Point* const V[3] = {&P[T[t].v[0]], &P[T[t].v[1]], &P[T[t].v[2]]};
+    const double xlo = std::min({V[0]->x(), V[1]->x(), V[2]->x()}), xhi = std::max({V[0]->x(), V[1]->x(), V[2]->x()});
+    const double ylo = std::min({V[0]->y(), V[1]->y(), V[2]->y()}), yhi = std::max({V[0]->y(), V[1]->y(), V[2]->y()});
+    // Cells whose closed boxes meet the bounding box (exact comparisons of doubles).
+    std::uint32_t bi0 = cell_x(xlo), bi1 = cell_x(xhi), bj0 = cell_y(ylo), bj1 = cell_y(yhi);
+    while (bi0 > 0 && xs[bi0] >= xlo) --bi0;
+    while (bi1 + 1 < gx_ && xs[bi1 + 1] <= xhi) ++bi1;
+    while (bj0 > 0 && ys[bj0] >= ylo) --bj0;
+    while (bj1 + 1 < gy_ && ys[bj1 + 1] <= yhi) ++bj1;
+    for (std::uint32_t j = bj0; j <= bj1; ++j) {
+      // The cells of a row that the triangle meets are consecutive (the triangle's part in
+      // the row's slab is convex). Guess them from the x-extent of that part in doubles,
+      // test exactly, then extend while cells still meet it; scan the whole bounding box
+      // row if the guess held none.
+      const double sa = std::max(ylo, ys[j]), sb = std::min(yhi, ys[j + 1]);
+      double exlo = std::numeric_limits<double>::infinity(), exhi = -exlo;
+      for (int e = 0; e < 3; ++e) {
+        const Point &p = *V[e], &q = *V[(e + 1) % 3];
+        const double lo = std::max(sa, std::min(p.y(), q.y())), hi = std::min(sb, std::max(p.y(), q.y()));
+        if (lo > hi) continue;
+        for (double y : {lo, hi}) {
+          const double x = p.y() == q.y() ? p.x() : p.x() + (q.x() - p.x()) * ((y - p.y()) / (q.y() - p.y()));
+          exlo = std::min(exlo, x), exhi = std::max(exhi, x);
         }
-        if (!(xlo <= xhi)) continue;
-        std::uint32_t i0 = cx(xlo), i1 = cx(xhi);
-        i0 = i0 ? i0 - 1 : 0, i1 = std::min(gx_ - 1, i1 + 1);
-        for (std::uint32_t i = i0; i <= i1; ++i) {
-          const std::size_t c = std::size_t(j) * gx_ + i;
-          if (pass == 0) ++cell_off_[c + 1];
-          else cell_tris_[fill[c]++] = t;
-        }
+        if (p.y() == q.y()) exlo = std::min(exlo, q.x()), exhi = std::max(exhi, q.x());
+      }
+      std::uint32_t g0 = bi0, g1 = bi1;
+      if (exlo <= exhi) {
+        g0 = std::clamp(cell_x(exlo), bi0, bi1), g1 = std::clamp(cell_x(exhi), bi0, bi1);
+        g0 = g0 > bi0 ? g0 - 1 : g0, g1 = g1 < bi1 ? g1 + 1 : g1;
+      }
+      // Find the first and last cells meeting the triangle (exact tests); every cell
+      // between them meets it too (convexity), and only needs its inside test and area.
+      std::uint32_t first = kNone, last = kNone;
+      for (std::uint32_t i = g0; i <= g1 && first == kNone; ++i)
+        if (vis_triangle_meets_box(V, xs[i], ys[j], xs[i + 1], ys[j + 1])) first = i;
+      for (std::uint32_t i = bi0; i <= bi1 && first == kNone; ++i)  // the guess held none
+        if (vis_triangle_meets_box(V, xs[i], ys[j], xs[i + 1], ys[j + 1])) first = i;
+      if (first == kNone) continue;
+      while (first > bi0 && vis_triangle_meets_box(V, xs[first - 1], ys[j], xs[first], ys[j + 1])) --first;
+      last = std::max(first, g1);
+      while (last > first && !vis_triangle_meets_box(V, xs[last], ys[j], xs[last + 1], ys[j + 1])) --last;
+      while (last < bi1 && vis_triangle_meets_box(V, xs[last + 1], ys[j], xs[last + 2], ys[j + 1])) ++last;
+      // Long runs (thin triangles across many cells): one clipped area for the run, shared
+      // out, instead of one per cell (the area only orders the lists).
+      const std::uint32_t run = last - first + 1;
+      const double shared = run > 4 ? vis_clipped_area(V, xs[first], ys[j], xs[last + 1], ys[j + 1]) / run : 0;
+      for (std::uint32_t i = first; i <= last; ++i) {
+        const bool inside = vis_box_inside_triangle(V, xs[i], ys[j], xs[i + 1], ys[j + 1]);
+        const double area = inside ? std::numeric_limits<double>::infinity()
+                            : run > 4 ? shared
+                                      : vis_clipped_area(V, xs[i], ys[j], xs[i + 1], ys[j + 1]);
+        entries.push_back({j * gx_ + i, inside ? t | kInsideCell : t, area});
       }
     }
   }
+  std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+    if (a.cell != b.cell) return a.cell < b.cell;
+    if (a.area != b.area) return a.area > b.area;
+    return a.tri < b.tri;
+  });
+  cell_off_.assign(std::size_t(gx_) * gy_ + 1, 0);
+  for (const Entry& e : entries) ++cell_off_[e.cell + 1];
+  for (std::size_t i = 1; i < cell_off_.size(); ++i) cell_off_[i] += cell_off_[i - 1];
+  cell_tris_.resize(entries.size());
+  for (std::size_t k = 0; k < entries.size(); ++k) cell_tris_[k] = entries[k].tri;
 }
 
 // Environment vertices in the query's number type: input points, or their lazy-exact twins
@@ -150,8 +293,8 @@ ExactPoint exact_of(const Point& q) { return to_exact(q); }
 const ExactPoint& exact_of(const ExactPoint& q) { return q; }
 }  // namespace
 
-template <class Q>
-VisibilityIndex::Located VisibilityIndex::locate_triangle(const Q& q, const Point& approx, bool name_outside) const {
+template <class Q, class Count>
+VisibilityIndex::Located VisibilityIndex::locate_triangle(const Q& q, const Point& approx, bool name_outside, Count count) const {
   const auto P = vertices_for(env_, &q);
   const auto& T = tri_.triangles();
   auto test = [&](std::uint32_t t) -> std::optional<Located> {
@@ -159,6 +302,7 @@ VisibilityIndex::Located VisibilityIndex::locate_triangle(const Q& q, const Poin
     int o[3];
     for (int i = 0; i < 3; ++i) {
       o[i] = orientation(P(tr.v[i]), P(tr.v[(i + 1) % 3]), q);
+      count();
       if (o[i] < 0) return std::nullopt;
     }
     for (int i = 0; i < 3; ++i)
@@ -170,13 +314,20 @@ VisibilityIndex::Located VisibilityIndex::locate_triangle(const Q& q, const Poin
       }
     return Located{{Location::Kind::Interior, 0}, t, -1};
   };
-  const double fx = (approx.x() - x0_) / cw_, fy = (approx.y() - y0_) / ch_;
-  if (fx >= -1 && fy >= -1 && fx <= gx_ + 1 && fy <= gy_ + 1) {
-    std::uint32_t i = std::min<std::uint32_t>(gx_ - 1, static_cast<std::uint32_t>(std::max(0.0, fx)));
-    std::uint32_t j = std::min<std::uint32_t>(gy_ - 1, static_cast<std::uint32_t>(std::max(0.0, fy)));
-    std::size_t c = std::size_t(j) * gx_ + i;
-    for (auto k = cell_off_[c]; k < cell_off_[c + 1]; ++k)
-      if (auto r = test(cell_tris_[k])) return *r;
+  constexpr bool double_query = std::is_same_v<Q, Point>;
+  const std::size_t c = std::size_t(cell_y(approx.y())) * gx_ + cell_x(approx.x());
+  const std::uint32_t *k = cell_tris_.data() + cell_off_[c], *end = cell_tris_.data() + cell_off_[c + 1];
+  if (k != end && (*k & kInsideCell)) {
+    // q's cell box lies in the interior of one triangle: q does too, no test needed (only
+    // for a double query, whose cell is its own; a constructed one may lie off its rounding's cell).
+    if constexpr (double_query) return Located{{Location::Kind::Interior, 0}, *k & ~kInsideCell, -1};
+  }
+  for (; k != end; ++k)
+    if (auto r = test(*k & ~kInsideCell)) return *r;
+  if constexpr (!double_query) {
+    // A constructed query need not lie in its rounding's cell: try every triangle (exact).
+    for (std::uint32_t t = 0; t < T.size(); ++t)
+      if (auto r = test(t)) return *r;
   }
   // Not in any triangle (the grid lists every triangle meeting each of its cells): classify
   // with the exact O(n) locator (outside or in a hole; for a constructed query its rounding
@@ -184,13 +335,19 @@ VisibilityIndex::Located VisibilityIndex::locate_triangle(const Q& q, const Poin
   if (!name_outside) return Located{{Location::Kind::Outside, 0}, kNone, -1};
   Location loc = geometry::locate(*env_, approx);
   if (loc.in_free_space()) loc = {Location::Kind::Outside, 0};
-  if constexpr (std::is_same_v<Q, Point>) loc = geometry::locate(*env_, q);
+  if constexpr (double_query) loc = geometry::locate(*env_, q);
   return Located{loc, kNone, -1};
 }
 
 Location VisibilityIndex::locate(const Point& q) const { return locate_triangle(q, q).loc; }
 
 bool VisibilityIndex::in_free_space(const Point& q) const { return locate_triangle(q, q, false).tri != kNone; }
+
+std::size_t VisibilityIndex::locate_tests(const Point& q) const {
+  std::size_t n = 0;
+  locate_triangle(q, q, false, [&n] { ++n; });
+  return n;
+}
 
 // ---------------------------------------------------------------- expansion
 namespace {
@@ -208,29 +365,94 @@ struct Piece {  // visible part of one boundary edge, between two cone rays
   Sym start, end;
 };
 
+// Work item: cross edge `slot` of triangle `t` inside the cone between rays q->R and q->L.
+struct VisItem {
+  std::uint32_t t;
+  int slot;
+  std::uint32_t R, L;
+};
+
+// Per-thread scratch of compute: kept between queries, so a thread's queries stop
+// allocating once these have grown to the largest polygon it has seen.
+struct VisScratch {
+  std::vector<Piece> pieces;
+  std::vector<VisItem> stack;
+};
+VisScratch& vis_scratch() {
+  thread_local VisScratch scratch;
+  return scratch;
+}
+
 }  // namespace
 
-VisibilityPolygon VisibilityIndex::compute(const Point& q) const { return compute_at(q, q); }
+VisibilityPolygon VisibilityIndex::compute(const Point& q) const {
+  VisibilityPolygon out;
+  compute_at(q, q, out, true);
+  return out;
+}
+
+void VisibilityIndex::compute(const Point& q, VisibilityPolygon& out) const { compute_at(q, q, out, true); }
+
+void VisibilityIndex::compute_abstract(const Point& q, VisibilityPolygon& out) const { compute_at(q, q, out, false); }
 
 VisibilityPolygon VisibilityIndex::compute_in_wedge(std::uint32_t v) const {
   if (v >= env_->num_vertices()) throw std::out_of_range("compute_in_wedge: no vertex " + std::to_string(v));
-  return compute_at(env_->vertex(v), env_->vertex(v), v);
+  VisibilityPolygon out;
+  compute_at(env_->vertex(v), env_->vertex(v), out, true, v);
+  return out;
 }
 
 VisibilityPolygon VisibilityIndex::compute(const ExactPoint& q) const {
   const auto& a = q.approx();
-  return compute_at(q, Point(CGAL::to_double(a.x()), CGAL::to_double(a.y())));
+  VisibilityPolygon out;
+  compute_at(q, Point(CGAL::to_double(a.x()), CGAL::to_double(a.y())), out, true);
+  return out;
+}
+
+std::vector<VisibilityPolygon> VisibilityIndex::compute_many(std::span<const Point> queries, unsigned threads,
+                                                             bool abstract) const {
+  std::vector<VisibilityPolygon> out(queries.size());
+  constexpr std::size_t kChunk = 64;  // queries taken at once by a thread
+  const std::size_t chunks = (queries.size() + kChunk - 1) / kChunk;
+  std::size_t n = threads ? threads : std::max(1u, std::thread::hardware_concurrency());
+  n = std::max<std::size_t>(1, std::min(n, chunks));
+  std::atomic<std::size_t> next{0};
+  std::mutex failed;
+  std::size_t failed_at = queries.size();
+  std::exception_ptr error;
+  auto work = [&] {
+    for (std::size_t b; (b = next.fetch_add(kChunk, std::memory_order_relaxed)) < queries.size();) {
+      for (std::size_t i = b; i < std::min(queries.size(), b + kChunk); ++i) {
+        try {
+          compute_at(queries[i], queries[i], out[i], !abstract);
+        } catch (...) {
+          std::lock_guard<std::mutex> lock(failed);
+          if (i < failed_at) failed_at = i, error = std::current_exception();
+        }
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  pool.reserve(n - 1);
+  for (std::size_t k = 1; k < n; ++k) pool.emplace_back(work);
+  work();
+  for (auto& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
+  return out;
 }
 
 template <class Q>
-VisibilityPolygon VisibilityIndex::compute_at(const Q& q, const Point& approx, std::uint32_t only_wedge) const {
+void VisibilityIndex::compute_at(const Q& q, const Point& approx, VisibilityPolygon& out, bool coordinates,
+                                 std::uint32_t only_wedge) const {
   const Located where = only_wedge == kNone
                             ? locate_triangle(q, approx)
                             : Located{{Location::Kind::AtVertex, only_wedge}, tri_.boundary_slot(only_wedge).first, 0};
   if (!where.loc.in_free_space())
-    throw InputError("visibility: query point " + format_point(approx) + " is not in free space: it lies " +
-                     (where.loc.kind == Location::Kind::InHole ? "inside " + env_->ring_name(where.loc.index + 1)
-                                                               : "outside " + env_->ring_name(0)));
+    throw InputError(std::string("visibility: query point ")
+                         .append(format_point(approx))
+                         .append(" is not in free space: it lies ")
+                         .append(where.loc.kind == Location::Kind::InHole ? "inside " : "outside ")
+                         .append(env_->ring_name(where.loc.kind == Location::Kind::InHole ? where.loc.index + 1 : 0)));
   const auto& P = env_->vertices();
   const auto Pq = vertices_for(env_, &q);  // vertices in the query's type, for predicates
   const auto& T = tri_.triangles();
@@ -240,49 +462,79 @@ VisibilityPolygon VisibilityIndex::compute_at(const Q& q, const Point& approx, s
   auto sym_hit = [](std::uint32_t through, std::uint32_t e) { return Sym{VisibilityVertex::Kind::RayHit, through, e}; };
   const Sym sym_query{VisibilityVertex::Kind::Query, kNone, kNone};
 
-  std::vector<Piece> pieces;
-  // Work item: cross edge `slot` of triangle `t` inside the cone between rays q->R and q->L.
-  struct Item { std::uint32_t t; int slot; std::uint32_t R, L; };
-  std::vector<Item> stack;
+  // This thread's scratch, moved into locals for the query (the hot loop then keeps the
+  // vectors' pointers in registers across predicate calls) and handed back at the end.
+  struct Borrow {
+    VisScratch& home;
+    std::vector<Piece> pieces;
+    std::vector<VisItem> stack;
+    explicit Borrow(VisScratch& h) : home(h), pieces(std::move(h.pieces)), stack(std::move(h.stack)) {
+      pieces.clear();
+    }
+    ~Borrow() { home.pieces = std::move(pieces), home.stack = std::move(stack); }
+    Borrow(const Borrow&) = delete;
+    Borrow& operator=(const Borrow&) = delete;
+  } borrow(vis_scratch());
+  std::vector<Piece>& pieces = borrow.pieces;
+  // The work stack as a bare array over the scratch vector's storage: a push is a store and
+  // an increment (growth, rare, out of the loop's way); vector::push_back was left out of
+  // line here and cost a call per step.
+  std::vector<VisItem>& stack_store = borrow.stack;
+  if (stack_store.size() < 64) stack_store.resize(64);
+  VisItem* stack = stack_store.data();
+  std::size_t top = 0;
+  auto push = [&](VisItem item) {
+    if (top == stack_store.size()) [[unlikely]] {
+      stack_store.resize(2 * top);
+      stack = stack_store.data();
+    }
+    stack[top++] = item;
+  };
   auto run = [&](std::uint32_t t0, int s0, std::uint32_t R0, std::uint32_t L0) {
-    stack.push_back({t0, s0, R0, L0});
-    while (!stack.empty()) {
-      Item it = stack.back();
-      stack.pop_back();
-      const Triangle& tr = T[it.t];
-      const std::uint32_t r = tr.v[it.slot], l = tr.v[(it.slot + 1) % 3];
-      if (tr.nbr[it.slot] == kNone) {  // boundary: emit the visible piece of this edge
-        const std::uint32_t e = tr.edge[it.slot];
-        Piece pc{e, it.R, it.L, {}, {}};
-        pc.start = (it.R == r || orientation(q, Pq(it.R), Pq(r)) == 0) ? sym_vertex(r) : sym_hit(it.R, e);
-        pc.end = (it.L == l || orientation(q, Pq(it.L), Pq(l)) == 0) ? sym_vertex(l) : sym_hit(it.L, e);
-        pieces.push_back(pc);
-        continue;
-      }
-      const std::uint32_t u = tr.nbr[it.slot];
-      const Triangle& nt = T[u];
-      int j = 0;
-      while (nt.v[j] != l) ++j;  // entry edge in u runs l -> r
-      const std::uint32_t c = nt.v[(j + 2) % 3];
-      const int right_slot = (j + 1) % 3, left_slot = (j + 2) % 3;  // (r, c) and (c, l)
-      const int cr = orientation(q, Pq(it.R), Pq(c));
-      const int cl = orientation(q, Pq(it.L), Pq(c));
-      if (cr <= 0) {
-        stack.push_back({u, left_slot, it.R, it.L});
-      } else if (cl >= 0) {
-        stack.push_back({u, right_slot, it.R, it.L});
-      } else {  // c splits the cone; right part first (counter-clockwise output)
-        stack.push_back({u, left_slot, c, it.L});
-        stack.push_back({u, right_slot, it.R, c});
+    push({t0, s0, R0, L0});
+    while (top > 0) {
+      VisItem it = stack[--top];
+      // Follow one cone across triangles; a split pushes its left part and goes on with
+      // the right one (the order of the pieces is that of a plain stack).
+      while (true) {
+        const Triangle& tr = T[it.t];
+        const std::uint32_t r = tr.v[it.slot], l = tr.v[(it.slot + 1) % 3];
+        if (tr.nbr[it.slot] == kNone) {  // boundary: emit the visible piece of this edge
+          const std::uint32_t e = tr.edge[it.slot];
+          Piece pc{e, it.R, it.L, {}, {}};
+          pc.start = (it.R == r || orientation(q, Pq(it.R), Pq(r)) == 0) ? sym_vertex(r) : sym_hit(it.R, e);
+          pc.end = (it.L == l || orientation(q, Pq(it.L), Pq(l)) == 0) ? sym_vertex(l) : sym_hit(it.L, e);
+          pieces.push_back(pc);
+          break;
+        }
+        const std::uint32_t u = tr.nbr[it.slot];
+        const Triangle& nt = T[u];
+        int j = 0;
+        while (nt.v[j] != l) ++j;  // entry edge in u runs l -> r
+        const std::uint32_t c = nt.v[(j + 2) % 3];
+        const int right_slot = (j + 1) % 3, left_slot = (j + 2) % 3;  // (r, c) and (c, l)
+        const int cr = orientation(q, Pq(it.R), Pq(c));
+        const int cl = orientation(q, Pq(it.L), Pq(c));
+        if (cr <= 0) {
+          it = {u, left_slot, it.R, it.L};
+        } else if (cl >= 0) {
+          it = {u, right_slot, it.R, it.L};
+        } else {  // c splits the cone; right part first (counter-clockwise output)
+          push({u, left_slot, c, it.L});
+          it = {u, right_slot, it.R, c};
+        }
       }
     }
   };
 
-  VisibilityPolygon out;
   out.environment = env_;
   out.query = approx;
-  out.exact_query = exact_of(q);
+  if constexpr (std::is_same_v<Q, Point>) out.constructed_query.reset();
+  else out.constructed_query = q;
   out.location = where.loc;
+  out.abstract = !coordinates;
+  out.vertices.clear();
+  out.edges.clear();
   const Triangle& t0 = T[where.tri];
   switch (where.loc.kind) {
     case Location::Kind::Interior:
@@ -336,51 +588,41 @@ VisibilityPolygon VisibilityIndex::compute_at(const Q& q, const Point& approx, s
     default: break;
   }
 
-  // Merge consecutive pieces of one edge that continue each other.
+  // Merge consecutive pieces of one edge that continue each other (in place).
   {
-    std::vector<Piece> merged;
-    for (auto& pc : pieces) {
-      if (!merged.empty() && merged.back().edge == pc.edge && merged.back().end == pc.start) {
-        merged.back().end = pc.end, merged.back().ray_l = pc.ray_l;
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+      if (kept > 0 && pieces[kept - 1].edge == pieces[k].edge && pieces[kept - 1].end == pieces[k].start) {
+        pieces[kept - 1].end = pieces[k].end, pieces[kept - 1].ray_l = pieces[k].ray_l;
       } else {
-        merged.push_back(pc);
+        pieces[kept++] = pieces[k];
       }
     }
-    while (merged.size() > 1 && merged.back().edge == merged.front().edge && merged.back().end == merged.front().start) {
-      merged.front().start = merged.back().start, merged.front().ray_r = merged.back().ray_r;
-      merged.pop_back();
+    pieces.resize(kept);
+    while (pieces.size() > 1 && pieces.back().edge == pieces.front().edge && pieces.back().end == pieces.front().start) {
+      pieces.front().start = pieces.back().start, pieces.front().ray_r = pieces.back().ray_r;
+      pieces.pop_back();
     }
-    pieces.swap(merged);
   }
 
+  const Point no_coordinates(std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN());
   auto realise = [&](const Sym& sv) -> VisibilityVertex {
-    switch (sv.kind) {
-      case VisibilityVertex::Kind::EnvironmentVertex: return {sv.kind, sv.vertex, kNone, P[sv.vertex]};
-      case VisibilityVertex::Kind::Query: return {sv.kind, kNone, kNone, approx};
-      case VisibilityVertex::Kind::RayHit: break;
-    }
-    // Double rounding of the hit, for drawing only; decisions never read it.
-    const Point &w = P[sv.vertex], &a = P[sv.edge], &b = P[E.next(sv.edge)];
-    const Point& o = approx;
-    const double dx = w.x() - o.x(), dy = w.y() - o.y(), ex = b.x() - a.x(), ey = b.y() - a.y();
-    const double s = ((a.x() - o.x()) * ey - (a.y() - o.y()) * ex) / (dx * ey - dy * ex);
-    return {sv.kind, sv.vertex, sv.edge, Point(o.x() + s * dx, o.y() + s * dy)};
+    VisibilityVertex v{sv.kind, sv.vertex, sv.edge, no_coordinates};
+    if (coordinates) v.approx = sv.kind == VisibilityVertex::Kind::EnvironmentVertex ? P[sv.vertex] : approx_vertex(E, approx, v);
+    return v;
   };
   const std::size_t m = pieces.size();
   out.vertices.reserve(2 * m);
   out.edges.reserve(2 * m);
-  std::vector<VisibilityVertex> starts;
-  starts.reserve(m);
-  for (const Piece& pc : pieces) starts.push_back(realise(pc.start));
   for (std::size_t k = 0; k < m; ++k) {
     const Piece& pc = pieces[k];
-    out.vertices.push_back(starts[k]);
+    out.vertices.push_back(realise(pc.start));
     out.edges.push_back({VisibilityEdge::Kind::Solid, pc.edge, kNone, false});
-    if (pc.end == pieces[(k + 1) % m].start) continue;
+    const Sym &X = pc.end, &Y = pieces[(k + 1) % m].start;
+    if (X == Y) continue;
     // A gap along the shared cone ray q -> c between the two hits X (end of this piece)
     // and Y (start of the next).
-    out.vertices.push_back(realise(pc.end));
-    const Sym &X = pc.end, &Y = pieces[(k + 1) % m].start;
+    out.vertices.push_back(realise(X));
     const bool both_vertices = X.kind == VisibilityVertex::Kind::EnvironmentVertex &&
                                Y.kind == VisibilityVertex::Kind::EnvironmentVertex;
     if (both_vertices) {  // the ray may run along an edge (ids at a contact name one wedge: compare points)
@@ -395,13 +637,17 @@ VisibilityPolygon VisibilityIndex::compute_at(const Q& q, const Point& approx, s
     }
     // Usually one end is c itself, the occluder, nearer to q; otherwise compare exactly.
     bool outward;
-    if (X == sym_vertex(pc.ray_l)) outward = true;
-    else if (Y == sym_vertex(pc.ray_l)) outward = false;
-    else outward = CGAL::compare_distance_to_point(out.exact_query, exact_vertex(env_, out.exact_query, out.vertices.back()),
-                                                   exact_vertex(env_, out.exact_query, starts[(k + 1) % m])) == CGAL::SMALLER;
+    if (X == sym_vertex(pc.ray_l)) {
+      outward = true;
+    } else if (Y == sym_vertex(pc.ray_l)) {
+      outward = false;
+    } else {
+      const ExactPoint eq = exact_of(q);
+      outward = CGAL::compare_distance_to_point(eq, exact_vertex(env_, eq, out.vertices.back()),
+                                                exact_vertex(env_, eq, realise(Y))) == CGAL::SMALLER;
+    }
     out.edges.push_back({VisibilityEdge::Kind::Free, kNone, pc.ray_l, !outward});
   }
-  return out;
 }
 
 // ---------------------------------------------------------------- walks along a line

@@ -63,7 +63,7 @@ Shadows shadows_of(const geometry::VisibilityPolygon& V) {
   // two hits on one edge are the same point iff their rays coincide. Only the pursuer's own
   // position (on the boundary) needs exact coordinates.
   using K = VisibilityVertex::Kind;
-  const ExactPoint& q = V.exact_query;
+  const ExactPoint& q = V.exact_query();
   auto same_point = [&](std::size_t i, std::size_t j) {
     const VisibilityVertex &a = V.vertices[i], &b = V.vertices[j];
     if (a.kind == K::Query || b.kind == K::Query) return V.exact(i) == V.exact(j);
@@ -106,7 +106,7 @@ Shadows shadows_of(const geometry::VisibilityPolygon& V) {
   }
 
   Shadows out;
-  out.query = V.exact_query;
+  out.query = V.exact_query();
   for (std::size_t f = 0; f < free_edges.size(); ++f) {
     const std::size_t i = free_edges[f];
     out.gaps.push_back({V.edges[i].reflex, V.vertices[i], V.vertices[(i + 1) % m], uf.find(static_cast<std::uint32_t>(f))});

@@ -52,7 +52,7 @@ BoundaryPoint point_of(const Environment& env, const VisibilityPolygon& V, std::
     case VisibilityVertex::Kind::Query: break;
   }
   if (V.location.kind == geometry::Location::Kind::AtVertex) return boundary_vertex(env, static_cast<std::uint32_t>(V.location.index));
-  if (V.location.kind == geometry::Location::Kind::OnEdge) return {static_cast<std::uint32_t>(V.location.index), V.exact_query, 0};
+  if (V.location.kind == geometry::Location::Kind::OnEdge) return {static_cast<std::uint32_t>(V.location.index), V.exact_query(), 0};
   throw std::logic_error("shadow_arcs: a free edge ends at an interior query point");
 }
 
@@ -99,7 +99,7 @@ std::vector<ShadowArc> shadow_arcs(const Environment& env, const VisibilityPolyg
     // Counter-clockwise from the query's own boundary point.
     BoundaryPoint q = V.location.kind == geometry::Location::Kind::AtVertex
                           ? boundary_vertex(env, static_cast<std::uint32_t>(V.location.index))
-                          : BoundaryPoint{static_cast<std::uint32_t>(V.location.index), V.exact_query, 0};
+                          : BoundaryPoint{static_cast<std::uint32_t>(V.location.index), V.exact_query(), 0};
     std::sort(out.begin(), out.end(), [&](const ShadowArc& x, const ShadowArc& y) {
       const bool xa = boundary_less(env, q, x.from), ya = boundary_less(env, q, y.from);
       if (xa != ya) return xa;  // after q before wrapped around

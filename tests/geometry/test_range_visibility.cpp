@@ -44,7 +44,7 @@ Real sqdist(const RPoint& a, const RPoint& b) { return (a.x - b.x) * (a.x - b.x)
 RPoint exact_end(const RangeVisibility& r, const RangePoint& p) {
   const auto& V = r.polygon;
   if (p.kind == RangePoint::Kind::PolygonVertex) return real_of(V.exact(p.vertex));
-  const RPoint a = real_of(V.exact(p.edge)), b = real_of(V.exact((p.edge + 1) % V.vertices.size())), q = real_of(V.exact_query);
+  const RPoint a = real_of(V.exact(p.edge)), b = real_of(V.exact((p.edge + 1) % V.vertices.size())), q = real_of(V.exact_query());
   const Real dx = b.x - a.x, dy = b.y - a.y, fx = a.x - q.x, fy = a.y - q.y, R = Real(r.range);
   const Real A = dx * dx + dy * dy, B = fx * dx + fy * dy, C = fx * fx + fy * fy - R * R;
   const Real s = sqrt(B * B - A * C);
@@ -62,7 +62,7 @@ struct ExactPieces {
 
 ExactPieces exact_pieces(const RangeVisibility& r) {
   ExactPieces e;
-  e.q = real_of(r.polygon.exact_query);
+  e.q = real_of(r.polygon.exact_query());
   e.r2 = Real(r.range) * Real(r.range);
   e.full = r.full_disc;
   if (e.full) return e;

@@ -4,8 +4,12 @@
 #include <preimage/error.hpp>
 #include <preimage/geometry/generators.hpp>
 #include <preimage/geometry/visibility.hpp>
+#include <preimage/scene/import.hpp>
 
 #include "support/cgal_oracle.hpp"
+
+#include <cmath>
+#include <random>
 
 using namespace preimage::geometry;
 using preimage::testing::CgalVisibility;
@@ -69,4 +73,176 @@ TEST(Visibility, RejectsQueriesOutsideFreeSpace) {
   VisibilityIndex index(env);
   EXPECT_THROW(index.compute(Point(-1, -1)), preimage::InputError);
   EXPECT_THROW(index.compute(Point(4, 1)), preimage::InputError);  // inside a wall
+}
+
+// ---------------------------------------------------------------- reusable output, abstract mode, batches
+namespace {
+Environment vis_houseexpo(const char* name) {
+  const std::string path = std::string(PREIMAGE_FLOORPLANS).append("/").append(name);
+  return *preimage::scene::import_houseexpo(preimage::scene::read_file(path), path).environment;
+}
+
+// Environments with holes, collinear runs and real plans, each with its name for messages.
+std::vector<std::pair<std::string, Environment>> vis_environments() {
+  std::vector<std::pair<std::string, Environment>> envs;
+  envs.emplace_back("random 400 / 6 holes", generators::random_environment(400, 6, 11));
+  envs.emplace_back("random 1500 / 20 holes", generators::random_environment(1500, 20, 12));
+  envs.emplace_back("snapped 300 / 4 holes", preimage::testing::snapped_random_environment(300, 4, 13));
+  envs.emplace_back("office 4x3", generators::office(4, 3));
+  envs.emplace_back("comb 60", Environment::make(generators::comb(60), {}));
+  // Around the origin: grid-cell bounds on both sides of 0 (the doubles are densest there).
+  envs.emplace_back("star 40 around (0, 0)", Environment::make(generators::star(40), {}));
+  envs.emplace_back("houseexpo 0000", vis_houseexpo("house_expo_room_0000.json"));
+  envs.emplace_back("houseexpo 1451", vis_houseexpo("house_expo_room_1451.json"));
+  return envs;
+}
+
+void expect_same_polygon(const VisibilityPolygon& a, const VisibilityPolygon& b, bool compare_approx, const std::string& what) {
+  ASSERT_EQ(a.vertices.size(), b.vertices.size()) << what;
+  ASSERT_EQ(a.edges.size(), b.edges.size()) << what;
+  EXPECT_EQ(a.location.kind, b.location.kind) << what;
+  EXPECT_EQ(a.location.index, b.location.index) << what;
+  EXPECT_EQ(a.query, b.query) << what;
+  for (std::size_t i = 0; i < a.vertices.size(); ++i) {
+    const auto &u = a.vertices[i], &v = b.vertices[i];
+    EXPECT_TRUE(u.kind == v.kind && u.vertex == v.vertex && u.edge == v.edge) << what << ": vertex " << i;
+    if (compare_approx) {
+      EXPECT_EQ(u.approx, v.approx) << what << ": vertex " << i;
+    }
+    const auto &e = a.edges[i], &f = b.edges[i];
+    EXPECT_TRUE(e.kind == f.kind && e.edge == f.edge && e.reflex == f.reflex && e.occluder_on_left == f.occluder_on_left)
+        << what << ": edge " << i;
+  }
+}
+
+// Exact brute-force point location: every triangle, exact orientations.
+Location brute_locate(const Environment& env, const Triangulation& tri, const Point& q) {
+  for (const Triangle& t : tri.triangles()) {
+    int o[3];
+    bool in = true;
+    for (int i = 0; i < 3; ++i) {
+      o[i] = static_cast<int>(CGAL::orientation(env.vertex(t.v[i]), env.vertex(t.v[(i + 1) % 3]), q));
+      in = in && o[i] >= 0;
+    }
+    if (!in) continue;
+    for (int i = 0; i < 3; ++i)
+      if (env.vertex(t.v[i]) == q) return {Location::Kind::AtVertex, t.v[i]};
+    for (int i = 0; i < 3; ++i)
+      if (o[i] == 0 && t.nbr[i] == kNone) return {Location::Kind::OnEdge, t.edge[i]};
+    return {Location::Kind::Interior, 0};
+  }
+  return preimage::geometry::locate(env, q);  // not in free space: the O(n) locator names hole or outside
+}
+}  // namespace
+
+TEST(Visibility, ReusedOutputAndAbstractModeEqualByValue) {
+  VisibilityPolygon reused, abstract;  // reused across queries and environments
+  std::size_t compared = 0;
+  for (const auto& [name, env] : vis_environments()) {
+    VisibilityIndex index(env);
+    const bool snapped = name.rfind("random", 0) != 0;  // points on edges exist exactly
+    for (const auto& q : preimage::testing::random_queries(env, 80, snapped ? 20 : 0, 20, 31)) {
+      const std::string what = name + " at " + format_point(q.p);
+      const VisibilityPolygon v = index.compute(q.p);
+      index.compute(q.p, reused);
+      expect_same_polygon(v, reused, true, what + " (reused)");
+      EXPECT_FALSE(reused.abstract);
+      index.compute_abstract(q.p, abstract);
+      expect_same_polygon(v, abstract, false, what + " (abstract)");
+      EXPECT_TRUE(abstract.abstract);
+      for (std::size_t i = 0; i < abstract.vertices.size(); ++i) {
+        EXPECT_TRUE(std::isnan(abstract.vertices[i].approx.x())) << what << ": abstract mode fills no coordinates";
+        EXPECT_EQ(abstract.approx_point(i), v.vertices[i].approx) << what << ": vertex " << i;
+      }
+      EXPECT_EQ(abstract.area(), v.area()) << what;
+      EXPECT_EQ(abstract.points(), v.points()) << what;
+      EXPECT_EQ(v.exact_query(), to_exact(q.p));
+      ++compared;
+    }
+  }
+  EXPECT_GE(compared, 600u);
+}
+
+TEST(Visibility, ConstructedQueryKeepsItsExactPoint) {
+  const auto env = generators::office(2, 2);
+  VisibilityIndex index(env);
+  // (1/3, 1/3) is no double: the polygon must keep the constructed point, not its rounding.
+  const ExactPoint third(ExactKernel::FT(1) / 3, ExactKernel::FT(1) / 3);
+  const VisibilityPolygon v = index.compute(third);
+  ASSERT_TRUE(v.constructed_query.has_value());
+  EXPECT_EQ(v.exact_query(), third);
+  EXPECT_NE(to_exact(v.query), third);
+  EXPECT_EQ(v.points().size(), index.compute(Point(1.0 / 3, 1.0 / 3)).points().size());
+}
+
+TEST(Visibility, ComputeManyEqualsSequentialCompute) {
+  for (const auto& [name, env] : vis_environments()) {
+    VisibilityIndex index(env);
+    std::vector<Point> qs;
+    for (const auto& q : preimage::testing::random_queries(env, 300, 0, 30, 41)) qs.push_back(q.p);
+    for (unsigned threads : {1u, 2u, 3u, 0u}) {
+      const auto all = index.compute_many(qs, threads);
+      ASSERT_EQ(all.size(), qs.size());
+      for (std::size_t i = 0; i < qs.size(); ++i)
+        expect_same_polygon(index.compute(qs[i]), all[i], true, name + " query " + std::to_string(i) + " threads " + std::to_string(threads));
+    }
+    const auto abstract = index.compute_many(qs, 2, true);
+    for (std::size_t i = 0; i < qs.size(); ++i) {
+      EXPECT_TRUE(abstract[i].abstract);
+      expect_same_polygon(index.compute(qs[i]), abstract[i], false, name + " abstract query " + std::to_string(i));
+    }
+  }
+  // A query outside free space: the first one's error, after every thread has finished.
+  const auto env = generators::office(2, 2);
+  VisibilityIndex index(env);
+  std::vector<Point> qs(200, Point(1, 1));
+  qs[150] = Point(-1, -1), qs[170] = Point(4, 1);
+  try {
+    index.compute_many(qs, 2);
+    ADD_FAILURE() << "no error for a query outside free space";
+  } catch (const preimage::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("(-1, -1)"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Visibility, LocateEqualsBruteForce) {
+  std::size_t checked = 0, on_boundary = 0, outside = 0;
+  for (const auto& [name, env] : vis_environments()) {
+    VisibilityIndex index(env);
+    const auto box = env.bbox();
+    std::vector<Point> pts;
+    std::mt19937_64 rng(5);
+    const double w = box.xmax() - box.xmin(), h = box.ymax() - box.ymin();
+    std::uniform_real_distribution<double> ux(box.xmin() - 0.05 * w, box.xmax() + 0.05 * w), uy(box.ymin() - 0.05 * h, box.ymax() + 0.05 * h);
+    for (int k = 0; k < 1500; ++k) pts.emplace_back(ux(rng), uy(rng));
+    // Points on coarse rational grids (many on grid-cell boundaries and on axis-parallel walls).
+    for (int d : {7, 16, 64, 100})
+      for (int k = 0; k < 300; ++k) {
+        std::uniform_int_distribution<int> ui(0, d);
+        pts.emplace_back(box.xmin() + w * ui(rng) / d, box.ymin() + h * ui(rng) / d);
+      }
+    // Every vertex, edge midpoints (on the edge when the midpoint is exact), triangle edge midpoints.
+    for (std::size_t v = 0; v < env.vertices().size(); ++v) {
+      pts.push_back(env.vertex(v));
+      pts.push_back(CGAL::midpoint(env.vertex(v), env.vertex(env.next(v))));
+    }
+    for (const Triangle& t : index.triangulation().triangles())
+      for (int i = 0; i < 3; ++i) pts.push_back(CGAL::midpoint(env.vertex(t.v[i]), env.vertex(t.v[(i + 1) % 3])));
+    for (const auto& q : preimage::testing::random_queries(env, 0, name.rfind("random", 0) != 0 ? 200 : 0, 0, 3)) pts.push_back(q.p);
+    for (const Point& p : pts) {
+      const Location want = brute_locate(env, index.triangulation(), p);
+      const Location got = index.locate(p);
+      EXPECT_EQ(got.kind, want.kind) << name << " at " << format_point(p);
+      if (want.kind != Location::Kind::Interior) {
+        EXPECT_EQ(got.index, want.index) << name << " at " << format_point(p);
+      }
+      EXPECT_EQ(index.in_free_space(p), want.in_free_space()) << name << " at " << format_point(p);
+      on_boundary += want.kind == Location::Kind::OnEdge || want.kind == Location::Kind::AtVertex;
+      outside += !want.in_free_space();
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 20000u);
+  EXPECT_GE(on_boundary, 3000u);
+  EXPECT_GE(outside, 1000u);
 }

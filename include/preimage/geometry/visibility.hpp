@@ -9,6 +9,8 @@
 #include <preimage/geometry/triangulation.hpp>
 
 #include <cstdint>
+#include <optional>
+#include <span>
 #include <vector>
 
 namespace preimage::geometry {
@@ -16,7 +18,8 @@ namespace preimage::geometry {
 /// A visibility-polygon vertex, described exactly by where it comes from: an environment
 /// vertex, the query itself, or the point where the ray from the query through `vertex`
 /// meets environment edge `edge`. Exact coordinates are constructed on demand
-/// (VisibilityPolygon::exact); `approx` is a double rounding for drawing and reports.
+/// (VisibilityPolygon::exact); `approx` is a double rounding for drawing and reports, not
+/// filled by compute_abstract (NaN there; VisibilityPolygon::approx_point computes it).
 struct VisibilityVertex {
   enum class Kind : std::uint8_t { EnvironmentVertex, RayHit, Query };
   Kind kind;
@@ -37,16 +40,26 @@ struct VisibilityEdge {
 /// Visibility polygon V(q), counter-clockwise, regularised (no needles).
 struct VisibilityPolygon {
   const Environment* environment = nullptr;
-  Point query;
-  ExactPoint exact_query;
+  Point query;        // the query (its double rounding for a constructed query)
   Location location;  // of the query
   std::vector<VisibilityVertex> vertices;
   std::vector<VisibilityEdge> edges;
+  /// True when computed by VisibilityIndex::compute_abstract: the vertices' `approx`
+  /// coordinates are not filled (ids and kinds only); approx_point(i) computes them.
+  bool abstract = false;
+  /// The query when it was a constructed point (VisibilityIndex::compute(const ExactPoint&));
+  /// empty for a double query, whose exact twin exact_query() builds on demand.
+  std::optional<ExactPoint> constructed_query;
 
+  /// The query, exact: built on demand (nothing exact is made by compute for a double query).
+  ExactPoint exact_query() const;
   /// Exact coordinates of vertex i (lazy exact construction for ray hits).
   ExactPoint exact(std::size_t i) const;
   /// All vertices, exact.
   std::vector<ExactPoint> points() const;
+  /// Double coordinates of vertex i: `approx`, or computed from the ids in abstract mode
+  /// (for drawing and reports only; decisions never read it).
+  Point approx_point(std::size_t i) const;
   double area() const;
 };
 
@@ -54,6 +67,8 @@ struct VisibilityPolygon {
 ExactPoint exact_point(const Environment& env, const ExactPoint& query, const VisibilityVertex& v);
 
 /// Preprocesses one environment (triangulation + point-location grid) for many queries.
+/// Every const member is safe to call from several threads at once; the scratch space of a
+/// query (work stack, piece list) is kept per thread.
 class VisibilityIndex {
  public:
   explicit VisibilityIndex(const Environment& env);
@@ -66,6 +81,9 @@ class VisibilityIndex {
   Location locate(const Point& q) const;
   /// Whether q is in free space (open free space, an edge or a vertex): O(1) expected.
   bool in_free_space(const Point& q) const;
+  /// Diagnostic for benchmarks: the number of exact orientation tests locate(q) makes to
+  /// find q's triangle (the same code as locate, instantiated with a counter).
+  std::size_t locate_tests(const Point& q) const;
   /// V(q) for q in the interior, on an edge, or at a vertex; throws InputError if q is
   /// outside free space. At a contact point (rings touching there) V(q) is the union of
   /// what q sees in each free wedge there: a weakly simple polygon through q once per
@@ -75,9 +93,23 @@ class VisibilityIndex {
   /// (counter-clockwise to the in-edge of Environment::wedge_end(v)). Without contacts the
   /// same as compute(vertex(v)).
   VisibilityPolygon compute_in_wedge(std::uint32_t v) const;
+  /// The same into `out`, reusing its vectors' capacity: with a reused `out` and this
+  /// thread's scratch grown, a query allocates nothing.
+  void compute(const Point& q, VisibilityPolygon& out) const;
+  /// Abstract mode: the same polygon (kinds, vertex, edge and reflex ids, edge tags) without
+  /// double coordinates — every `approx` is NaN and `out.abstract` is set. Coordinates on
+  /// demand: out.approx_point(i) (double) or out.exact(i) (exact). About the work of the
+  /// expansion alone; for callers that need the symbolic answer (which vertices and edges
+  /// are seen) rather than a drawing.
+  void compute_abstract(const Point& q, VisibilityPolygon& out) const;
   /// V(q) for a constructed (lazy-exact) query, e.g. a point inside a region thinner than
   /// double precision resolves. The same decisions on lazy-exact predicates: slower.
   VisibilityPolygon compute(const ExactPoint& q) const;
+  /// V(q) of every query, in order, on `threads` threads (0: one per hardware thread), each
+  /// with its own scratch; `abstract` as compute_abstract. If a query is outside free space
+  /// the InputError of the first such query (lowest index) is rethrown after all threads end.
+  std::vector<VisibilityPolygon> compute_many(std::span<const Point> queries, unsigned threads = 0,
+                                              bool abstract = false) const;
 
   /// Does the closed segment pq lie in closed free space (grazing the boundary allowed)?
   /// The same answer as geometry::visible, by a walk through the triangles the segment
@@ -91,16 +123,32 @@ class VisibilityIndex {
 
  private:
   struct Located { Location loc; std::uint32_t tri; int slot; };
+  struct NoCount {
+    void operator()() const {}
+  };
+  template <class Q, class Count = NoCount>
+  Located locate_triangle(const Q& q, const Point& approx, bool name_outside = true, Count count = {}) const;
   template <class Q>
-  Located locate_triangle(const Q& q, const Point& approx, bool name_outside = true) const;
-  template <class Q>
-  VisibilityPolygon compute_at(const Q& q, const Point& approx, std::uint32_t only_wedge = kNone) const;
+  void compute_at(const Q& q, const Point& approx, VisibilityPolygon& out, bool coordinates,
+                  std::uint32_t only_wedge = kNone) const;
   template <class OnVertex>
   bool walk(const Point& a, const Point& b, std::uint32_t start, bool to_b, OnVertex&& on_vertex) const;
+  std::uint32_t cell_x(double x) const {  // monotone in x: the grid's cell bounds are derived from it
+    const double f = (x - x0_) / cw_;
+    return f >= static_cast<double>(gx_) ? gx_ - 1 : f > 0 ? static_cast<std::uint32_t>(f) : 0;
+  }
+  std::uint32_t cell_y(double y) const {
+    const double f = (y - y0_) / ch_;
+    return f >= static_cast<double>(gy_) ? gy_ - 1 : f > 0 ? static_cast<std::uint32_t>(f) : 0;
+  }
 
   const Environment* env_;
   Triangulation tri_;
-  // Point-location grid over triangle bounding boxes.
+  // Point-location grid. Cell (i, j) holds every triangle that meets the closed box of all
+  // doubles that cell_x, cell_y map to (i, j) — an exact triangle/box test — sorted by the
+  // area of the overlap, largest first; a first entry with kInsideCell set is a triangle
+  // holding the whole box in its interior.
+  static constexpr std::uint32_t kInsideCell = 0x80000000u;
   double x0_, y0_, cw_, ch_;
   std::uint32_t gx_, gy_;
   std::vector<std::uint32_t> cell_off_, cell_tris_;
