@@ -127,17 +127,7 @@ TEST(Contacts, VisibilityMatchesCgalInTheInteriorOnEdgesAndInEveryWedge) {
     }
     for (std::uint32_t v = 0; v < env.num_vertices(); ++v) {
       const auto mine = ours.compute_in_wedge(v);
-      const std::size_t u = env.wedge_end(v);
-      CgalVisibility::Arrangement out;
-      const ExactPoint p = to_exact(env.vertex(v));
-      cgal.tev().compute_visibility(p, cgal.halfedge(env.vertex(env.prev(u)), env.vertex(u)), out);
-      std::vector<ExactPoint> theirs;
-      for (auto f = out.faces_begin(); f != out.faces_end(); ++f) {
-        if (f->is_unbounded()) continue;
-        auto c = f->outer_ccb();
-        do theirs.push_back(c->source()->point());
-        while (++c != f->outer_ccb());
-      }
+      const auto theirs = cgal.compute_in_wedge(v);
       EXPECT_EQ(canonical_cycle(mine.points()), canonical_cycle(theirs)) << what << " wedge of vertex " << v;
       ++wedges;
       if (!env.is_contact(v)) continue;

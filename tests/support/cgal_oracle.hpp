@@ -67,6 +67,20 @@ class CgalVisibility {
     } else {
       tev_->compute_visibility(eq, halfedge(env_.vertex(env_.prev(loc.index)), env_.vertex(loc.index)), out);
     }
+    return cycle_of(out);
+  }
+  /// Visibility from vertex v's point in the free wedge starting at v's out-edge (holes
+  /// touching at a contact): the face left of the wedge's in-edge, prev(u) -> u.
+  std::vector<ExactPoint> compute_in_wedge(std::size_t v) const {
+    Arrangement out;
+    const std::size_t u = env_.wedge_end(v);
+    tev_->compute_visibility(geometry::to_exact(env_.vertex(v)), halfedge(env_.vertex(env_.prev(u)), env_.vertex(u)), out);
+    return cycle_of(out);
+  }
+
+  const Arrangement& arrangement() const { return arr_; }
+
+  static std::vector<ExactPoint> cycle_of(const Arrangement& out) {
     std::vector<ExactPoint> pts;
     for (auto f = out.faces_begin(); f != out.faces_end(); ++f) {
       if (f->is_unbounded()) continue;
@@ -76,8 +90,6 @@ class CgalVisibility {
     }
     return pts;
   }
-
-  const Arrangement& arrangement() const { return arr_; }
   const TEV& tev() const { return *tev_; }
 
  private:
