@@ -145,6 +145,18 @@ TEST(Contacts, VisibilityMatchesCgalInTheInteriorOnEdgesAndInEveryWedge) {
       EXPECT_NEAR(all.area(), sum, 1e-9 * std::max(1.0, sum)) << what;
       EXPECT_EQ(all.vertices.size(), vertices) << what;
       EXPECT_EQ(all.location.kind, Location::Kind::AtVertex);
+      // The reusable and abstract forms give the same union, id for id.
+      VisibilityPolygon reused, abstract;
+      ours.compute(env.vertex(v), reused);
+      ours.compute_abstract(env.vertex(v), abstract);
+      ASSERT_EQ(reused.vertices.size(), all.vertices.size()) << what;
+      ASSERT_EQ(abstract.vertices.size(), all.vertices.size()) << what;
+      for (std::size_t i = 0; i < all.vertices.size(); ++i) {
+        EXPECT_EQ(abstract.vertices[i].kind, all.vertices[i].kind) << what;
+        EXPECT_EQ(abstract.vertices[i].vertex, all.vertices[i].vertex) << what;
+        EXPECT_EQ(abstract.vertices[i].edge, all.vertices[i].edge) << what;
+        EXPECT_EQ(reused.exact(i), all.exact(i)) << what;
+      }
     }
   }
   EXPECT_GE(compared, 800u);
