@@ -269,12 +269,7 @@ void Environment::link_contacts(const std::vector<std::string>& names, const std
     struct Dir { std::uint32_t v; bool out; const Point* to; };
     std::vector<Dir> dirs;
     for (std::uint32_t v : group) dirs.push_back({v, false, &pts_[prev(v)]}), dirs.push_back({v, true, &pts_[next(v)]});
-    auto half = [&](const Point& a) { return a.y() > p.y() || (a.y() == p.y() && a.x() > p.x()) ? 0 : 1; };
-    std::sort(dirs.begin(), dirs.end(), [&](const Dir& a, const Dir& b) {
-      const int ha = half(*a.to), hb = half(*b.to);
-      if (ha != hb) return ha < hb;
-      return orientation(p, *a.to, *b.to) > 0;
-    });
+    std::sort(dirs.begin(), dirs.end(), [&](const Dir& a, const Dir& b) { return ccw_less(p, *a.to, *b.to); });
     auto name = [&](std::uint32_t v) {
       return names[ring_of_[v]] + " vertex " + std::to_string(input_index_[v]);
     };

@@ -11,18 +11,10 @@ namespace preimage::geometry {
 
 namespace {
 
-// Counter-clockwise order of directions from p, from the +x axis: 0 when equal.
-int compare_direction(const Point& p, const Point& a, const Point& b) {
-  auto half = [&](const Point& x) { return x.y() > p.y() || (x.y() == p.y() && x.x() > p.x()) ? 0 : 1; };
-  const int ha = half(a), hb = half(b);
-  if (ha != hb) return ha < hb ? -1 : 1;
-  return -orientation(p, a, b);
-}
-
 // Is direction p->d in the counter-clockwise range [p->o, p->i) (o != i)?
 bool in_ccw_range(const Point& p, const Point& o, const Point& i, const Point& d) {
-  const bool from_o = compare_direction(p, o, d) <= 0, before_i = compare_direction(p, d, i) < 0;
-  return compare_direction(p, o, i) < 0 ? from_o && before_i : from_o || before_i;
+  const bool from_o = !ccw_less(p, d, o), before_i = ccw_less(p, d, i);
+  return ccw_less(p, o, i) ? from_o && before_i : from_o || before_i;
 }
 
 }  // namespace
