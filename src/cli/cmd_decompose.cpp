@@ -79,9 +79,70 @@ void run_boustrophedon(const scene::Scene& s, double angle, bool as_json, const 
   if (!geojson.empty()) std::cout << "wrote " << geojson << "\n";
 }
 
-void run_decompose(const std::string& path, const std::string& method, double angle, bool as_json, const std::string& svg,
-                   const std::string& geojson) {
+// The default centre of the variable-slice decompositions: the middle of the bounding box.
+geometry::Point default_centre(const geometry::Environment& env) {
+  const auto b = env.bbox();
+  return {(b.xmin() + b.xmax()) / 2, (b.ymin() + b.ymax()) / 2};
+}
+
+void run_morse(const scene::Scene& s, decompose::SliceFamily family, const std::string& centre_s, bool as_json, const std::string& svg,
+               const std::string& geojson) {
+  const auto& env = s.require_environment();
+  const geometry::Point centre = centre_s.empty() ? default_centre(env) : parse_point(centre_s, "--center");
+  const decompose::MorseDecomposition m(env, family, centre);
+  const std::string name(decompose::to_string(family));
+  const auto box = env.bbox();
+  const double err = 1e-6 * std::max(box.xmax() - box.xmin(), box.ymax() - box.ymin());
+  if (!svg.empty()) {
+    render::SvgCanvas c(render::scene_box(s));
+    render::draw_scene(c, s);
+    decompose::draw_morse(c, m);
+    c.save(svg);
+  }
+  if (!geojson.empty()) {
+    scene::GeoJsonWriter w;
+    w.environment(env, {{"kind", "environment"}});
+    for (std::size_t i = 0; i < m.cells().size(); ++i) w.polygon(m.cell_rings(i, err), {{"kind", "cell"}, {"method", name}, {"id", i}});
+    w.save(geojson);
+  }
+  const auto adj = m.adjacency();
+  if (as_json) {
+    json cells = json::array(), crit = json::array(), arcs = json::array();
+    for (std::size_t i = 0; i < m.cells().size(); ++i) {
+      json rings = json::array();
+      for (const auto& r : m.cell_rings(i, err)) rings.push_back(points_json(r));
+      cells.push_back({{"id", i}, {"area", m.cells()[i].area}, {"rings", rings}, {"nodes", m.cells()[i].nodes}, {"adjacent", adj[i]}});
+    }
+    for (const auto& k : m.critical_points()) {
+      const char* kind = k.kind == decompose::CriticalKind::SplitMerge ? "split_merge" : k.kind == decompose::CriticalKind::BirthDeath ? "birth_death" : "minimum";
+      const auto& p = m.points()[k.point].approx;
+      crit.push_back({{"point", {p.x(), p.y()}}, {"kind", kind}, {"level", k.level}, {"node", k.node}});
+    }
+    for (const auto& a : m.arcs()) {
+      json arc = {{"from", {a.a.x(), a.a.y()}}, {"to", {a.b.x(), a.b.y()}}, {"node", a.node}};
+      if (family == decompose::SliceFamily::Circular) arc["radius"] = std::sqrt(CGAL::to_double(a.level)), arc["angle"] = a.span;
+      if (family == decompose::SliceFamily::Squarel) arc["corners"] = points_json(a.corners), arc["level"] = CGAL::to_double(a.level);
+      arcs.push_back(arc);
+    }
+    print_json({{"method", name}, {"center", {centre.x(), centre.y()}}, {"cells", cells}, {"critical_points", crit}, {"critical_slices", arcs},
+                {"reeb_graph", {{"nodes", m.num_nodes()}, {"edges", m.cells().size()}}}});
+    return;
+  }
+  std::cout << name << " decomposition around " << geometry::format_point(centre) << ": " << m.cells().size() << " cells, "
+            << m.critical_points().size() << " critical points in " << m.num_nodes() << " critical slices (Reeb graph nodes), "
+            << m.arcs().size() << " critical slice intervals\n";
+  if (!svg.empty()) std::cout << "wrote " << svg << "\n";
+  if (!geojson.empty()) std::cout << "wrote " << geojson << "\n";
+}
+
+void run_decompose(const std::string& path, const std::string& method, double angle, const std::string& centre, bool as_json,
+                   const std::string& svg, const std::string& geojson) {
   const scene::Scene s = scene::load_scene(path);
+  if (const auto family = decompose::parse_slice_family(method)) {
+    if (angle != 0) throw InputError("--angle: only the boustrophedon decomposition has a sweep direction");
+    return run_morse(s, *family, centre, as_json, svg, geojson);
+  }
+  if (!centre.empty()) throw InputError("--center: only the circular, spike and squarel decompositions have a centre");
   if (method == "boustrophedon") return run_boustrophedon(s, angle, as_json, svg, geojson);
   if (angle != 0) throw InputError("--angle: the trapezoidal decomposition sweeps along x (use --method boustrophedon)");
   const auto& env = s.require_environment();
@@ -181,7 +242,7 @@ void run_plan(const std::string& path, const std::string& start_s, const std::st
 }
 
 struct CoverArgs {
-  std::string path, start, angle = "auto", order = "optimised", transit = "shortest", svg, geojson;
+  std::string path, start, angle = "auto", order = "optimised", transit = "shortest", svg, geojson, pattern = "boustrophedon", centre;
   std::optional<double> width, radius;
   bool json = false;
 };
@@ -210,6 +271,15 @@ void run_cover(const CoverArgs& a) {
   }
   o.order = a.order == "dfs" ? decompose::CellOrder::DepthFirst : decompose::CellOrder::Optimised;
   o.transit = a.transit == "decomposition" ? decompose::Transit::Decomposition : decompose::Transit::Shortest;
+  o.pattern = *decompose::parse_pattern(a.pattern);
+  if (o.pattern != decompose::Pattern::Boustrophedon) {
+    if (a.angle != "auto") throw InputError("--angle: only the boustrophedon pattern has a sweep direction");
+    if (a.order != "optimised" || a.transit != "shortest")
+      throw InputError("--order/--transit: the " + a.pattern + " pattern walks its cells depth-first with shortest transits");
+    if (!a.centre.empty()) o.centre = parse_point(a.centre, "--center");
+  } else if (!a.centre.empty()) {
+    throw InputError("--center: only the spiral, concentric, spike and squarel patterns have a centre");
+  }
   const auto rep = decompose::plan_coverage(env, o);
   const auto m = decompose::measure_coverage(env, rep);
   if (!a.svg.empty()) {
@@ -236,7 +306,14 @@ void run_cover(const CoverArgs& a) {
   if (a.json) {
     json moves = json::array();
     for (auto mv : rep.moves) moves.push_back(mv == decompose::Move::Lap ? "lap" : mv == decompose::Move::Follow ? "follow" : "transit");
-    print_json({{"width", rep.width}, {"robot_radius", rep.robot_radius}, {"angle", rep.angle}, {"order", a.order}, {"transit", a.transit},
+    json centre = nullptr;
+    if (o.pattern != decompose::Pattern::Boustrophedon) {
+      const auto b = env.bbox();
+      const auto c = o.centre.value_or(geometry::Point((b.xmin() + b.xmax()) / 2, (b.ymin() + b.ymax()) / 2));
+      centre = {c.x(), c.y()};
+    }
+    print_json({{"pattern", a.pattern}, {"center", centre}, {"width", rep.width}, {"robot_radius", rep.robot_radius}, {"angle", rep.angle},
+                {"order", o.pattern == decompose::Pattern::Boustrophedon ? a.order : "dfs"}, {"transit", a.transit},
                 {"length", rep.length}, {"transit_length", rep.transit_length}, {"laps", rep.laps}, {"turns", rep.turns},
                 {"rotation_deg", rep.rotation_deg}, {"cells", rep.cells}, {"critical_points", rep.critical_points},
                 {"cell_order", rep.cell_order}, {"sweeps", rep.sweeps},
@@ -252,7 +329,9 @@ void run_cover(const CoverArgs& a) {
   }
   std::cout << "coverage with width " << geometry::format_number(rep.width);
   if (rep.robot_radius > 0) std::cout << " (robot radius " << geometry::format_number(rep.robot_radius) << ")";
-  std::cout << " at " << geometry::format_number(rep.angle) << " degrees: length " << geometry::format_number(rep.length)
+  if (o.pattern == decompose::Pattern::Boustrophedon) std::cout << " at " << geometry::format_number(rep.angle) << " degrees";
+  else std::cout << ", " << a.pattern << " pattern";
+  std::cout << ": length " << geometry::format_number(rep.length)
             << " (transits " << geometry::format_number(rep.transit_length) << "; bound " << geometry::format_number(rep.bound) << "), "
             << rep.laps << " laps, " << rep.turns << " turns, " << rep.cells << " cells, " << rep.critical_points << " critical points\n";
   std::cout << "covered " << geometry::format_number(std::round(m.covered_fraction * 10000) / 100) << "% of the configuration space ("
@@ -260,7 +339,9 @@ void run_cover(const CoverArgs& a) {
             << "%, length / (area / width) = " << geometry::format_number(std::round(m.efficiency * 1000) / 1000);
   if (rep.unreachable_area > 0) std::cout << "; unreachable from the start: " << geometry::format_number(rep.unreachable_area);
   std::cout << "\n";
-  if (a.order == "optimised")
+  if (o.pattern != decompose::Pattern::Boustrophedon)
+    std::cout << "cell order: depth-first walk of the adjacency graph (6.2.1)\n";
+  else if (a.order == "optimised")
     std::cout << "cell order: " << (rep.order_optimal ? "optimal" : "local search, lower bound " + geometry::format_number(rep.order_lower_bound)) << "\n";
   if (!a.svg.empty()) std::cout << "wrote " << a.svg << "\n";
   if (!a.geojson.empty()) std::cout << "wrote " << a.geojson << "\n";
@@ -271,20 +352,25 @@ void run_cover(const CoverArgs& a) {
 void add_decompose_commands(CLI::App& app) {
   {
     auto* cmd = app.add_subcommand("decompose", "Exact cell decomposition of the free space, with its adjacency graph");
-    set_examples(cmd, {"preimage decompose examples/gallery.json --svg cells.svg", "preimage decompose examples/gallery.json --method boustrophedon --angle 30 --json"});
+    set_examples(cmd, {"preimage decompose examples/gallery.json --svg cells.svg", "preimage decompose examples/gallery.json --method boustrophedon --angle 30 --json",
+                       "preimage decompose examples/gallery.json --method circular --center 6.1,4.05 --svg circular.svg"});
     auto path = std::make_shared<std::string>();
     auto method = std::make_shared<std::string>("trapezoidal");
     auto angle = std::make_shared<double>(0.0);
     auto json_out = std::make_shared<bool>(false);
     auto svg = std::make_shared<std::string>();
     cmd->add_option("scene", *path, "Scene JSON file")->required();
-    cmd->add_option("--method", *method, "Decomposition method")->check(CLI::IsMember({"trapezoidal", "boustrophedon"}))->capture_default_str();
+    auto centre = std::make_shared<std::string>();
+    cmd->add_option("--method", *method, "Decomposition method: trapezoidal, boustrophedon, or a variable slice of 6.2.3 (circular, spike, squarel)")
+        ->check(CLI::IsMember({"trapezoidal", "boustrophedon", "circular", "spike", "squarel"}))
+        ->capture_default_str();
     cmd->add_option("--angle", *angle, "Sweep direction in degrees, counter-clockwise from +x (boustrophedon)");
+    cmd->add_option("--center", *centre, "Centre X,Y of the circles, rays or diamonds (circular, spike, squarel; default: the middle of the bounding box)");
     add_json_flag(cmd, *json_out, "Machine-readable output on stdout");
     auto geojson = std::make_shared<std::string>();
     cmd->add_option("--svg", *svg, "Draw cells, extensions and the adjacency graph to this SVG file");
     cmd->add_option("--geojson", *geojson, "Also write the environment and the cells as GeoJSON polygons");
-    cmd->callback([=] { run_decompose(*path, *method, *angle, *json_out, *svg, *geojson); });
+    cmd->callback([=] { run_decompose(*path, *method, *angle, *centre, *json_out, *svg, *geojson); });
   }
   {
     auto* cmd = app.add_subcommand("plan", "Collision-free path for a point or disc robot: shortest, or through the trapezoidal decomposition");
@@ -323,6 +409,9 @@ void add_decompose_commands(CLI::App& app) {
         ->check(CLI::IsMember({"optimised", "dfs"}))->capture_default_str();
     cmd->add_option("--transit", a->transit, "shortest (visibility graph) or decomposition (trapezoid midpoints and centroids)")
         ->check(CLI::IsMember({"shortest", "decomposition"}))->capture_default_str();
+    cmd->add_option("--pattern", a->pattern, "Laps along straight slices (boustrophedon) or around --center (6.2.3): spiral, concentric, spike, squarel")
+        ->check(CLI::IsMember({"boustrophedon", "spiral", "concentric", "spike", "squarel"}))->capture_default_str();
+    cmd->add_option("--center", a->centre, "Centre X,Y of the spiral, concentric, spike or squarel pattern (default: the middle of the bounding box)");
     add_json_flag(cmd, a->json, "Machine-readable output on stdout");
     cmd->add_option("--svg", a->svg, "Draw the configuration space and the coverage path to this SVG file");
     cmd->add_option("--geojson", a->geojson, "Also write the environment and the path (a LineString per run of laps, follows or transits) as GeoJSON");

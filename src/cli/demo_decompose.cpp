@@ -93,3 +93,48 @@ void demo_coverage(DemoContext& ctx) {
 }
 
 }  // namespace preimage::cli
+
+namespace preimage::cli {
+
+void demo_morse(DemoContext& ctx) {
+  using namespace geometry;
+  auto& R = ctx.report;
+  R.section("Cell decompositions: variable slices — circular, spike and squarel (6.2.3)");
+  scene::Scene field;
+  field.environment = Environment::make({{0, 0}, {12, 0}, {12, 8}, {0, 8}},
+                                        {{{2, 3}, {3.5, 2}, {4, 4}, {2.5, 5}},
+                                         {{6, 1.5}, {8.5, 1}, {8, 3}},
+                                         {{7, 5}, {9, 4.5}, {10, 6.5}, {8, 7}}});
+  const Environment& env = *field.environment;
+  const Point centre(5.3, 4.1);
+  R.result("The field of the boustrophedon section, sliced around " + format_point(centre) +
+           " by circles (h = |p - c|), rays (h = angle) and diamonds (h = |x - cx| + |y - cy|). Critical points are "
+           "decided exactly (circle crossings as a + b sqrt(d)); cells are faces of the boundary cut by the critical slices.");
+  struct Case { decompose::SliceFamily f; decompose::Pattern p; const char* file; };
+  for (const Case k : {Case{decompose::SliceFamily::Circular, decompose::Pattern::Spiral, "decompose-circular"},
+                       Case{decompose::SliceFamily::Spike, decompose::Pattern::Spike, "decompose-spike"},
+                       Case{decompose::SliceFamily::Squarel, decompose::Pattern::Squarel, "decompose-squarel"}}) {
+    const decompose::MorseDecomposition m(env, k.f, centre);
+    decompose::CoverageOptions o;
+    o.robot_radius = 0.2, o.pattern = k.p, o.centre = centre;
+    const auto rep = decompose::plan_coverage(env, o);
+    const auto q = decompose::measure_coverage(env, rep);
+    const std::string name(decompose::to_string(k.f));
+    R.result(name + ": " + std::to_string(m.cells().size()) + " cells, " + std::to_string(m.critical_points().size()) + " critical points in " +
+             std::to_string(m.num_nodes()) + " critical slices; " + std::string(decompose::to_string(k.p)) + " coverage (robot radius 0.2, width 0.4): length " +
+             format_number(std::round(rep.length * 10) / 10) + ", " + std::to_string(rep.laps) + " laps, " +
+             format_number(std::round(q.covered_fraction * 1000) / 10) + "% of the configuration space covered, every segment certified.");
+    render::SvgCanvas c(render::scene_box(field));
+    render::draw_scene(c, field);
+    decompose::draw_morse(c, m);
+    ctx.figure(std::string(k.file) + ".svg", c.str(), name + " decomposition around " + format_point(centre) + " (Fig. 6.1" +
+               (k.f == decompose::SliceFamily::Circular ? "2" : k.f == decompose::SliceFamily::Spike ? "3" : "4") + ")");
+    render::SvgCanvas cc(render::scene_box(field));
+    render::draw_scene(cc, field);
+    render::draw_configuration_space(cc, geometry::ConfigurationSpace(env, 0.2));
+    decompose::draw_coverage(cc, rep);
+    ctx.figure(std::string(k.file) + "-coverage.svg", cc.str(), std::string(decompose::to_string(k.p)) + " coverage pattern");
+  }
+}
+
+}  // namespace preimage::cli

@@ -8,6 +8,7 @@
 #include <preimage/geometry/queries.hpp>
 
 #include "cell_sweep.hpp"
+#include "coverage_internal.hpp"
 
 #include <CGAL/Polygon_2_algorithms.h>
 
@@ -61,6 +62,7 @@ double min_disc_diameter(std::vector<Point> pts) {
 
 namespace {
 
+using detail::Planning;
 using detail::Polyline;
 using geometry::ConfigurationSpace;
 using geometry::VisibilityGraph;
@@ -79,17 +81,6 @@ double direction_score(const BoustrophedonDecomposition& b, double w) {
   }
   return score;
 }
-
-struct Planning {
-  const Environment& env;        // the workspace
-  const ConfigurationSpace& cs;
-  const Environment& E;          // the component covered
-  const VisibilityIndex& index;  // of E
-  const VisibilityGraph& graph;  // of E
-  const CoverageOptions& o;
-  double w;
-  std::optional<Point> start;    // in E (the entry point when the start lies in the band)
-};
 
 CoverageReport plan_at(const Planning& P, const BoustrophedonDecomposition& b, double angle) {
   const bool quarter = std::fmod(angle, 90.0) == 0;
@@ -178,6 +169,19 @@ CoverageReport plan_at(const Planning& P, const BoustrophedonDecomposition& b, d
     detours += s.detours;
     rep.laps += laps[order[k]][chosen[k]];
   }
+  detail::finish_path(P, std::move(path), rep);
+  rep.rounding_detours = detours;
+  rep.angle = angle;
+  rep.cell_order = order;
+  rep.sweeps = chosen;
+  rep.cells = n;
+  rep.critical_points = b.critical_slices().size();
+  return rep;
+}
+
+}  // namespace
+
+void detail::finish_path(const Planning& P, Polyline path, CoverageReport& rep) {
   // Certified output: every segment in the component (exact walk) and, with a footprint,
   // at distance >= r from every obstacle (exact arithmetic).
   for (std::size_t i = 0; i + 1 < path.points.size(); ++i) {
@@ -193,12 +197,6 @@ CoverageReport plan_at(const Planning& P, const BoustrophedonDecomposition& b, d
   }
   rep.path = std::move(path.points);
   rep.moves = std::move(path.moves);
-  rep.rounding_detours = detours;
-  rep.angle = angle;
-  rep.cell_order = order;
-  rep.sweeps = chosen;
-  rep.cells = n;
-  rep.critical_points = b.critical_slices().size();
   double heading_prev = NAN;
   for (std::size_t i = 0; i + 1 < rep.path.size(); ++i) {
     const double len = dist(rep.path[i], rep.path[i + 1]);
@@ -213,10 +211,7 @@ CoverageReport plan_at(const Planning& P, const BoustrophedonDecomposition& b, d
     }
     heading_prev = h;
   }
-  return rep;
 }
-
-}  // namespace
 
 CoverageReport plan_coverage(const Environment& env, const CoverageOptions& o) {
   const double r = o.robot_radius;
@@ -257,6 +252,10 @@ CoverageReport plan_coverage(const Environment& env, const CoverageOptions& o) {
   const VisibilityGraph graph(index);
   const Planning P{env, cs, E, index, graph, o, w, entry};
 
+  CoverageReport rep;
+  if (o.pattern != Pattern::Boustrophedon) {
+    rep = detail::plan_pattern(P);
+  } else {
   std::vector<double> angles;
   if (o.angle_deg) {
     angles.push_back(*o.angle_deg);
@@ -286,10 +285,11 @@ CoverageReport plan_coverage(const Environment& env, const CoverageOptions& o) {
   }
   std::optional<CoverageReport> best;
   for (double a : angles) {
-    CoverageReport rep = plan_at(P, BoustrophedonDecomposition(E, a), a);
-    if (!best || rep.length < best->length) best = std::move(rep);
+    CoverageReport cand = plan_at(P, BoustrophedonDecomposition(E, a), a);
+    if (!best || cand.length < best->length) best = std::move(cand);
   }
-  CoverageReport rep = std::move(*best);
+  rep = std::move(*best);
+  }
   rep.width = w, rep.robot_radius = r;
   rep.target_area = E.area();
   for (std::size_t k = 0; k < cs.components().size(); ++k)

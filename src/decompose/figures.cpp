@@ -1,11 +1,46 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <preimage/decompose/figures.hpp>
 
+#include <cmath>
+
 namespace preimage::decompose {
 
 namespace {
 const char* const kCellFills[] = {"#e8f0fe", "#fce8e6", "#e6f4ea", "#fef7e0", "#f3e8fd"};
 }  // namespace
+
+void draw_morse(render::SvgCanvas& c, const MorseDecomposition& m) {
+  const auto box = m.environment().bbox();
+  const double err = 1e-4 * std::max(box.xmax() - box.xmin(), box.ymax() - box.ymin());
+  for (std::size_t i = 0; i < m.cells().size(); ++i)
+    c.rings(m.cell_rings(i, err), render::Style{kCellFills[i % 5], "none", 0, 0.8, ""},
+            "cell " + std::to_string(i) + " (area " + geometry::format_number(m.cells()[i].area) + ")");
+  const render::Style slice{"none", "#5f6368", 1.2, 1.0, "4 3"};
+  for (const MorseArc& a : m.arcs()) {
+    std::vector<render::RegionStep> steps;
+    if (a.family == SliceFamily::Circular) {
+      const double rho = std::sqrt(CGAL::to_double(a.level));
+      // SVG cannot draw an arc between equal ends: halve every arc (a loop is two half-turns).
+      const double a0 = std::atan2(a.a.y() - a.centre.y(), a.a.x() - a.centre.x()) + a.span / 2;
+      steps.push_back({Point(a.centre.x() + rho * std::cos(a0), a.centre.y() + rho * std::sin(a0)), rho, a.span / 2});
+      steps.push_back({a.b, rho, a.span / 2});
+    } else {
+      for (const Point& p : a.corners) steps.push_back({p});
+      steps.push_back({a.b});
+    }
+    c.region(a.a, steps, slice, "critical slice (node " + std::to_string(a.node) + ")", false);
+  }
+  c.legend("critical slice intervals", slice);
+  const render::Style split{"#d93025", "#d93025", 1, 1, ""}, birth{"white", "#d93025", 1.5, 1, ""};
+  for (const MorseCritical& k : m.critical_points())
+    c.point(m.points()[k.point].approx, 3, k.kind == CriticalKind::BirthDeath ? birth : split,
+            "critical point, node " + std::to_string(k.node) + ", h = " + geometry::format_number(k.level));
+  c.legend("critical points (split/merge or minimum)", split);
+  c.legend("critical points (birth/death)", birth);
+  const render::Style centre{"#1a73e8", "#1a73e8", 1, 1, ""};
+  c.point(m.centre(), 4, centre, "centre");
+  c.legend(std::string("centre of the ") + std::string(to_string(m.family())) + " slices", centre);
+}
 
 void draw_decomposition(render::SvgCanvas& c, const TrapezoidalDecomposition& d, const TrapezoidalPlanner* graph) {
   for (std::size_t i = 0; i < d.cells().size(); ++i) {

@@ -100,7 +100,8 @@ void SvgCanvas::region(const Point& start, const std::vector<RegionStep>& steps,
     } else {
       // World counter-clockwise is sweep-flag 0 in SVG's y-down coordinates.
       const std::string r = num(st.arc_radius * scale_);
-      d.append(" A").append(r).append(",").append(r).append(" 0 ").append(st.arc_span > 3.141592653589793 ? "1" : "0").append(" 0 ").append(px(st.to));
+      d.append(" A").append(r).append(",").append(r).append(" 0 ").append(std::abs(st.arc_span) > 3.141592653589793 ? "1" : "0");
+      d.append(st.arc_span < 0 ? " 1 " : " 0 ").append(px(st.to));
     }
   }
   if (closed) d.append(" Z");

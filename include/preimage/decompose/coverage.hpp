@@ -23,11 +23,19 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace preimage::decompose {
 
 enum class CellOrder { Optimised, DepthFirst };  // GTSP over sweeps, or 6.2.1's exhaustive walk
 enum class Transit { Shortest, Decomposition };  // visibility-graph shortest paths, or trapezoid midpoints
+/// The pattern inside cells (6.2.1, 6.2.3): straight laps on the boustrophedon decomposition,
+/// or laps along the slices of a Morse decomposition around a centre — circles (concentric,
+/// or a spiral in annular cells), rays from the centre (spike: denser near it), or diamonds
+/// (squarel, a spiral in annular cells).
+enum class Pattern : std::uint8_t { Boustrophedon, Spiral, Concentric, Spike, Squarel };
+std::string_view to_string(Pattern p);
+std::optional<Pattern> parse_pattern(std::string_view s);
 
 /// Widths giving more laps than this across the environment's bounding box are refused.
 inline constexpr double kMaxLapsAcross = 1e5;
@@ -39,6 +47,8 @@ struct CoverageOptions {
   std::optional<double> angle_deg;   // sweep direction; none = try candidates, keep the shortest
   CellOrder order = CellOrder::Optimised;
   Transit transit = Transit::Shortest;
+  Pattern pattern = Pattern::Boustrophedon;
+  std::optional<Point> centre;       // of the variable-slice patterns; default: the middle of the bounding box
 };
 
 /// What a path segment is doing (for figures and metrics).

@@ -3,6 +3,7 @@
 #pragma once
 #include <preimage/decompose/boustrophedon.hpp>
 #include <preimage/decompose/coverage.hpp>
+#include <preimage/decompose/morse.hpp>
 #include <preimage/decompose/planner.hpp>
 #include <preimage/render/svg.hpp>
 
@@ -16,6 +17,10 @@ void draw_decomposition(render::SvgCanvas& canvas, const TrapezoidalDecompositio
 /// Boustrophedon cells, critical slices and the Reeb graph (nodes at slice midpoints,
 /// one edge per cell drawn through the cell's centre).
 void draw_boustrophedon(render::SvgCanvas& canvas, const BoustrophedonDecomposition& b);
+
+/// Morse cells (light fills), the critical slice intervals as true circle arcs, rays or
+/// diamond pieces, critical points (filled: split/merge, open: birth/death) and the centre.
+void draw_morse(render::SvgCanvas& canvas, const MorseDecomposition& m);
 
 /// A coverage path: laps, boundary following and transits in three styles, arrows along
 /// it, start and end markers.

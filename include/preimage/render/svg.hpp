@@ -11,9 +11,9 @@ namespace preimage::render {
 using geometry::Point;
 
 /// One step of a region's boundary (SvgCanvas::region): to `to`, straight, or along a
-/// circle of radius `arc_radius` (world units) counter-clockwise in the world, sweeping
-/// `arc_span` radians, less than 2 pi (SVG cannot draw an arc between equal ends: give a
-/// full circle as two half-turns).
+/// circle of radius `arc_radius` (world units), sweeping `arc_span` radians counter-clockwise
+/// in the world (clockwise when negative), less than 2 pi in size (SVG cannot draw an arc
+/// between equal ends: give a full circle as two half-turns).
 struct RegionStep {
   Point to;
   double arc_radius = 0;  // 0: a straight step

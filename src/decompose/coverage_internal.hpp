@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: Apache-2.0
+// Private to decompose: what every coverage pattern shares (coverage.cpp, morse_coverage.cpp).
+#pragma once
+#include <preimage/decompose/coverage.hpp>
+#include <preimage/geometry/configuration_space.hpp>
+#include <preimage/geometry/visibility.hpp>
+#include <preimage/geometry/visibility_graph.hpp>
+
+#include "cell_sweep.hpp"
+
+namespace preimage::decompose::detail {
+
+/// The problem once the configuration space is built: the component covered and its indexes.
+struct Planning {
+  const Environment& env;                     // the workspace
+  const geometry::ConfigurationSpace& cs;
+  const Environment& E;                       // the component covered
+  const geometry::VisibilityIndex& index;     // of E
+  const geometry::VisibilityGraph& graph;     // of E
+  const CoverageOptions& o;
+  double w;
+  std::optional<Point> start;                 // in E (the entry point when the start lies in the band)
+};
+
+/// Certifies every segment of `path` (inside E exactly, and r from every obstacle) — a
+/// failure is a bug (std::logic_error) — and fills the report's path, moves, length,
+/// transit length, rotation and turns.
+void finish_path(const Planning& P, Polyline path, CoverageReport& rep);
+
+/// The variable-slice patterns of 6.2.3 (spiral, concentric, spike, squarel) on the Morse
+/// decomposition of E (morse_coverage.cpp).
+CoverageReport plan_pattern(const Planning& P);
+
+}  // namespace preimage::decompose::detail

@@ -1,0 +1,322 @@
+// SPDX-License-Identifier: Apache-2.0
+// Coverage patterns of the variable-slice Morse decompositions (6.2.3): in each cell, laps
+// along the slices at inter-lap distance at most w, joined by short moves; cells in the order
+// of an exhaustive (depth-first) walk of the adjacency graph; shortest transits between them.
+//
+//   spiral      circles around c; in annular cells one spiral instead of circles and radial
+//               steps (Fig. 6.12, right)
+//   concentric  circles around c, a radial step between them
+//   spike       rays from c, out and back, spaced so the far end is w apart (denser near c,
+//               Fig. 6.13)
+//   squarel     diamonds around c; in annular cells a diamond spiral (Fig. 6.14)
+//
+// Laps are computed in double on the cell's boundary (sampled within w/1000) and every
+// segment is then certified exactly like the boustrophedon path (finish_path); a lap point
+// outside the free space is dropped and a chord that a wall cuts is replaced by the
+// shortest path between its ends, so a path never leaves the configuration space.
+#include "coverage_internal.hpp"
+
+#include <preimage/decompose/morse.hpp>
+#include <preimage/error.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace preimage::decompose {
+
+std::string_view to_string(Pattern p) {
+  switch (p) {
+    case Pattern::Boustrophedon: return "boustrophedon";
+    case Pattern::Spiral: return "spiral";
+    case Pattern::Concentric: return "concentric";
+    case Pattern::Spike: return "spike";
+    case Pattern::Squarel: return "squarel";
+  }
+  return "?";
+}
+
+std::optional<Pattern> parse_pattern(std::string_view s) {
+  for (const Pattern p : {Pattern::Boustrophedon, Pattern::Spiral, Pattern::Concentric, Pattern::Spike, Pattern::Squarel})
+    if (to_string(p) == s) return p;
+  return std::nullopt;
+}
+
+namespace detail {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// The slice at level lam as a curve with parameter s: circles by angle, rays by distance from
+// c, diamonds by perimeter position (corner k at s = k, corners (L,0), (0,L), (-L,0), (0,-L)).
+struct Slices {
+  SliceFamily f;
+  Point c;
+  double period(double) const { return f == SliceFamily::Circular ? 2 * kPi : f == SliceFamily::Squarel ? 4.0 : 0.0; }
+  Point at(double lam, double s) const {
+    switch (f) {
+      case SliceFamily::Circular: return {c.x() + lam * std::cos(s), c.y() + lam * std::sin(s)};
+      case SliceFamily::Spike: return {c.x() + s * std::cos(lam), c.y() + s * std::sin(lam)};
+      case SliceFamily::Squarel: {
+        const double u = s - 4 * std::floor(s / 4);
+        const int k = std::min(3, static_cast<int>(u));
+        const double t = u - k;
+        static constexpr double xs[] = {1, 0, -1, 0, 1}, ys[] = {0, 1, 0, -1, 0};
+        return {c.x() + lam * (xs[k] + t * (xs[k + 1] - xs[k])), c.y() + lam * (ys[k] + t * (ys[k + 1] - ys[k]))};
+      }
+    }
+    return c;
+  }
+  // Parameters where the slice at lam crosses segment ab.
+  void crossings(double lam, const Point& a, const Point& b, std::vector<double>& out) const {
+    const double ax = a.x() - c.x(), ay = a.y() - c.y(), dx = b.x() - a.x(), dy = b.y() - a.y();
+    if (f == SliceFamily::Circular) {
+      const double A = dx * dx + dy * dy, B = 2 * (ax * dx + ay * dy), C = ax * ax + ay * ay - lam * lam;
+      const double D = B * B - 4 * A * C;
+      if (A == 0 || D < 0) return;
+      const double r = std::sqrt(D);
+      for (const double t : {(-B - r) / (2 * A), (-B + r) / (2 * A)})
+        if (t >= 0 && t < 1) out.push_back(std::atan2(ay + t * dy, ax + t * dx));
+      return;
+    }
+    auto seg = [&](double px, double py, double qx, double qy, double s0, double s1, bool ray) {
+      // p + u (q - p) = a' + t d  (coordinates relative to c)
+      const double wx = qx - px, wy = qy - py, den = wx * dy - wy * dx;
+      if (den == 0) return;
+      const double u = ((ax - px) * dy - (ay - py) * dx) / den, t = ((ax - px) * wy - (ay - py) * wx) / den;
+      if (t < 0 || t >= 1 || u < 0 || (!ray && u > 1)) return;
+      out.push_back(s0 + u * (s1 - s0));
+    };
+    if (f == SliceFamily::Spike) {
+      seg(0, 0, std::cos(lam), std::sin(lam), 0, 1, true);
+      return;
+    }
+    static constexpr double xs[] = {1, 0, -1, 0, 1}, ys[] = {0, 1, 0, -1, 0};
+    for (int k = 0; k < 4; ++k) seg(lam * xs[k], lam * ys[k], lam * xs[k + 1], lam * ys[k + 1], k, k + 1, false);
+  }
+};
+
+bool inside_rings(const std::vector<std::vector<Point>>& rings, const Point& p) {
+  bool in = false;
+  for (const auto& r : rings)
+    for (std::size_t i = 0, j = r.size() - 1; i < r.size(); j = i++)
+      if ((r[i].y() > p.y()) != (r[j].y() > p.y()) && p.x() < (r[j].x() - r[i].x()) * (p.y() - r[i].y()) / (r[j].y() - r[i].y()) + r[i].x())
+        in = !in;
+  return in;
+}
+
+struct Interval {
+  double a, b;  // parameters along the slice, a < b (b - a = period for a whole loop)
+  bool loop = false;
+};
+
+// The slice at lam inside the cell (normally one interval: the Morse property).
+std::vector<Interval> slice_in_cell(const Slices& S, double lam, const std::vector<std::vector<Point>>& rings, double far) {
+  std::vector<double> xs;
+  for (const auto& r : rings)
+    for (std::size_t i = 0; i < r.size(); ++i) S.crossings(lam, r[i], r[(i + 1) % r.size()], xs);
+  std::sort(xs.begin(), xs.end());
+  std::vector<Interval> out;
+  const double period = S.period(lam);
+  if (period > 0) {
+    if (xs.empty()) {
+      if (inside_rings(rings, S.at(lam, 0))) out.push_back({0, period, true});
+      return out;
+    }
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+      const double a = xs[i], b = i + 1 < xs.size() ? xs[i + 1] : xs[0] + period;
+      if (b - a <= 0) continue;
+      if (inside_rings(rings, S.at(lam, (a + b) / 2))) out.push_back({a, b});
+    }
+    return out;
+  }
+  xs.insert(xs.begin(), 0.0);
+  xs.push_back(far);
+  for (std::size_t i = 0; i + 1 < xs.size(); ++i)
+    if (xs[i + 1] > xs[i] && inside_rings(rings, S.at(lam, (xs[i] + xs[i + 1]) / 2))) out.push_back({xs[i], xs[i + 1]});
+  return out;
+}
+
+// Points along the slice from parameter a to b (either order), chords within `sag`.
+void sample(const Slices& S, double lam, double a, double b, double sag, std::vector<Point>& out) {
+  if (S.f == SliceFamily::Spike) {
+    out.push_back(S.at(lam, a)), out.push_back(S.at(lam, b));
+    return;
+  }
+  if (S.f == SliceFamily::Squarel) {
+    out.push_back(S.at(lam, a));
+    if (a < b) {
+      for (double k = std::floor(a) + 1; k < b; ++k) out.push_back(S.at(lam, k));
+    } else {
+      for (double k = std::ceil(a) - 1; k > b; --k) out.push_back(S.at(lam, k));
+    }
+    out.push_back(S.at(lam, b));
+    return;
+  }
+  const double step = lam > sag ? std::min(kPi / 8, 2 * std::acos(1 - sag / lam)) : kPi / 8;
+  const auto n = static_cast<std::size_t>(std::ceil(std::abs(b - a) / step));
+  for (std::size_t i = 0; i <= n; ++i) out.push_back(S.at(lam, a + (b - a) * static_cast<double>(i) / static_cast<double>(std::max<std::size_t>(n, 1))));
+}
+
+}  // namespace
+
+CoverageReport plan_pattern(const Planning& P) {
+  const Pattern pattern = P.o.pattern;
+  const SliceFamily family = pattern == Pattern::Spike ? SliceFamily::Spike : pattern == Pattern::Squarel ? SliceFamily::Squarel : SliceFamily::Circular;
+  const auto box = P.env.bbox();
+  const Point centre = P.o.centre.value_or(Point((box.xmin() + box.xmax()) / 2, (box.ymin() + box.ymax()) / 2));
+  const MorseDecomposition m(P.E, family, centre);
+  const Slices S{family, centre};
+  const double w = P.w;
+  const double scale = std::max(box.xmax() - box.xmin(), box.ymax() - box.ymin());
+  const double far = 4 * scale + std::hypot(centre.x() - box.xmin(), centre.y() - box.ymin()) + std::hypot(centre.x() - box.xmax(), centre.y() - box.ymax());
+  const double sag = std::min(w / 20, 1e-3 * scale), eps = 1e-9 * scale;
+  std::vector<double> node_level(m.num_nodes(), 0);
+  for (const auto& k : m.critical_points()) node_level[k.node] = k.level;
+
+  // The laps of every cell, in level order.
+  struct Lap { std::vector<Point> pts; bool loop; };
+  const std::size_t n = m.cells().size();
+  std::vector<std::vector<Lap>> laps(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto& cell = m.cells()[k];
+    const auto rings = m.cell_rings(k, std::min(sag, w / 1000));
+    double lo = 0, hi = 0, step = w;
+    if (family == SliceFamily::Spike) {
+      double rmax = 0;
+      for (const auto& r : rings)
+        for (const Point& p : r) rmax = std::max(rmax, std::hypot(p.x() - centre.x(), p.y() - centre.y()));
+      if (cell.nodes.empty()) {
+        lo = 0, hi = 2 * kPi;
+      } else {
+        lo = std::min(node_level[cell.nodes.front()], node_level[cell.nodes.back()]);
+        hi = std::max(node_level[cell.nodes.front()], node_level[cell.nodes.back()]);
+        if (cell.nodes.size() == 1) hi = lo + 2 * kPi;
+        else if (slice_in_cell(S, (lo + hi) / 2, rings, far).empty()) std::swap(lo, hi), hi += 2 * kPi;  // the other way round
+      }
+      step = rmax > 0 ? w / rmax : 2 * kPi;
+    } else {
+      if (cell.nodes.size() != 2) throw std::logic_error("coverage: a Morse cell without two critical slices");
+      lo = std::min(node_level[cell.nodes[0]], node_level[cell.nodes[1]]), hi = std::max(node_level[cell.nodes[0]], node_level[cell.nodes[1]]);
+    }
+    const auto count = static_cast<std::size_t>(std::max(1.0, std::ceil((hi - lo) / step)));
+    const double gap = (hi - lo) / static_cast<double>(count);
+    const bool spiral = (pattern == Pattern::Spiral || pattern == Pattern::Squarel) && count >= 2 &&
+                        [&] { const auto iv = slice_in_cell(S, (lo + hi) / 2, rings, far); return iv.size() == 1 && iv[0].loop; }();
+    if (spiral) {
+      // One spiral from the first level to the last: the level grows by `gap` per turn.
+      const double period = S.period(0), turns = static_cast<double>(count - 1);
+      const double total = turns * period;
+      const double ds = family == SliceFamily::Squarel ? 0.25 : std::min(kPi / 8, 2 * std::acos(std::max(-1.0, 1 - sag / std::max(lo + gap / 2, sag))));
+      Lap lap{{}, false};
+      for (double s = 0;; s += ds) {
+        const double t = std::min(s, total);
+        lap.pts.push_back(S.at(lo + gap / 2 + gap * t / period, t));
+        if (t >= total) break;
+      }
+      laps[k].push_back(std::move(lap));
+      continue;
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+      const double lam = lo + gap * (static_cast<double>(i) + 0.5);
+      for (const Interval& iv : slice_in_cell(S, lam, rings, far)) {
+        Lap lap{{}, iv.loop};
+        if (iv.loop) sample(S, lam, 0, S.period(lam), sag, lap.pts);
+        else sample(S, lam, iv.a + eps / std::max(1.0, lam), iv.b - eps / std::max(1.0, lam), sag, lap.pts);
+        laps[k].push_back(std::move(lap));
+      }
+    }
+  }
+
+  // Cell order: the exhaustive walk (depth-first) of the adjacency graph from the start's cell.
+  const auto adj = m.adjacency();
+  std::uint32_t first = 0;
+  if (P.start)
+    if (const auto c = m.cell_of(*P.start)) first = static_cast<std::uint32_t>(*c);
+  std::vector<std::uint32_t> order;
+  {
+    std::vector<char> seen(n, 0);
+    std::vector<std::uint32_t> roots{first};  // then every other component of the graph
+    for (std::uint32_t k = 0; k < n; ++k) roots.push_back(k);
+    for (const std::uint32_t root : roots) {
+      if (seen[root]) continue;
+      std::vector<std::uint32_t> stack{root};
+      while (!stack.empty()) {
+        const std::uint32_t k = stack.back();
+        stack.pop_back();
+        if (seen[k]) continue;
+        seen[k] = 1;
+        order.push_back(k);
+        for (auto it = adj[k].rbegin(); it != adj[k].rend(); ++it)
+          if (!seen[*it]) stack.push_back(*it);
+      }
+    }
+  }
+
+  // Assemble, keeping only points in the free space and joining consecutive points by a
+  // straight move when it is certified, else by the shortest path.
+  Polyline path;
+  if (P.o.start) path.append(*P.o.start, Move::Transit);
+  if (P.start && (path.points.empty() || *P.start != path.points.back())) path.append(*P.start, Move::Transit);
+  std::size_t lap_count = 0, detours = 0;
+  auto go = [&](const Point& z, Move move) {
+    if (path.points.empty()) {
+      path.append(z, move);
+      return;
+    }
+    const Point a = path.points.back();
+    if (a == z) return;
+    if (P.index.visible(a, z) && (P.cs.radius() == 0 || P.cs.admits(a, z))) {
+      path.append(z, move);
+      return;
+    }
+    const auto sp = P.graph.shortest_path(a, z);
+    if (!sp.found) throw std::logic_error("coverage: no path between two points of one component");
+    ++detours;
+    for (std::size_t i = 1; i < sp.points.size(); ++i) path.append(sp.points[i], move == Move::Lap ? Move::Follow : move);
+  };
+  auto free_point = [&](const Point& p) { return P.index.locate(p).in_free_space(); };
+  for (const std::uint32_t k : order) {
+    auto& cl = laps[k];
+    if (cl.empty()) continue;
+    // Run the levels upwards or downwards, whichever starts nearer.
+    if (!path.points.empty()) {
+      const Point& here = path.points.back();
+      const auto d = [&](const Point& p) { return std::hypot(p.x() - here.x(), p.y() - here.y()); };
+      if (d(cl.back().pts.back()) + 1e-12 < std::min(d(cl.front().pts.front()), d(cl.front().pts.back()))) std::reverse(cl.begin(), cl.end());
+    }
+    bool forward = true;
+    if (!path.points.empty()) {
+      const Point& here = path.points.back();
+      const auto d = [&](const Point& p) { return std::hypot(p.x() - here.x(), p.y() - here.y()); };
+      forward = d(cl.front().pts.front()) <= d(cl.front().pts.back());
+    }
+    bool entered = false;
+    for (Lap& lap : cl) {
+      if (!forward) std::reverse(lap.pts.begin(), lap.pts.end());
+      bool first_point = true;
+      for (const Point& p : lap.pts) {
+        if (!free_point(p)) continue;
+        go(p, first_point ? (entered ? Move::Follow : Move::Transit) : Move::Lap);
+        first_point = false;
+      }
+      if (!first_point) ++lap_count, entered = true;
+      if (!lap.loop) forward = !forward;  // boustrophedon in the level; loops keep their sense
+    }
+  }
+  if (path.points.empty()) throw InputError("coverage: no lap fits in the free space at this width");
+
+  CoverageReport rep;
+  finish_path(P, std::move(path), rep);
+  rep.rounding_detours = detours;
+  rep.laps = lap_count;
+  rep.cells = n;
+  rep.critical_points = m.num_nodes();
+  rep.cell_order = order;
+  rep.sweeps.assign(order.size(), 0);
+  return rep;
+}
+
+}  // namespace detail
+}  // namespace preimage::decompose
