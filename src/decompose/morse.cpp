@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <numeric>
@@ -19,6 +20,7 @@ std::string_view to_string(SliceFamily f) {
     case SliceFamily::Circular: return "circular";
     case SliceFamily::Spike: return "spike";
     case SliceFamily::Squarel: return "squarel";
+    case SliceFamily::Linear: return "linear";
   }
   return "?";
 }
@@ -27,6 +29,7 @@ std::optional<SliceFamily> parse_slice_family(std::string_view s) {
   if (s == "circular") return SliceFamily::Circular;
   if (s == "spike") return SliceFamily::Spike;
   if (s == "squarel") return SliceFamily::Squarel;
+  if (s == "linear") return SliceFamily::Linear;
   return std::nullopt;
 }
 
@@ -160,6 +163,7 @@ double MorseDecomposition::level(const Point& p) const {
   switch (family_) {
     case SliceFamily::Circular: return std::hypot(dx, dy);
     case SliceFamily::Squarel: return std::abs(dx) + std::abs(dy);
+    case SliceFamily::Linear: return p.x();
     case SliceFamily::Spike: {
       double a = std::atan2(dy, dx);
       if (a < 0) a += kTwoPi;
@@ -213,6 +217,66 @@ struct Builder {
   std::vector<FT> foot;                                          // circular: parameter of the foot per edge
   std::uint32_t centre_point = UINT32_MAX;
 
+  // Edges by the range of h over them, padded: the slice at level lam can only meet the
+  // edges of lam's bucket, so shooting tests a few edges instead of all (the exact tests
+  // below decide; the buckets only have to hold a superset). Spike levels are cyclic angles.
+  double index_lo = 0, index_width = 1;
+  std::vector<std::vector<std::uint32_t>> buckets;
+  double level_of(const Point& p) const {
+    const double dx = p.x() - capprox.x(), dy = p.y() - capprox.y();
+    switch (fam) {
+      case SliceFamily::Circular: return std::hypot(dx, dy);
+      case SliceFamily::Squarel: return std::abs(dx) + std::abs(dy);
+      case SliceFamily::Linear: return p.x();
+      case SliceFamily::Spike: return std::atan2(dy, dx);
+    }
+    return 0;
+  }
+  void build_index() {
+    std::vector<std::pair<double, double>> range(n);
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (std::size_t e = 0; e < n; ++e) {
+      const Point &a = env.vertex(e), &b = env.vertex(env.next(e));
+      double l0 = level_of(a), l1 = level_of(b);
+      if (fam == SliceFamily::Spike) {
+        const double d = std::remainder(l1 - l0, 2 * std::numbers::pi);  // the edge subtends less than pi
+        l1 = l0 + d;
+      }
+      double mn = std::min(l0, l1), mx = std::max(l0, l1);
+      const double dx = b.x() - a.x(), dy = b.y() - a.y(), L2 = dx * dx + dy * dy;
+      if (fam == SliceFamily::Circular && L2 > 0) {
+        const double t = ((capprox.x() - a.x()) * dx + (capprox.y() - a.y()) * dy) / L2;
+        if (t > 0 && t < 1) mn = std::min(mn, level_of(Point(a.x() + t * dx, a.y() + t * dy)));
+      } else if (fam == SliceFamily::Squarel) {
+        for (const double t : {dx != 0 ? (capprox.x() - a.x()) / dx : -1.0, dy != 0 ? (capprox.y() - a.y()) / dy : -1.0})
+          if (t > 0 && t < 1) mn = std::min(mn, level_of(Point(a.x() + t * dx, a.y() + t * dy)));
+      }
+      range[e] = {mn, mx};
+      lo = std::min(lo, mn), hi = std::max(hi, mx);
+    }
+    const double pad = 1e-7 * (1 + hi - lo) + 1e-9 * std::max(std::abs(lo), std::abs(hi));
+    if (fam == SliceFamily::Spike) lo = -std::numbers::pi, hi = std::numbers::pi;
+    const std::size_t k = std::clamp<std::size_t>(n / 4, 1, 4096);
+    index_lo = lo, index_width = std::max((hi - lo) / static_cast<double>(k), 1e-300);
+    buckets.assign(k, {});
+    for (std::size_t e = 0; e < n; ++e) {
+      const auto b0 = static_cast<long>(std::floor((range[e].first - pad - lo) / index_width));
+      const auto b1 = static_cast<long>(std::floor((range[e].second + pad - lo) / index_width));
+      const long kk = static_cast<long>(k);
+      if (fam == SliceFamily::Spike) {
+        for (long b = b0; b <= std::min(b1, b0 + kk - 1); ++b) buckets[static_cast<std::size_t>(((b % kk) + kk) % kk)].push_back(static_cast<std::uint32_t>(e));
+      } else {
+        for (long b = std::max(0L, b0); b <= std::min(kk - 1, b1); ++b) buckets[static_cast<std::size_t>(b)].push_back(static_cast<std::uint32_t>(e));
+      }
+    }
+  }
+  const std::vector<std::uint32_t>& candidates(const Point& q) const {
+    const long kk = static_cast<long>(buckets.size());
+    long b = static_cast<long>(std::floor((level_of(q) - index_lo) / index_width));
+    b = fam == SliceFamily::Spike ? ((b % kk) + kk) % kk : std::clamp(b, 0L, kk - 1);
+    return buckets[static_cast<std::size_t>(b)];
+  }
+
   V2 edge_dir(std::size_t e) const { return sub(env.exact_vertex(env.next(e)), env.exact_vertex(e)); }
 
   std::uint32_t add_point(MorsePoint p) {
@@ -257,6 +321,7 @@ struct Builder {
     switch (fam) {
       case SliceFamily::Circular: return ccw ? V2{-u.y, u.x} : V2{u.y, -u.x};
       case SliceFamily::Spike: return ccw ? u : V2{-u.x, -u.y};
+      case SliceFamily::Linear: return ccw ? V2{0, 1} : V2{0, -1};
       case SliceFamily::Squarel: return diamond_direction(ccw ? quadrant_ccw_after(u) : quadrant_cw_before(u), ccw);
     }
     return u;
@@ -289,6 +354,7 @@ struct Builder {
     const V2 q = rational(points[from]);
     switch (fam) {
       case SliceFamily::Spike: return shoot_ray(from, q, ccw, span);
+      case SliceFamily::Linear: return shoot_ray(from, q, ccw, span);
       case SliceFamily::Squarel: return shoot_diamond(from, q, ccw, corners, span);
       case SliceFamily::Circular: return shoot_circle(from, q, ccw, span);
     }
@@ -325,13 +391,14 @@ struct Builder {
   }
 
   // Segment s + u (z - s), u in (lo, 1], against every edge: the smallest u. Exact.
-  std::optional<std::pair<FT, Candidate>> first_hit_on_segment(const V2& s, const V2& z, bool skip_start) {
+  std::optional<std::pair<FT, Candidate>> first_hit_on_segment(const V2& s, const V2& z, bool skip_start,
+                                                               const std::vector<std::uint32_t>& edges) {
     const V2 w{z.x - s.x, z.y - s.y};
     const double sx = CGAL::to_double(s.x), sy = CGAL::to_double(s.y), zx = CGAL::to_double(z.x), zy = CGAL::to_double(z.y);
     const double pad = 1e-9 * (1 + std::max({std::abs(sx), std::abs(sy), std::abs(zx), std::abs(zy)}));
     const double lox = std::min(sx, zx) - pad, hix = std::max(sx, zx) + pad, loy = std::min(sy, zy) - pad, hiy = std::max(sy, zy) + pad;
     std::optional<std::pair<FT, Candidate>> best;
-    for (std::size_t e = 0; e < n; ++e) {
+    for (const std::size_t e : edges) {
       const Point &a = env.vertex(e), &b = env.vertex(env.next(e));
       if (std::max(a.x(), b.x()) < lox || std::min(a.x(), b.x()) > hix || std::max(a.y(), b.y()) < loy || std::min(a.y(), b.y()) > hiy)
         continue;
@@ -361,14 +428,18 @@ struct Builder {
     return best;
   }
 
+  // Spike: the ray from q away from c (outwards) or towards it, stopping at c. Linear: the
+  // vertical ray up (outwards) or down.
   Candidate shoot_ray(std::uint32_t from, const V2& q, bool outwards, double& span) {
-    const V2 u{q.x - c.x(), q.y - c.y()};
+    const bool linear = fam == SliceFamily::Linear;
+    const V2 u = linear ? V2{0, 1} : V2{q.x - c.x(), q.y - c.y()};
     const Point qa = points[from].approx;
-    // Only edges whose endpoints are not strictly on one side of the line c-q can meet it
-    // (an exact test on the input doubles; q is a vertex for this family).
+    const Point other = linear ? Point(qa.x(), qa.y() + 1) : capprox;
+    // Only edges whose endpoints are not strictly on one side of the slice's line can meet it
+    // (an exact test on the input doubles; q is a vertex for these families).
     std::optional<std::pair<FT, Candidate>> best;
-    for (std::size_t e = 0; e < n; ++e) {
-      const int oa = geometry::orientation(capprox, qa, env.vertex(e)), ob = geometry::orientation(capprox, qa, env.vertex(env.next(e)));
+    for (const std::size_t e : candidates(qa)) {
+      const int oa = geometry::orientation(other, qa, env.vertex(e)), ob = geometry::orientation(other, qa, env.vertex(env.next(e)));
       if (oa == ob && oa != 0) continue;
       const ExactPoint& ea = env.exact_vertex(e);
       const V2 d = edge_dir(e);
@@ -382,7 +453,7 @@ struct Builder {
         for (const std::uint32_t v : {static_cast<std::uint32_t>(e), static_cast<std::uint32_t>(env.next(e))}) {
           const ExactPoint& pv = env.exact_vertex(v);
           const FT s = dot(V2{pv.x() - q.x, pv.y() - q.y}, dir) / dd;
-          if (sgn(s) <= 0 || (!outwards && !(s < 1))) continue;
+          if (sgn(s) <= 0 || (!outwards && !linear && !(s < 1))) continue;
           if (best && !(s < best->first)) continue;
           best.emplace(s, vertex_candidate(v));
         }
@@ -390,13 +461,13 @@ struct Builder {
       }
       const FT s = cross(as, d) / den, t = cross(as, dir) / den;
       if (sgn(s) <= 0 || sgn(t) < 0 || t > 1) continue;
-      if (!outwards && !(s < 1)) continue;  // beyond the centre
+      if (!outwards && !linear && !(s < 1)) continue;  // beyond the centre
       if (best && !(s < best->first)) continue;
       best.emplace(s, candidate_at(static_cast<std::uint32_t>(e), t));
     }
     span = 0;
     if (best) return best->second;
-    if (!outwards) {
+    if (!outwards && !linear) {
       Candidate k;
       k.kind = MorsePoint::Kind::Centre, k.id = 0;
       return k;
@@ -404,7 +475,7 @@ struct Builder {
     throw std::logic_error("morse: a ray left the environment");
   }
 
-  Candidate shoot_diamond(std::uint32_t, const V2& q, bool ccw, std::vector<Point>& corners, double& span) {
+  Candidate shoot_diamond(std::uint32_t from, const V2& q, bool ccw, std::vector<Point>& corners, double& span) {
     const V2 u{q.x - c.x(), q.y - c.y()};
     const FT L = CGAL::abs(u.x) + CGAL::abs(u.y);
     auto corner_of = [&](int k) {  // corners ccw: (L,0), (0,L), (-L,0), (0,-L)
@@ -425,13 +496,14 @@ struct Builder {
       k = quad;  // quadrant 0 starts at corner 0, which is its cw end
     }
     const bool at_corner = sgn(u.x) == 0 || sgn(u.y) == 0;
+    const auto& edges = candidates(points[from].approx);
     std::vector<V2> walk;
     const int pieces = at_corner ? 3 : 4;
     for (int i = 0; i < pieces; ++i) walk.push_back(corner_of(ccw ? k + i : k - i + 4));
     walk.push_back(q);
     V2 s = q;
     for (std::size_t i = 0; i < walk.size(); ++i) {
-      const auto hit = first_hit_on_segment(s, walk[i], i == 0);
+      const auto hit = first_hit_on_segment(s, walk[i], i == 0, edges);
       if (hit) {
         span = 0;
         return hit->second;
@@ -449,22 +521,51 @@ struct Builder {
     const double Rd = CGAL::to_double(R), cx = capprox.x(), cy = capprox.y();
     const double u0x = CGAL::to_double(u0.x), u0y = CGAL::to_double(u0.y);
     std::vector<Candidate> cands;
-    auto sq = [&](const Point& p) { return (p.x() - cx) * (p.x() - cx) + (p.y() - cy) * (p.y() - cy); };
-    for (std::size_t e = 0; e < n; ++e) {
+    // Phase 1, double: where each edge crosses the circle and at what angle from q. An edge
+    // is *unsure* when the crossing is near an end of a monotone piece or nearly tangent;
+    // phase 2 decides exactly the unsure edges, the edges at q, and every edge whose crossing
+    // comes within 1e-6 rad of the first sure one (far beyond double's error elsewhere).
+    const double qx = CGAL::to_double(q.x), qy = CGAL::to_double(q.y);
+    // A pseudo-angle (monotone in the angle swept from q, in (0, 4]; no trigonometry).
+    auto swept = [&](double zx, double zy) {
+      const double X = u0x * zx + u0y * zy, Y = (ccw ? 1 : -1) * (u0x * zy - u0y * zx);
+      const double p = Y >= 0 ? (X >= 0 ? Y / (X + Y) : 1 - X / (Y - X)) : (X < 0 ? 2 - Y / (-X - Y) : 3 + X / (X - Y));
+      return p <= 0 ? 4.0 : p;
+    };
+    std::vector<std::pair<std::uint32_t, double>> phase1;  // edge, first angle (infinity: unsure)
+    double first_sure = std::numeric_limits<double>::infinity();
+    for (const std::size_t e : candidates(points[from].approx)) {
       const Point &a = env.vertex(e), &b = env.vertex(env.next(e));
-      // Prefilter in double, padded: the squared distances over the edge span [lo, hi].
-      const double ra = sq(a), rb = sq(b);
-      double lo = std::min(ra, rb);
-      {
-        const double dx = b.x() - a.x(), dy = b.y() - a.y(), L2 = dx * dx + dy * dy;
-        const double t = L2 > 0 ? ((cx - a.x()) * dx + (cy - a.y()) * dy) / L2 : 0;
-        if (t > 0 && t < 1) {
-          const double fx = a.x() + t * dx - cx, fy = a.y() + t * dy - cy;
-          lo = std::min(lo, fx * fx + fy * fy);
+      const double ax = a.x() - cx, ay = a.y() - cy, dx = b.x() - a.x(), dy = b.y() - a.y();
+      const double A = dx * dx + dy * dy, B = 2 * (ax * dx + ay * dy), C = ax * ax + ay * ay - Rd;
+      const double scale2 = ax * ax + ay * ay + A + Rd;
+      const bool at_q = (a.x() == qx && a.y() == qy) || (b.x() == qx && b.y() == qy) || (points[from].kind == MorsePoint::Kind::OnEdge && points[from].id == e);
+      const double D = B * B - 4 * A * C;
+      if (D < -1e-9 * B * B - 1e-9 * scale2 * A) {
+        if (at_q) phase1.emplace_back(static_cast<std::uint32_t>(e), std::numeric_limits<double>::infinity());
+        continue;  // misses the circle by far
+      }
+      const double fa = C, fb = A + B + C;  // |p - c|^2 - R at the two ends
+      bool unsure = at_q || std::abs(D) <= 1e-6 * B * B + 1e-12 * scale2 * A || std::abs(fa) <= 1e-9 * scale2 || std::abs(fb) <= 1e-9 * scale2;
+      double best_here = std::numeric_limits<double>::infinity();
+      if (!unsure) {
+        const double r = std::sqrt(std::max(0.0, D));
+        for (const double t : {(-B - r) / (2 * A), (-B + r) / (2 * A)}) {
+          if (std::abs(t) <= 1e-9 || std::abs(t - 1) <= 1e-9) unsure = true;
+          if (t > 0 && t < 1) best_here = std::min(best_here, swept(ax + t * dx, ay + t * dy));
         }
       }
-      const double hi = std::max(ra, rb), pad = 1e-9 * (hi + Rd) + 1e-300;
-      if (Rd < lo - pad || Rd > hi + pad) continue;
+      if (unsure) {
+        phase1.emplace_back(static_cast<std::uint32_t>(e), std::numeric_limits<double>::infinity());
+      } else if (best_here < std::numeric_limits<double>::infinity()) {
+        phase1.emplace_back(static_cast<std::uint32_t>(e), best_here);
+        first_sure = std::min(first_sure, best_here);
+      }
+    }
+    for (const auto& [e, angle] : phase1) {
+      if (angle < std::numeric_limits<double>::infinity() && angle > first_sure + 1e-6) continue;
+      const Point &a = env.vertex(e), &b = env.vertex(env.next(e));
+      (void)a, (void)b;
       // Exact: the monotone sub-edges [0, foot] and [foot, 1].
       const ExactPoint& ea = env.exact_vertex(e);
       const V2 d = edge_dir(e);
@@ -596,7 +697,7 @@ void MorseDecomposition::build() {
   const std::string who = std::string("the ") + std::string(to_string(family_)) + " decomposition";
   geometry::require_no_contacts(env, who);
   const ExactPoint c = geometry::to_exact(centre_);
-  {
+  if (family_ != SliceFamily::Linear) {  // h = x has no centre
     const auto loc = geometry::locate(env, c);
     using K = geometry::Location::Kind;
     if (loc.kind == K::OnEdge || loc.kind == K::AtVertex)
@@ -605,7 +706,8 @@ void MorseDecomposition::build() {
     centre_free_ = loc.kind == K::Interior;
   }
   const std::size_t n = env.num_vertices();
-  Builder B{env, family_, c, centre_, n, points_, {}, {}, {}};
+  Builder B{env, family_, c, centre_, n, points_, {}, {}, {}, UINT32_MAX, 0, 1, {}};
+  B.build_index();
   B.vertex_point.resize(n);
   B.on_edge.resize(n);
   for (std::size_t v = 0; v < n; ++v) {
@@ -670,7 +772,9 @@ void MorseDecomposition::build() {
     std::vector<char> flat(m, 0);
     for (std::size_t i = 0; i < m; ++i) {
       const V2 a = P(i), d = dir(i);
-      if (family_ == SliceFamily::Spike) {
+      if (family_ == SliceFamily::Linear) {
+        flat[i] = sgn(d.x) == 0;  // a vertical wall
+      } else if (family_ == SliceFamily::Spike) {
         flat[i] = sgn(cross(d, V2{c.x() - a.x, c.y() - a.y})) == 0;
       } else if (family_ == SliceFamily::Squarel) {
         const V2 mid{a.x + d.x / 2 - c.x(), a.y + d.y / 2 - c.y()};
@@ -841,7 +945,7 @@ void MorseDecomposition::build() {
   };
   auto piece_area2 = [&](const Half& h) {  // twice the signed area term (Green), circles exact
     const Point &a = points_[h.from].approx, &b = points_[h.to].approx;
-    if (h.arc < 0 || family_ == SliceFamily::Spike) return a.x() * b.y() - a.y() * b.x();
+    if (h.arc < 0 || family_ == SliceFamily::Spike || family_ == SliceFamily::Linear) return a.x() * b.y() - a.y() * b.x();
     const MorseArc& arc = arcs_[static_cast<std::size_t>(h.arc)];
     if (family_ == SliceFamily::Squarel) {
       auto pl = arc.polyline(0);
@@ -883,12 +987,25 @@ void MorseDecomposition::build() {
   const auto box = env.bbox();
   const double scale = std::max({box.xmax() - box.xmin(), box.ymax() - box.ymin(), 1e-300});
   const double err = 1e-8 * scale, margin = 1e-7 * scale;
+  // Cycles as polylines only where a point must be located: a coarse, padded box first, the
+  // fine ring (arcs within err) on demand.
+  std::vector<CGAL::Bbox_2> cycle_box(cycles.size());
+  for (std::size_t k = 0; k < cycles.size(); ++k) {
+    CGAL::Bbox_2 b;
+    for (const std::uint32_t h : cycles[k])
+      for (const Point& p : piece_polyline(halves[h], 1e-3 * scale)) b += p.bbox();
+    const double pad = 2e-3 * scale + margin;
+    cycle_box[k] = CGAL::Bbox_2(b.xmin() - pad, b.ymin() - pad, b.xmax() + pad, b.ymax() + pad);
+  }
   std::vector<std::vector<Point>> rings(cycles.size());
-  for (std::size_t k = 0; k < cycles.size(); ++k)
-    for (const std::uint32_t h : cycles[k]) {
-      auto pl = piece_polyline(halves[h], err);
-      rings[k].insert(rings[k].end(), pl.begin(), pl.end() - 1);
-    }
+  auto ring = [&](std::size_t k) -> const std::vector<Point>& {
+    if (rings[k].empty())
+      for (const std::uint32_t h : cycles[k]) {
+        auto pl = piece_polyline(halves[h], err);
+        rings[k].insert(rings[k].end(), pl.begin(), pl.end() - 1);
+      }
+    return rings[k];
+  };
   // Which cycles are inner: every component but the outer boundary's has one cycle around it
   // (its most negative); all other cycles bound cells. (Signs alone would misfile the slivers
   // between two critical slices that are exactly distinct but closer than double rounding.)
@@ -920,7 +1037,9 @@ void MorseDecomposition::build() {
       for (std::size_t k = 0; k < cycles.size(); ++k) {
         if (inner[k]) continue;
         if (find(comp, halves[cycles[k][0]].from) == skip_comp) continue;
-        if (!ray_parity(x, phi, rings[k], margin, unsure)) continue;
+        const auto& bb = cycle_box[k];
+        if (x.x() < bb.xmin() || x.x() > bb.xmax() || x.y() < bb.ymin() || x.y() > bb.ymax()) continue;  // cannot hold x
+        if (!ray_parity(x, phi, ring(k), margin, unsure)) continue;
         if (best < 0 || cycle_area[k] < cycle_area[static_cast<std::size_t>(best)]) best = static_cast<std::int32_t>(k);
       }
       if (!unsure) return best;

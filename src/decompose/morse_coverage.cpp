@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace preimage::decompose {
@@ -58,6 +59,7 @@ struct Slices {
     switch (f) {
       case SliceFamily::Circular: return {c.x() + lam * std::cos(s), c.y() + lam * std::sin(s)};
       case SliceFamily::Spike: return {c.x() + s * std::cos(lam), c.y() + s * std::sin(lam)};
+      case SliceFamily::Linear: return {lam, c.y() + s};  // not a pattern: boustrophedon has its own planner
       case SliceFamily::Squarel: {
         const double u = s - 4 * std::floor(s / 4);
         const int k = std::min(3, static_cast<int>(u));
@@ -179,9 +181,11 @@ CoverageReport plan_pattern(const Planning& P) {
   struct Lap { std::vector<Point> pts; bool loop; };
   const std::size_t n = m.cells().size();
   std::vector<std::vector<Lap>> laps(n);
+  std::vector<std::vector<std::vector<Point>>> cell_rings(n);
   for (std::size_t k = 0; k < n; ++k) {
     const auto& cell = m.cells()[k];
-    const auto rings = m.cell_rings(k, std::min(sag, w / 1000));
+    cell_rings[k] = m.cell_rings(k, std::min(sag, w / 1000));
+    const auto& rings = cell_rings[k];
     double lo = 0, hi = 0, step = w;
     if (family == SliceFamily::Spike) {
       double rmax = 0;
@@ -209,11 +213,15 @@ CoverageReport plan_pattern(const Planning& P) {
       const double period = S.period(0), turns = static_cast<double>(count - 1);
       const double total = turns * period;
       const double ds = family == SliceFamily::Squarel ? 0.25 : std::min(kPi / 8, 2 * std::acos(std::max(-1.0, 1 - sag / std::max(lo + gap / 2, sag))));
+      // A whole turn at the first level, the spiral, a whole turn at the last: without them a
+      // crescent 1.5 gaps wide would stay uncovered along each side of the annulus.
       Lap lap{{}, false};
+      const double first = lo + gap / 2, last = first + gap * turns;
       for (double s = 0;; s += ds) {
-        const double t = std::min(s, total);
-        lap.pts.push_back(S.at(lo + gap / 2 + gap * t / period, t));
-        if (t >= total) break;
+        const double t = std::min(s, total + 2 * period);
+        const double lam = t < period ? first : t > total + period ? last : first + gap * (t - period) / period;
+        lap.pts.push_back(S.at(lam, t));
+        if (t >= total + 2 * period) break;
       }
       laps[k].push_back(std::move(lap));
       continue;
@@ -277,6 +285,53 @@ CoverageReport plan_pattern(const Planning& P) {
     for (std::size_t i = 1; i < sp.points.size(); ++i) path.append(sp.points[i], move == Move::Lap ? Move::Follow : move);
   };
   auto free_point = [&](const Point& p) { return P.index.locate(p).in_free_space(); };
+  // From a to z along the cell's boundary (6.2.3: "motion along the boundary of the cell"),
+  // the shorter way round the ring nearest to both: it sweeps the corners that the laps'
+  // ends cut, where a straight step would leave them uncovered.
+  auto along_boundary = [&](const std::vector<std::vector<Point>>& rings, const Point& a, const Point& z) {
+    std::vector<Point> best;
+    double best_cost = std::numeric_limits<double>::infinity();
+    auto project = [](const std::vector<Point>& r, const Point& p, std::size_t& seg, double& dist) {
+      dist = std::numeric_limits<double>::infinity();
+      Point at = p;
+      for (std::size_t i = 0; i < r.size(); ++i) {
+        const Point &u = r[i], &v = r[(i + 1) % r.size()];
+        const double ex = v.x() - u.x(), ey = v.y() - u.y(), L2 = ex * ex + ey * ey;
+        const double t = L2 > 0 ? std::clamp(((p.x() - u.x()) * ex + (p.y() - u.y()) * ey) / L2, 0.0, 1.0) : 0.0;
+        const Point q(u.x() + t * ex, u.y() + t * ey);
+        const double d = std::hypot(q.x() - p.x(), q.y() - p.y());
+        if (d < dist) dist = d, seg = i, at = q;
+      }
+      return at;
+    };
+    for (const auto& r : rings) {
+      if (r.size() < 3) continue;
+      std::size_t sa = 0, sz = 0;
+      double da = 0, dz = 0;
+      const Point pa = project(r, a, sa, da), pz = project(r, z, sz, dz);
+      if (da + dz >= best_cost) continue;
+      const std::size_t m2 = r.size();
+      // forwards: pa, r[sa+1], ..., r[sz], pz; backwards: pa, r[sa], ..., r[sz+1], pz
+      std::vector<Point> fw{pa}, bw{pa};
+      for (std::size_t i = (sa + 1) % m2; sa != sz && fw.size() <= m2; i = (i + 1) % m2) {
+        fw.push_back(r[i]);
+        if (i == sz) break;
+      }
+      for (std::size_t i = sa; sa != sz && bw.size() <= m2; i = (i + m2 - 1) % m2) {
+        bw.push_back(r[i]);
+        if (i == (sz + 1) % m2) break;
+      }
+      fw.push_back(pz), bw.push_back(pz);
+      auto len = [](const std::vector<Point>& v) {
+        double l = 0;
+        for (std::size_t i = 0; i + 1 < v.size(); ++i) l += std::hypot(v[i + 1].x() - v[i].x(), v[i + 1].y() - v[i].y());
+        return l;
+      };
+      best = len(fw) <= len(bw) ? fw : bw;
+      best_cost = da + dz;
+    }
+    return best;
+  };
   for (const std::uint32_t k : order) {
     auto& cl = laps[k];
     if (cl.empty()) continue;
@@ -298,6 +353,15 @@ CoverageReport plan_pattern(const Planning& P) {
       bool first_point = true;
       for (const Point& p : lap.pts) {
         if (!free_point(p)) continue;
+        if (first_point && entered && !lap.loop) {
+          // Follow the cell's boundary to the next lap unless that wanders far (then step).
+          const auto walk = along_boundary(cell_rings[k], path.points.back(), p);
+          double l = 0;
+          for (std::size_t i = 0; i + 1 < walk.size(); ++i) l += std::hypot(walk[i + 1].x() - walk[i].x(), walk[i + 1].y() - walk[i].y());
+          if (l <= 20 * w + 4 * std::hypot(p.x() - path.points.back().x(), p.y() - path.points.back().y()))
+            for (const Point& b : walk)
+              if (free_point(b)) go(b, Move::Follow);
+        }
         go(p, first_point ? (entered ? Move::Follow : Move::Transit) : Move::Lap);
         first_point = false;
       }

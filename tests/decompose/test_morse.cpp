@@ -3,6 +3,7 @@
 // the Reeb graph, the slice restricted to a cell is connected (sampled), degenerate inputs
 // (flat edges, several critical points on one slice, the centre on the boundary).
 #include <gtest/gtest.h>
+#include <preimage/decompose/boustrophedon.hpp>
 #include <preimage/decompose/morse.hpp>
 #include <preimage/error.hpp>
 #include <preimage/geometry/generators.hpp>
@@ -40,6 +41,7 @@ Point slice_point(SliceFamily f, const Point& c, double lam, double s, double re
   switch (f) {
     case SliceFamily::Circular: return {c.x() + lam * std::cos(t), c.y() + lam * std::sin(t)};
     case SliceFamily::Spike: return {c.x() + s * reach * std::cos(lam), c.y() + s * reach * std::sin(lam)};
+    case SliceFamily::Linear: return {lam, c.y() + (s - 0.5) * reach};
     case SliceFamily::Squarel: {
       const double u = 4 * s;  // corners at u = 0, 1, 2, 3: (L,0), (0,L), (-L,0), (0,-L)
       const int k = static_cast<int>(u) & 3;
@@ -296,4 +298,29 @@ TEST(Morse, CircleThroughAVertexEndsItsArcThere) {
   EXPECT_EQ(foot_node, vertex_node);
   std::mt19937_64 rng(1);
   check(env, SliceFamily::Circular, Point(0, 0), "circle_through_vertex", rng);
+}
+
+TEST(Morse, LinearSlicesReproduceTheBoustrophedonDecomposition) {
+  // h = x through the generic construction against BoustrophedonDecomposition (a sweep over
+  // trapezoids): the same cells (count and exact areas), the same critical slices, on random
+  // environments and on maps full of vertical walls (flat runs).
+  std::vector<std::pair<std::string, Environment>> envs;
+  for (std::uint64_t seed = 0; seed < 40; ++seed)
+    envs.emplace_back("random " + std::to_string(seed), geometry::generators::random_environment(20 + seed % 50, seed % 6, 900 + seed));
+  envs.emplace_back("office", geometry::generators::office(3, 3));
+  for (std::uint64_t seed = 0; seed < 6; ++seed) envs.emplace_back("rectilinear " + std::to_string(seed), geometry::generators::random_rectilinear(6, 5, true, seed));
+  for (const char* name : {"house_expo_room_0000.json", "house_expo_room_1451.json"})
+    envs.emplace_back(name, *scene::import_houseexpo(std::string(PREIMAGE_SHARED_DATA) + "/floorplans/" + name).environment);
+  for (const auto& [what, env] : envs) {
+    const decompose::BoustrophedonDecomposition b(env);
+    const MorseDecomposition m(env, SliceFamily::Linear, Point(0, 0));
+    ASSERT_EQ(m.cells().size(), b.cells().size()) << what;
+    EXPECT_EQ(m.num_nodes(), b.critical_slices().size()) << what;
+    std::vector<double> mine, theirs;
+    for (const auto& c : m.cells()) mine.push_back(c.area);
+    for (std::size_t c = 0; c < b.cells().size(); ++c) theirs.push_back(CGAL::to_double(b.area(c)));
+    std::sort(mine.begin(), mine.end());
+    std::sort(theirs.begin(), theirs.end());
+    for (std::size_t i = 0; i < mine.size(); ++i) EXPECT_NEAR(mine[i], theirs[i], 1e-9 * env.area()) << what << " cell " << i;
+  }
 }

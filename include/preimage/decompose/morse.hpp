@@ -44,7 +44,9 @@ using geometry::ExactFT;
 using geometry::ExactPoint;
 using geometry::Point;
 
-enum class SliceFamily : std::uint8_t { Circular, Spike, Squarel };
+/// Linear is h = x (vertical slices): the boustrophedon decomposition through this generic
+/// construction, kept to check one against the other.
+enum class SliceFamily : std::uint8_t { Circular, Spike, Squarel, Linear };
 std::string_view to_string(SliceFamily f);
 std::optional<SliceFamily> parse_slice_family(std::string_view s);
 
@@ -115,7 +117,7 @@ struct MorseCell {
 
 class MorseDecomposition {
  public:
-  /// Throws InputError for a degenerate input (see above).
+  /// Throws InputError for a degenerate input (see above). `centre` is ignored for Linear.
   MorseDecomposition(const Environment& env, SliceFamily family, const Point& centre);
   MorseDecomposition(Environment&&, SliceFamily, const Point&) = delete;  // keeps a pointer
 
