@@ -364,23 +364,64 @@ GeneralizedVoronoiDiagram GeneralizedVoronoiDiagram::build(const Environment& en
       c.edge = i;
       c.nearest[0] = to_world(sh.min_nearest[0]), c.nearest[1] = to_world(sh.min_nearest[1]);
       g.saddles_.push_back(c);
-    } else if (sh.plateau) {
-      bool rising = true;
-      for (int end = 0; end < 2 && rising; ++end) {
-        const std::uint32_t v = end == 0 ? g.edges_[i].from : g.edges_[i].to;
-        if (incident[v].size() != 2) rising = false;
-        for (const auto& [j, k] : incident[v])
-          if (j != i && shapes[j].slope[k] != 1) rising = false;
+    }
+  }
+  // Plateaus: maximal runs of edges between parallel walls (D constant) joined at degree-2
+  // vertices (a wall with collinear vertices splits one), D rising beyond both ends: the
+  // saddle is the run's midpoint.
+  std::vector<char> in_run(g.edges_.size(), 0);
+  for (std::uint32_t i = 0; i < g.edges_.size(); ++i) {
+    if (!shapes[i].plateau || in_run[i]) continue;
+    in_run[i] = 1;
+    // walk to one end of the run, then collect it from there in order
+    std::uint32_t start = g.edges_[i].from, first = i;
+    for (std::size_t guard = 0; guard <= g.edges_.size(); ++guard) {
+      if (incident[start].size() != 2) break;
+      const std::uint32_t j = incident[start][0].first == first ? incident[start][1].first : incident[start][0].first;
+      if (!shapes[j].plateau || j == i) break;
+      first = j;
+      start = g.edges_[j].from == start ? g.edges_[j].to : g.edges_[j].from;
+    }
+    std::vector<std::uint32_t> run, chain{start};
+    std::uint32_t at = start, e = first;
+    for (std::size_t guard = 0; guard <= g.edges_.size(); ++guard) {
+      run.push_back(e);
+      in_run[e] = 1;
+      at = g.edges_[e].from == at ? g.edges_[e].to : g.edges_[e].from;
+      chain.push_back(at);
+      if (incident[at].size() != 2) break;
+      const std::uint32_t j = incident[at][0].first == e ? incident[at][1].first : incident[at][0].first;
+      if (!shapes[j].plateau || j == first) break;
+      e = j;
+    }
+    auto rises_beyond = [&](std::uint32_t v, std::uint32_t inner) {
+      if (incident[v].size() != 2) return false;
+      const auto& [j, k] = incident[v][0].first == inner ? incident[v][1] : incident[v][0];
+      return !shapes[j].plateau && shapes[j].slope[k] == 1;
+    };
+    if (chain.front() == chain.back() || !rises_beyond(chain.front(), run.front()) || !rises_beyond(chain.back(), run.back())) continue;
+    double total = 0;
+    for (std::size_t k = 0; k + 1 < chain.size(); ++k) total += std::hypot(g.vertices_[chain[k + 1]].p.x() - g.vertices_[chain[k]].p.x(), g.vertices_[chain[k + 1]].p.y() - g.vertices_[chain[k]].p.y());
+    double left = total / 2;
+    for (std::size_t k = 0; k < run.size(); ++k) {
+      const Point& a = g.vertices_[chain[k]].p;
+      const Point& b = g.vertices_[chain[k + 1]].p;
+      const double len = std::hypot(b.x() - a.x(), b.y() - a.y());
+      if (left > len && k + 1 < run.size()) {
+        left -= len;
+        continue;
       }
-      if (rising) {
-        GvdCriticalPoint c;
-        c.kind = GvdCriticalPoint::Kind::Plateau;
-        c.p = to_world(sh.min_point);
-        c.clearance = (g.edges_[i].clearance_from + g.edges_[i].clearance_to) / 2;
-        c.edge = i;
-        c.nearest[0] = to_world(sh.min_nearest[0]), c.nearest[1] = to_world(sh.min_nearest[1]);
-        g.saddles_.push_back(c);
-      }
+      const double t = len > 0 ? std::min(left / len, 1.0) : 0;
+      GvdCriticalPoint c;
+      c.kind = GvdCriticalPoint::Kind::Plateau;
+      c.p = Point(a.x() + t * (b.x() - a.x()), a.y() + t * (b.y() - a.y()));
+      c.clearance = (g.edges_[run[k]].clearance_from + g.edges_[run[k]].clearance_to) / 2;
+      c.edge = run[k];
+      const double px = std::ldexp(c.p.x(), -g.resolution_exponent_), py = std::ldexp(c.p.y(), -g.resolution_exponent_);
+      c.nearest[0] = to_world(nearest_on(edge_sites[run[k]][0], px, py));
+      c.nearest[1] = to_world(nearest_on(edge_sites[run[k]][1], px, py));
+      g.saddles_.push_back(c);
+      break;
     }
   }
   for (std::uint32_t v = 0; v < g.vertices_.size(); ++v) {

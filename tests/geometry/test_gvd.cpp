@@ -209,6 +209,23 @@ TEST(Gvd, DoorBetweenParallelWallEndsIsAPlateauSaddle) {
   check_all(env, "door");
 }
 
+TEST(Gvd, PlateauSplitByCollinearVerticesIsOneSaddle) {
+  // the floor has a straight vertex at (6, 0) under a partition wall: two parallel edges of
+  // the GVD at D = 1.25 in a row, one saddle in the middle of the run
+  const auto env = Environment::make({{0, 0}, {6, 0}, {12, 0}, {12, 8}, {0, 8}}, {{{5.8, 2.5}, {5.8, 7}, {6.2, 7}, {6.2, 2.5}}});
+  const auto g = GeneralizedVoronoiDiagram::build(env);
+  std::size_t found = 0;
+  for (const auto& s : g.saddles())
+    if (std::fabs(s.p.y() - 1.25) < 1e-6) {
+      ++found;
+      EXPECT_EQ(s.kind, GvdCriticalPoint::Kind::Plateau);
+      EXPECT_NEAR(s.p.x(), 6, 1e-6);
+      EXPECT_NEAR(s.clearance, 1.25, 1e-6);
+    }
+  EXPECT_EQ(found, 1u);
+  check_all(env, "split plateau");
+}
+
 TEST(Gvd, SimplePolygonHasNoGvd) {
   // one obstacle: nothing is equidistant to two different ones
   const auto env = Environment::make(generators::star(7), {});
