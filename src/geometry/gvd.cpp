@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The generalized Voronoi diagram from Boost.Polygon's Voronoi diagram of segments.
 //
-// Steps: (1) snap every vertex to the grid 2^k with |coordinate| < 2^29 grid steps and check
+// Steps: (1) snap every vertex to the grid 2^k with |coordinate| < 2^grid_bits grid steps and check
 // exactly (segment sweep) that the snapped edges meet only at shared endpoints; (2) Boost's
 // sweep on the int32 segments; (3) keep the primary edges whose two sites belong to different
 // obstacles (rings joined by contacts), with their sites, clearance and a sampled polyline;
@@ -101,12 +101,14 @@ GeneralizedVoronoiDiagram GeneralizedVoronoiDiagram::build(const Environment& en
     g.segments_.push_back(env.edge(e));
   }
 
-  // ---- snapping: |coordinate| < 2^29 grid steps
+  // ---- snapping: |coordinate| < 2^grid_bits grid steps (int32 for Boost)
   double M = 0;
   for (const Point& p : env.vertices()) M = std::max({M, std::fabs(p.x()), std::fabs(p.y())});
   int e2 = 0;
   std::frexp(M, &e2);  // M < 2^e2
-  g.resolution_exponent_ = e2 - 29;
+  if (options.grid_bits < 16 || options.grid_bits > 30)
+    throw InputError("gvd: grid_bits must be in [16, 30], got " + std::to_string(options.grid_bits));
+  g.resolution_exponent_ = e2 - options.grid_bits;
   g.resolution_ = std::ldexp(1.0, g.resolution_exponent_);
   const double res = g.resolution_;
   std::vector<std::int32_t> X(n), Y(n);

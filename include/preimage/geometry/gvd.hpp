@@ -62,6 +62,9 @@ struct GvdOptions {
   /// Curved edges are sampled so that the polyline stays within this distance of the
   /// arc; 0 means 1/1000 of the larger side of the bounding box.
   double max_deviation = 0;
+  /// Snapping: every |coordinate| is below 2^grid_bits grid steps (16..30). Fewer bits, a
+  /// coarser grid but a faster diagram: Boost's exact fallback works on shorter numbers.
+  int grid_bits = 29;
 };
 
 class GeneralizedVoronoiDiagram {
