@@ -55,7 +55,8 @@ struct GvdCriticalPoint {
   double clearance = 0;
   std::uint32_t edge = UINT32_MAX;    // the edge it lies on (Interior, Plateau), else UINT32_MAX
   std::uint32_t vertex = UINT32_MAX;  // the vertex it is (Vertex), else UINT32_MAX
-  Point nearest[2];                   // nearest points of the two obstacles (saddles: on opposite sides of p)
+  Point nearest[2];                   // nearest points of two obstacles: opposite for Interior and Plateau
+                                      // saddles; at a vertex the most nearly opposite pair
 };
 
 struct GvdOptions {
