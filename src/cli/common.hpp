@@ -57,6 +57,7 @@ std::string count_of(std::size_t n, const std::string& singular, const std::stri
 void add_geometry_commands(CLI::App& app);
 void add_visibility_commands(CLI::App& app);  // visibility, visibility-graph
 void add_decompose_commands(CLI::App& app);
+void add_gvd_commands(CLI::App& app);  // gvd
 void add_beams_commands(CLI::App& app);
 void add_beams_homotopy_commands(CLI::App* beams_cmd);  // homotopy, winding
 void add_wallfollow_commands(CLI::App& app);

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   preimage::cli::add_geometry_commands(app);
   preimage::cli::add_visibility_commands(app);
   preimage::cli::add_decompose_commands(app);
+  preimage::cli::add_gvd_commands(app);
   preimage::cli::add_beams_commands(app);
   preimage::cli::add_wallfollow_commands(app);
   preimage::cli::add_landmarks_commands(app);
