@@ -5,6 +5,7 @@
 #include <preimage/decompose/cell_locator.hpp>
 #include <preimage/geometry/random_point.hpp>
 #include <preimage/decompose/coverage.hpp>
+#include <preimage/decompose/morse.hpp>
 #include <preimage/geometry/generators.hpp>
 
 #include "ratio_reporter.hpp"
@@ -98,7 +99,65 @@ void decomposition_reference(benchmark::State& state) {
   }
 }
 
+// Variable-slice Morse decompositions (6.2.3) of the same field around a point near its
+// middle, decomposition alone and decomposition + coverage (tool width 2), each beside the
+// boustrophedon decomposition / coverage (depth-first order, the same walk the patterns use)
+// as the reference of the same run.
+const geometry::Point& field_centre() {
+  static const geometry::Point c = [] {
+    const auto b = field().bbox();
+    return geometry::Point((b.xmin() + b.xmax()) / 2 + 0.123, (b.ymin() + b.ymax()) / 2 + 0.0456);
+  }();
+  return c;
+}
+
+void morse_decomposition(benchmark::State& state, decompose::SliceFamily f) {
+  std::size_t cells = 0, critical = 0;
+  for (auto _ : state) {
+    const decompose::MorseDecomposition m(field(), f, field_centre());
+    cells = m.cells().size(), critical = m.critical_points().size();
+    benchmark::DoNotOptimize(cells);
+  }
+  state.counters["cells"] = static_cast<double>(cells);
+  state.counters["critical_points"] = static_cast<double>(critical);
+}
+
+void boustrophedon_decomposition(benchmark::State& state) {
+  std::size_t cells = 0;
+  for (auto _ : state) {
+    const decompose::BoustrophedonDecomposition b(field());
+    cells = b.cells().size();
+    benchmark::DoNotOptimize(cells);
+  }
+  state.counters["cells"] = static_cast<double>(cells);
+}
+
+void pattern_coverage(benchmark::State& state, decompose::Pattern p) {
+  decompose::CoverageReport rep;
+  for (auto _ : state) {
+    decompose::CoverageOptions o;
+    o.width = 2.0, o.pattern = p, o.centre = field_centre();
+    if (p == decompose::Pattern::Boustrophedon) o.angle_deg = 0.0, o.order = decompose::CellOrder::DepthFirst;
+    rep = decompose::plan_coverage(field(), o);
+    benchmark::DoNotOptimize(rep);
+  }
+  state.counters["cells"] = static_cast<double>(rep.cells);
+  state.counters["laps"] = static_cast<double>(rep.laps);
+  state.counters["length"] = rep.length;
+  state.counters["transit_share"] = rep.transit_length / rep.length;
+}
+
 }  // namespace
+
+BENCHMARK_CAPTURE(morse_decomposition, circular, decompose::SliceFamily::Circular)->Name("morse/preimage/circular")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(morse_decomposition, spike, decompose::SliceFamily::Spike)->Name("morse/preimage/spike")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(morse_decomposition, squarel, decompose::SliceFamily::Squarel)->Name("morse/preimage/squarel")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(morse_decomposition, linear, decompose::SliceFamily::Linear)->Name("morse/preimage/linear-generic")->Unit(benchmark::kMillisecond);
+BENCHMARK(boustrophedon_decomposition)->Name("morse/reference/linear-generic")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(pattern_coverage, spiral, decompose::Pattern::Spiral)->Name("pattern-coverage/preimage/spiral")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(pattern_coverage, spike, decompose::Pattern::Spike)->Name("pattern-coverage/preimage/spike")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(pattern_coverage, squarel, decompose::Pattern::Squarel)->Name("pattern-coverage/preimage/squarel")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(pattern_coverage, boustrophedon, decompose::Pattern::Boustrophedon)->Name("pattern-coverage/boustrophedon-dfs")->Unit(benchmark::kMillisecond);
 
 BENCHMARK(coverage_preimage)->Name("coverage/preimage/n:10000")->Unit(benchmark::kMillisecond);
 BENCHMARK(coverage_reference)->Name("coverage/reference/n:10000")->Unit(benchmark::kMillisecond);

@@ -200,3 +200,21 @@ cli_test(visibility_graph_bad_token fail "bad_token\\.txt:3: expected 'x y' \\(t
 # two that only touch at (7, 2) stay two obstacles with a contact).
 cli_test(import_overlapping_holes_rejected fail "holes.1. edge .* touches holes.0. edge" - import ${CONTACTS}/overlapping_walls.wkt --from wkt -o ${OUT}/overlapping_walls.json)
 cli_test(import_merge_holes 0 "wrote .*: 19 vertices, 3 obstacles, 1 contact" ${OUT}/merged_walls.json import ${CONTACTS}/overlapping_walls.wkt --from wkt --merge-holes -o ${OUT}/merged_walls.json)
+# Variable slices (6.2.3): decompositions around a centre and their coverage patterns.
+cli_test(decompose_circular 0 "circular decomposition around \\(6.1, 4.05\\): 22 cells, 20 critical points in 20 critical slices" ${OUT}/circular.svg
+         decompose ${EXAMPLES}/gallery.json --method circular --center 6.1,4.05 --svg ${OUT}/circular.svg)
+cli_test(decompose_spike_json 0 "\"method\":\"spike\".*\"reeb_graph\"" - decompose ${EXAMPLES}/gallery.json --method spike --center 6.1,4.05 --json)
+cli_test(decompose_squarel_geojson 0 "wrote .*squarel\\.geojson" ${OUT}/squarel.geojson
+         decompose ${EXAMPLES}/gallery.json --method squarel --geojson ${OUT}/squarel.geojson)
+cli_test(decompose_centre_on_boundary fail "--center \\(0, 4\\) lies on the boundary" - decompose ${EXAMPLES}/gallery.json --method spike --center 0,4)
+cli_test(decompose_centre_needs_variable_slice fail "--center: only the circular, spike and squarel decompositions have a centre" -
+         decompose ${EXAMPLES}/gallery.json --center 1,1)
+cli_test(decompose_bad_centre fail "--center: expected X,Y" - decompose ${EXAMPLES}/gallery.json --method squarel --center 1,x)
+cli_test(cover_spiral 0 "spiral pattern: length [0-9.]+.*covered (99\\.[0-9]+|100)% of the configuration space" ${OUT}/spiral.svg
+         cover ${EXAMPLES}/gallery.json --pattern spiral --center 6.1,4.05 --radius 0.2 --svg ${OUT}/spiral.svg)
+cli_test(cover_spike_json 0 "\"pattern\":\"spike\"" - cover ${EXAMPLES}/gallery.json --pattern spike --radius 0.2 --json)
+cli_test(cover_pattern_no_angle fail "--angle: only the boustrophedon pattern has a sweep direction" - cover ${EXAMPLES}/gallery.json --pattern spike --radius 0.2 --angle 30)
+cli_test(cover_squarel_houseexpo 0 "squarel pattern: .*covered (99\\.[0-9]+|100)% of the configuration space" - cover ${OUT}/house1451.json --pattern squarel --width 0.3 --radius 0.15)
+cli_test(decompose_circular_houseexpo 0 "circular decomposition around" - decompose ${OUT}/house0000.json --method circular)
+set_tests_properties(cli.cover_squarel_houseexpo PROPERTIES DEPENDS cli.import_houseexpo_1451)
+set_tests_properties(cli.decompose_circular_houseexpo PROPERTIES DEPENDS cli.import_houseexpo_0000)

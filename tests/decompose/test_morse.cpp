@@ -4,12 +4,14 @@
 // (flat edges, several critical points on one slice, the centre on the boundary).
 #include <gtest/gtest.h>
 #include <preimage/decompose/boustrophedon.hpp>
+#include <preimage/decompose/coverage.hpp>
 #include <preimage/decompose/morse.hpp>
 #include <preimage/error.hpp>
 #include <preimage/geometry/generators.hpp>
 #include <preimage/scene/import.hpp>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <set>
@@ -323,4 +325,72 @@ TEST(Morse, LinearSlicesReproduceTheBoustrophedonDecomposition) {
     std::sort(theirs.begin(), theirs.end());
     for (std::size_t i = 0; i < mine.size(); ++i) EXPECT_NEAR(mine[i], theirs[i], 1e-9 * env.area()) << what << " cell " << i;
   }
+}
+
+namespace {
+
+// Independent check of a robot's path: points sampled along every segment keep at least r
+// (less a rounding allowance) from every environment edge, and lie in the free space.
+double min_clearance(const Environment& env, const std::vector<Point>& path) {
+  double worst = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i + 1 < path.size(); ++i)
+    for (int k = 0; k <= 4; ++k) {
+      const Point p(path[i].x() + (path[i + 1].x() - path[i].x()) * k / 4.0, path[i].y() + (path[i + 1].y() - path[i].y()) * k / 4.0);
+      for (std::size_t e = 0; e < env.num_vertices(); ++e) {
+        const Point a = env.vertex(e), b = env.vertex(env.next(e));
+        const double ex = b.x() - a.x(), ey = b.y() - a.y(), L2 = ex * ex + ey * ey;
+        const double t = std::clamp(((p.x() - a.x()) * ex + (p.y() - a.y()) * ey) / L2, 0.0, 1.0);
+        worst = std::min(worst, std::hypot(a.x() + t * ex - p.x(), a.y() + t * ey - p.y()));
+      }
+    }
+  return worst;
+}
+
+}  // namespace
+
+TEST(MorseCoverage, PatternsCoverTheConfigurationSpaceAndKeepClear) {
+  // Every pattern on a field with three obstacles, an office, a random environment and both
+  // floor plans: >= 99% of the configuration space within w/2 of the path (rasterised,
+  // measure_coverage), and the robot's disc never nearer than r to a wall.
+  std::vector<std::pair<std::string, Environment>> envs;
+  envs.emplace_back("field", Environment::make({{0, 0}, {12, 0}, {12, 8}, {0, 8}}, {{{2, 3}, {3.5, 2}, {4, 4}, {2.5, 5}}, {{6, 1.5}, {8.5, 1}, {8, 3}},
+                                                                                  {{7, 5}, {9, 4.5}, {10, 6.5}, {8, 7}}}));
+  envs.emplace_back("office", geometry::generators::office(2, 3));
+  envs.emplace_back("random", geometry::generators::random_environment(200, 3, 77));
+  for (const char* name : {"house_expo_room_0000.json", "house_expo_room_1451.json"})
+    envs.emplace_back(name, *scene::import_houseexpo(std::string(PREIMAGE_SHARED_DATA) + "/floorplans/" + name).environment);
+  for (const auto& [what, env] : envs) {
+    const auto box = env.bbox();
+    const double r = std::max(box.xmax() - box.xmin(), box.ymax() - box.ymin()) / 120;
+    for (const auto pattern : {decompose::Pattern::Spiral, decompose::Pattern::Concentric, decompose::Pattern::Spike, decompose::Pattern::Squarel}) {
+      decompose::CoverageOptions o;
+      o.robot_radius = r, o.pattern = pattern;
+      o.centre = Point((box.xmin() + box.xmax()) / 2 + r / 7, (box.ymin() + box.ymax()) / 2 + r / 11);
+      const auto rep = decompose::plan_coverage(env, o);
+      const auto m = decompose::measure_coverage(env, rep);
+      const std::string tag = what + " " + std::string(decompose::to_string(pattern));
+      EXPECT_GE(m.covered_fraction, 0.99) << tag;
+      EXPECT_GE(min_clearance(env, rep.path), r * (1 - 1e-6)) << tag;
+      EXPECT_GT(rep.laps, 0u) << tag;
+      EXPECT_EQ(rep.moves.size() + 1, rep.path.size()) << tag;
+    }
+  }
+}
+
+TEST(MorseCoverage, SpiralReplacesCirclesInAnnularCells) {
+  // The centre inside a small hole of a large room: the circles around it are whole loops
+  // from the hole's far corner to the nearest wall, one annular cell swept by one spiral
+  // instead of concentric circles joined by radial steps (Fig. 6.12).
+  const Environment env = Environment::make({{-10, -10}, {10, -10}, {10, 10}, {-10, 10}}, {{{-1, -1}, {-1, 1}, {1, 1}, {1, -1}}});
+  decompose::CoverageOptions o;
+  o.robot_radius = 0.25, o.centre = Point(0.25, 0.125);
+  o.pattern = decompose::Pattern::Spiral;
+  const auto spiral = decompose::plan_coverage(env, o);
+  o.pattern = decompose::Pattern::Concentric;
+  const auto circles = decompose::plan_coverage(env, o);
+  EXPECT_LT(spiral.laps + 10, circles.laps);
+  EXPECT_GE(decompose::measure_coverage(env, spiral).covered_fraction, 0.99);
+  EXPECT_GE(decompose::measure_coverage(env, circles).covered_fraction, 0.99);
+  // A spiral has no radial steps: fewer turns over a degree.
+  EXPECT_LT(spiral.turns, circles.turns);
 }
