@@ -6,6 +6,9 @@
 #include <algorithm>
 #include <atomic>
 #include <bit>
+#include <condition_variable>
+#include <deque>
+#include <functional>
 #include <cmath>
 #include <exception>
 #include <limits>
@@ -409,20 +412,103 @@ VisibilityPolygon VisibilityIndex::compute(const ExactPoint& q) const {
   return out;
 }
 
+namespace {
+// Process-wide pool of helper threads for compute_many, started on first use and kept:
+// a batch of 500 queries lasts 0.5-2 ms on small maps, about what starting and joining
+// threads per call cost. Idle helpers sleep on a condition variable (no spinning). A batch
+// is queued; each helper that takes it runs its chunks until none are left; the caller
+// runs chunks too, then withdraws the batch from the queue (no helper can join after
+// that) and waits for the helpers that joined to leave, so the batch (on the caller's
+// stack) is never touched after compute_many returns. Several callers at once each queue
+// their own batch; helpers serve the oldest.
+class VisWorkerPool {
+ public:
+  struct Batch {
+    std::function<void()> work;  // runs chunks until the batch's counter is exhausted
+    std::size_t max_helpers = 0;
+    std::size_t helpers = 0;     // joined and not yet left (guarded by the pool's mutex)
+    std::condition_variable left;
+  };
+
+  static VisWorkerPool& instance() {
+    static VisWorkerPool pool;
+    return pool;
+  }
+
+  // Runs b.work on the calling thread and on up to b.max_helpers helpers; returns when all
+  // of them have finished.
+  void run(Batch& b) {
+    {
+      std::lock_guard<std::mutex> lock(m_);
+      // Grow lazily to what callers have asked for (capped); never shrinks.
+      while (workers_.size() < std::min<std::size_t>(b.max_helpers, kMaxWorkers))
+        workers_.emplace_back([this] { serve(); });
+      queue_.push_back(&b);
+    }
+    if (b.max_helpers == 1) wake_.notify_one();
+    else wake_.notify_all();
+    b.work();
+    std::unique_lock<std::mutex> lock(m_);
+    withdraw(&b);
+    b.left.wait(lock, [&] { return b.helpers == 0; });
+  }
+
+  ~VisWorkerPool() {
+    {
+      std::lock_guard<std::mutex> lock(m_);
+      stop_ = true;
+    }
+    wake_.notify_all();
+    for (auto& t : workers_) t.join();
+  }
+
+ private:
+  static constexpr std::size_t kMaxWorkers = 64;
+  VisWorkerPool() = default;
+
+  void withdraw(Batch* b) {  // under m_
+    const auto it = std::find(queue_.begin(), queue_.end(), b);
+    if (it != queue_.end()) queue_.erase(it);
+  }
+
+  void serve() {
+    std::unique_lock<std::mutex> lock(m_);
+    while (true) {
+      wake_.wait(lock, [&] { return stop_ || !queue_.empty(); });
+      if (stop_) return;
+      Batch* b = queue_.front();
+      if (++b->helpers >= b->max_helpers) queue_.pop_front();  // enough helpers joined
+      lock.unlock();
+      b->work();
+      lock.lock();
+      withdraw(b);  // its work is exhausted: nobody else need join
+      if (--b->helpers == 0) b->left.notify_all();
+    }
+  }
+
+  std::mutex m_;
+  std::condition_variable wake_;
+  std::deque<Batch*> queue_;
+  std::vector<std::thread> workers_;
+  bool stop_ = false;
+};
+}  // namespace
+
 std::vector<VisibilityPolygon> VisibilityIndex::compute_many(std::span<const Point> queries, unsigned threads,
                                                              bool abstract) const {
   std::vector<VisibilityPolygon> out(queries.size());
-  constexpr std::size_t kChunk = 64;  // queries taken at once by a thread
-  const std::size_t chunks = (queries.size() + kChunk - 1) / kChunk;
   std::size_t n = threads ? threads : std::max(1u, std::thread::hardware_concurrency());
-  n = std::max<std::size_t>(1, std::min(n, chunks));
+  // Chunks small enough that the threads finish together (about 8 per thread), large
+  // enough that taking one (an atomic add) is negligible next to its queries.
+  const std::size_t chunk = std::clamp<std::size_t>(queries.size() / (8 * n), 1, 64);
+  n = std::max<std::size_t>(1, std::min(n, (queries.size() + chunk - 1) / chunk));
   std::atomic<std::size_t> next{0};
   std::mutex failed;
   std::size_t failed_at = queries.size();
   std::exception_ptr error;
   auto work = [&] {
-    for (std::size_t b; (b = next.fetch_add(kChunk, std::memory_order_relaxed)) < queries.size();) {
-      for (std::size_t i = b; i < std::min(queries.size(), b + kChunk); ++i) {
+    for (std::size_t b; (b = next.fetch_add(chunk, std::memory_order_relaxed)) < queries.size();) {
+      for (std::size_t i = b; i < std::min(queries.size(), b + chunk); ++i) {
         try {
           compute_at(queries[i], queries[i], out[i], !abstract);
         } catch (...) {
@@ -432,11 +518,14 @@ std::vector<VisibilityPolygon> VisibilityIndex::compute_many(std::span<const Poi
       }
     }
   };
-  std::vector<std::thread> pool;
-  pool.reserve(n - 1);
-  for (std::size_t k = 1; k < n; ++k) pool.emplace_back(work);
-  work();
-  for (auto& t : pool) t.join();
+  if (n == 1) {
+    work();
+  } else {
+    VisWorkerPool::Batch batch;
+    batch.work = work;
+    batch.max_helpers = n - 1;
+    VisWorkerPool::instance().run(batch);
+  }
   if (error) std::rethrow_exception(error);
   return out;
 }
