@@ -128,6 +128,8 @@ class VisibilityIndex {
   };
   template <class Q, class Count = NoCount>
   Located locate_triangle(const Q& q, const Point& approx, bool name_outside = true, Count count = {}) const;
+  bool build_slab(const std::vector<std::uint32_t>& list, double x0, double y0, double x1, double y1);
+  static constexpr std::size_t kSlabMinTriangles = 12;  // a cell listing more gets a slab
   template <class Q>
   void compute_at(const Q& q, const Point& approx, VisibilityPolygon& out, bool coordinates,
                   std::uint32_t only_wedge = kNone) const;
@@ -149,9 +151,31 @@ class VisibilityIndex {
   // area of the overlap, largest first; a first entry with kInsideCell set is a triangle
   // holding the whole box in its interior.
   static constexpr std::uint32_t kInsideCell = 0x80000000u;
+  // A heavy cell (many triangles, e.g. long thin fans crossing it) lists first an entry
+  // kSlabCell | s naming slab s, then its triangles as above. Slab s: the triangle edges
+  // crossing the cell from side to side (left to right, or bottom to top), sorted across
+  // the cell; they cut it into bands, each listing the triangles meeting it. A query finds
+  // its band by binary search (exact orientations; a double guess verified exactly first),
+  // and a band between two edges of one triangle is that triangle. Any miss (a query on a
+  // band edge, a band list that rounding made incomplete) falls back to the full list.
+  static constexpr std::uint32_t kSlabCell = 0x40000000u;
+  struct SlabEdge {
+    std::uint32_t a, b;          // directed so that the bands after it lie on its left
+    std::uint32_t left, right;   // triangles on each side (kNone: none, or not in the cell)
+    double A, B, C;              // A x + B y + C > 0 approximately iff left: the guess only
+  };
+  struct Slab {
+    std::uint32_t edges, edge_end;  // slab_edges_[edges, edge_end), sorted
+    std::uint32_t bands;            // band_off_[bands .. bands + count + 1]
+    bool vertical;                  // edges cross from bottom to top (else left to right)
+    double lo, hi;                  // the cell's extent along the edges (x, or y if vertical)
+  };
   double x0_, y0_, cw_, ch_;
   std::uint32_t gx_, gy_;
   std::vector<std::uint32_t> cell_off_, cell_tris_;
+  std::vector<Slab> slabs_;
+  std::vector<SlabEdge> slab_edges_;
+  std::vector<std::uint32_t> band_off_, band_tris_;
 };
 
 /// Removes repeated and collinear middle vertices and rotates the cycle to start at its
