@@ -4,6 +4,7 @@
 #include <preimage/error.hpp>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <bit>
 #include <condition_variable>
@@ -272,6 +273,16 @@ VisibilityIndex::VisibilityIndex(const Environment& env) : env_(&env), tri_(env)
     if (a.area != b.area) return a.area > b.area;
     return a.tri < b.tri;
   });
+  // For the expansion: the slot of each triangle edge in the neighbour across it.
+  back_.assign(T.size(), {0, 0, 0, 0});
+  for (std::uint32_t t = 0; t < T.size(); ++t)
+    for (int s = 0; s < 3; ++s) {
+      const std::uint32_t u = T[t].nbr[s];
+      if (u == kNone) continue;
+      std::uint8_t j = 0;
+      while (T[u].v[j] != T[t].v[(s + 1) % 3]) ++j;
+      back_[t][s] = j;
+    }
   // Cell lists; a heavy cell gets a slab (see kSlabCell) named by an entry in front.
   const std::size_t ncells = std::size_t(gx_) * gy_;
   cell_off_.assign(ncells + 1, 0);
@@ -551,6 +562,41 @@ std::size_t VisibilityIndex::locate_tests(const Point& q) const {
 // ---------------------------------------------------------------- expansion
 namespace {
 
+// Orientation of (p, a, b) for the expansion's hot loop: CGAL's own semi-static filter for
+// Orientation_2 (Static_filters_predicates/Orientation_2.h: the same differences, the same
+// error bound and under/overflow guards), inlined here because the library call is not;
+// whenever the double sign is not certain, CGAL::orientation decides (exact).
+inline int vis_orient(const Point& p, const Point& a, const Point& b) {
+  const double pax = a.x() - p.x(), pay = a.y() - p.y(), pbx = b.x() - p.x(), pby = b.y() - p.y();
+  double maxx = std::max(std::abs(pax), std::abs(pbx)), maxy = std::max(std::abs(pay), std::abs(pby));
+  if (maxx > maxy) std::swap(maxx, maxy);
+  if (maxx >= 1e-146 && maxy < 1e153) {
+    const double det = pax * pby - pay * pbx, eps = 8.8872057372592798e-16 * maxx * maxy;
+    if (det > eps) return 1;
+    if (det < -eps) return -1;
+  }
+  return orientation(p, a, b);
+}
+inline int vis_orient(const ExactPoint& p, const ExactPoint& a, const ExactPoint& b) { return orientation(p, a, b); }
+
+// A point relative to the query: its differences and their magnitudes, for vis_orient's
+// filter with the differences shared between tests.
+struct Rel {
+  double x = 0, y = 0, ax = 0, ay = 0;
+  Rel() = default;
+  Rel(const Point& a, const Point& q) : x(a.x() - q.x()), y(a.y() - q.y()), ax(std::abs(x)), ay(std::abs(y)) {}
+};
+// vis_orient(q, a, b) given a - q and b - q: the same filter on the same differences.
+inline int orient_rel(const Rel& a, const Rel& b, const Point& q, const Point& pa, const Point& pb) {
+  const double maxx = std::max(a.ax, b.ax), maxy = std::max(a.ay, b.ay);
+  if (std::min(maxx, maxy) >= 1e-146 && std::max(maxx, maxy) < 1e153) {
+    const double det = a.x * b.y - a.y * b.x, eps = 8.8872057372592798e-16 * maxx * maxy;
+    if (det > eps) return 1;
+    if (det < -eps) return -1;
+  }
+  return orientation(q, pa, pb);
+}
+
 // Symbolic polygon vertex: exact points are constructed only once, at the end.
 struct Sym {
   VisibilityVertex::Kind kind;
@@ -584,10 +630,20 @@ VisScratch& vis_scratch() {
 
 }  // namespace
 
+// A polygon returned by value is computed into this thread's reused polygon and then
+// copied out with exactly sized vectors: compute_at's reservation (twice the piece count)
+// would otherwise be allocated, and its pages touched, for every result.
+namespace {
+VisibilityPolygon& vis_result_scratch() {
+  thread_local VisibilityPolygon scratch;
+  return scratch;
+}
+}  // namespace
+
 VisibilityPolygon VisibilityIndex::compute(const Point& q) const {
-  VisibilityPolygon out;
-  compute_at(q, q, out, true);
-  return out;
+  VisibilityPolygon& scratch = vis_result_scratch();
+  compute_at(q, q, scratch, true);
+  return scratch;
 }
 
 void VisibilityIndex::compute(const Point& q, VisibilityPolygon& out) const { compute_at(q, q, out, true); }
@@ -706,7 +762,9 @@ std::vector<VisibilityPolygon> VisibilityIndex::compute_many(std::span<const Poi
     for (std::size_t b; (b = next.fetch_add(chunk, std::memory_order_relaxed)) < queries.size();) {
       for (std::size_t i = b; i < std::min(queries.size(), b + chunk); ++i) {
         try {
-          compute_at(queries[i], queries[i], out[i], !abstract);
+          VisibilityPolygon& scratch = vis_result_scratch();
+          compute_at(queries[i], queries[i], scratch, !abstract);
+          out[i] = scratch;  // exactly sized
         } catch (...) {
           std::lock_guard<std::mutex> lock(failed);
           if (i < failed_at) failed_at = i, error = std::current_exception();
@@ -744,7 +802,6 @@ void VisibilityIndex::compute_at(const Q& q, const Point& approx, VisibilityPoly
   const Environment& E = *env_;
 
   auto sym_vertex = [](std::uint32_t v) { return Sym{VisibilityVertex::Kind::EnvironmentVertex, v, kNone}; };
-  auto sym_hit = [](std::uint32_t through, std::uint32_t e) { return Sym{VisibilityVertex::Kind::RayHit, through, e}; };
   const Sym sym_query{VisibilityVertex::Kind::Query, kNone, kNone};
 
   // This thread's scratch, moved into locals for the query (the hot loop then keeps the
@@ -779,32 +836,54 @@ void VisibilityIndex::compute_at(const Q& q, const Point& approx, VisibilityPoly
     push({t0, s0, R0, L0});
     while (top > 0) {
       VisItem it = stack[--top];
+      Rel rd, ld;  // R - q and L - q (double queries)
+      if constexpr (std::is_same_v<Q, Point>) rd = Rel(P[it.R], q), ld = Rel(P[it.L], q);
       // Follow one cone across triangles; a split pushes its left part and goes on with
       // the right one (the order of the pieces is that of a plain stack).
       while (true) {
         const Triangle& tr = T[it.t];
         const std::uint32_t r = tr.v[it.slot], l = tr.v[(it.slot + 1) % 3];
         if (tr.nbr[it.slot] == kNone) {  // boundary: emit the visible piece of this edge
+          // Written field by field into the list: a piece composed on the stack and copied
+          // was reloaded wider than it was stored, stalling store forwarding (profiled).
           const std::uint32_t e = tr.edge[it.slot];
-          Piece pc{e, it.R, it.L, {}, {}};
-          pc.start = (it.R == r || orientation(q, Pq(it.R), Pq(r)) == 0) ? sym_vertex(r) : sym_hit(it.R, e);
-          pc.end = (it.L == l || orientation(q, Pq(it.L), Pq(l)) == 0) ? sym_vertex(l) : sym_hit(it.L, e);
-          pieces.push_back(pc);
+          Piece& pc = pieces.emplace_back();
+          pc.edge = e, pc.ray_r = it.R, pc.ray_l = it.L;
+          if (it.R == r || vis_orient(q, Pq(it.R), Pq(r)) == 0) {
+            pc.start.kind = VisibilityVertex::Kind::EnvironmentVertex, pc.start.vertex = r, pc.start.edge = kNone;
+          } else {
+            pc.start.kind = VisibilityVertex::Kind::RayHit, pc.start.vertex = it.R, pc.start.edge = e;
+          }
+          if (it.L == l || vis_orient(q, Pq(it.L), Pq(l)) == 0) {
+            pc.end.kind = VisibilityVertex::Kind::EnvironmentVertex, pc.end.vertex = l, pc.end.edge = kNone;
+          } else {
+            pc.end.kind = VisibilityVertex::Kind::RayHit, pc.end.vertex = it.L, pc.end.edge = e;
+          }
           break;
         }
         const std::uint32_t u = tr.nbr[it.slot];
         const Triangle& nt = T[u];
-        int j = 0;
-        while (nt.v[j] != l) ++j;  // entry edge in u runs l -> r
+        const int j = back_[it.t][it.slot];  // entry edge in u runs l -> r
         const std::uint32_t c = nt.v[(j + 2) % 3];
         const int right_slot = (j + 1) % 3, left_slot = (j + 2) % 3;  // (r, c) and (c, l)
-        const int cr = orientation(q, Pq(it.R), Pq(c));
-        const int cl = orientation(q, Pq(it.L), Pq(c));
-        if (cr <= 0) {
+        if constexpr (std::is_same_v<Q, Point>) {
+          // vis_orient(q, R, c) and vis_orient(q, L, c) with the differences from q shared
+          // (c's computed once, R's and L's kept while the cone is followed).
+          const Rel cd(P[c], q);
+          if (orient_rel(rd, cd, q, P[it.R], P[c]) <= 0) {
+            it = {u, left_slot, it.R, it.L};
+          } else if (orient_rel(ld, cd, q, P[it.L], P[c]) >= 0) {
+            it = {u, right_slot, it.R, it.L};
+          } else {  // c splits the cone; right part first (counter-clockwise output)
+            push({u, left_slot, c, it.L});
+            it = {u, right_slot, it.R, c};
+            ld = cd;
+          }
+        } else if (vis_orient(q, Pq(it.R), Pq(c)) <= 0) {
           it = {u, left_slot, it.R, it.L};
-        } else if (cl >= 0) {
+        } else if (vis_orient(q, Pq(it.L), Pq(c)) >= 0) {
           it = {u, right_slot, it.R, it.L};
-        } else {  // c splits the cone; right part first (counter-clockwise output)
+        } else {
           push({u, left_slot, c, it.L});
           it = {u, right_slot, it.R, c};
         }
@@ -896,27 +975,40 @@ void VisibilityIndex::compute_at(const Q& q, const Point& approx, VisibilityPoly
     if (coordinates) v.approx = sv.kind == VisibilityVertex::Kind::EnvironmentVertex ? P[sv.vertex] : approx_vertex(E, approx, v);
     return v;
   };
+  // Output records are written field by field in place (as the pieces above: a record
+  // composed on the stack and copied stalled store forwarding).
+  auto emit_vertex = [&](const Sym& sv) {
+    VisibilityVertex& v = out.vertices.emplace_back();
+    v.kind = sv.kind, v.vertex = sv.vertex, v.edge = sv.edge;
+    if (!coordinates) v.approx = no_coordinates;
+    else if (sv.kind == VisibilityVertex::Kind::EnvironmentVertex) v.approx = P[sv.vertex];
+    else v.approx = approx_vertex(E, approx, v);
+  };
+  auto emit_edge = [&](VisibilityEdge::Kind kind, std::uint32_t edge, std::uint32_t reflex, bool left) {
+    VisibilityEdge& d = out.edges.emplace_back();
+    d.kind = kind, d.edge = edge, d.reflex = reflex, d.occluder_on_left = left;
+  };
   const std::size_t m = pieces.size();
   out.vertices.reserve(2 * m);
   out.edges.reserve(2 * m);
   for (std::size_t k = 0; k < m; ++k) {
     const Piece& pc = pieces[k];
-    out.vertices.push_back(realise(pc.start));
-    out.edges.push_back({VisibilityEdge::Kind::Solid, pc.edge, kNone, false});
+    emit_vertex(pc.start);
+    emit_edge(VisibilityEdge::Kind::Solid, pc.edge, kNone, false);
     const Sym &X = pc.end, &Y = pieces[(k + 1) % m].start;
     if (X == Y) continue;
     // A gap along the shared cone ray q -> c between the two hits X (end of this piece)
     // and Y (start of the next).
-    out.vertices.push_back(realise(X));
+    emit_vertex(X);
     const bool both_vertices = X.kind == VisibilityVertex::Kind::EnvironmentVertex &&
                                Y.kind == VisibilityVertex::Kind::EnvironmentVertex;
     if (both_vertices) {  // the ray may run along an edge (ids at a contact name one wedge: compare points)
       if (const std::size_t e = E.edge_between(X.vertex, Y.vertex); e != SIZE_MAX) {
-        out.edges.push_back({VisibilityEdge::Kind::Solid, static_cast<std::uint32_t>(e), kNone, false});
+        emit_edge(VisibilityEdge::Kind::Solid, static_cast<std::uint32_t>(e), kNone, false);
         continue;
       }
       if (const std::size_t e = E.edge_between(Y.vertex, X.vertex); e != SIZE_MAX) {
-        out.edges.push_back({VisibilityEdge::Kind::Solid, static_cast<std::uint32_t>(e), kNone, false});
+        emit_edge(VisibilityEdge::Kind::Solid, static_cast<std::uint32_t>(e), kNone, false);
         continue;
       }
     }
@@ -931,7 +1023,7 @@ void VisibilityIndex::compute_at(const Q& q, const Point& approx, VisibilityPoly
       outward = CGAL::compare_distance_to_point(eq, exact_vertex(env_, eq, out.vertices.back()),
                                                 exact_vertex(env_, eq, realise(Y))) == CGAL::SMALLER;
     }
-    out.edges.push_back({VisibilityEdge::Kind::Free, kNone, pc.ray_l, !outward});
+    emit_edge(VisibilityEdge::Kind::Free, kNone, pc.ray_l, !outward);
   }
 }
 

@@ -8,6 +8,7 @@
 #include <preimage/geometry/queries.hpp>
 #include <preimage/geometry/triangulation.hpp>
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -174,6 +175,7 @@ class VisibilityIndex {
   std::uint32_t gx_, gy_;
   std::vector<std::uint32_t> cell_off_, cell_tris_;
   std::vector<Slab> slabs_;
+  std::vector<std::array<std::uint8_t, 4>> back_;  // back_[t][s]: the slot of edge s of t in its neighbour
   std::vector<SlabEdge> slab_edges_;
   std::vector<std::uint32_t> band_off_, band_tris_;
 };
