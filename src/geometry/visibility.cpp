@@ -293,153 +293,88 @@ VisibilityIndex::VisibilityIndex(const Environment& env) : env_(&env), tri_(env)
   for (std::size_t e = 0, cell = 0; cell < ncells; ++cell) {
     list.clear();
     for (; e < entries.size() && entries[e].cell == cell; ++e) list.push_back(entries[e].tri);
+    bool slab = false;
     if (slab_ids_fit && list.size() > kSlabMinTriangles) {
       const std::uint32_t i = static_cast<std::uint32_t>(cell % gx_), j = static_cast<std::uint32_t>(cell / gx_);
-      if (build_slab(list, xs[i], ys[j], xs[i + 1], ys[j + 1]))
-        cell_tris_.push_back(kSlabCell | static_cast<std::uint32_t>(slabs_.size() - 1));
+      slab = build_slab(list, xs[i], ys[j], xs[i + 1], ys[j + 1]);
     }
-    cell_tris_.insert(cell_tris_.end(), list.begin(), list.end());
+    if (slab) cell_tris_.push_back(kSlabCell | static_cast<std::uint32_t>(slabs_.size() - 1));
+    else cell_tris_.insert(cell_tris_.end(), list.begin(), list.end());
     cell_off_[cell + 1] = static_cast<std::uint32_t>(cell_tris_.size());
   }
 }
 
-namespace {
-// Centroid of the triangle clipped to the box, in doubles (a representative point of the
-// part in the box; only orders and files, never decides). False if the clip is empty.
-bool vis_clipped_centroid(const Point* const V[3], double x0, double y0, double x1, double y1, Point& out) {
-  double px[10], py[10], qx[10], qy[10];
-  int n = 3;
-  for (int i = 0; i < 3; ++i) px[i] = V[i]->x(), py[i] = V[i]->y();
-  for (int side = 0; side < 4 && n > 0; ++side) {
-    auto value = [&](double x, double y) {
-      switch (side) {
-        case 0: return x - x0;
-        case 1: return x1 - x;
-        case 2: return y - y0;
-        default: return y1 - y;
-      }
-    };
-    int m = 0;
-    for (int i = 0; i < n; ++i) {
-      const int k = (i + 1) % n;
-      const double a = value(px[i], py[i]), b = value(px[k], py[k]);
-      if (a >= 0) qx[m] = px[i], qy[m] = py[i], ++m;
-      if ((a >= 0) != (b >= 0) && m < 10) {
-        const double t = a / (a - b);
-        qx[m] = px[i] + t * (px[k] - px[i]), qy[m] = py[i] + t * (py[k] - py[i]), ++m;
-      }
-    }
-    n = std::min(m, 9);
-    std::copy(qx, qx + n, px), std::copy(qy, qy + n, py);
-  }
-  if (n == 0) return false;
-  double sx = 0, sy = 0;  // vertex average: inside the convex clip, enough for filing
-  for (int i = 0; i < n; ++i) sx += px[i], sy += py[i];
-  out = Point(sx / n, sy / n);
-  return true;
-}
-}  // namespace
 
 // Builds the slab of a heavy cell with box [x0, x1] x [y0, y1] listing `list` (see
-// kSlabCell). Double arithmetic here only chooses and orders: a wrong choice costs a
-// fallback to the full list at query time, never a wrong answer.
+// kSlabCell); false if a slab would not help. Double arithmetic here only chooses and
+// orders: a wrong choice costs a fallback at query time, never a wrong answer.
 bool VisibilityIndex::build_slab(const std::vector<std::uint32_t>& list, double x0, double y0, double x1, double y1) {
   const auto& P = env_->vertices();
   const auto& T = tri_.triangles();
-  std::vector<SlabEdge> best;
+  struct Found {
+    std::uint32_t lo, hi;  // the edge's vertex ids, ascending (to merge its two sides)
+    SlabEdge e;
+    double key;
+  };
+  // Scratch kept between the cells of one construction (and across, per thread).
+  thread_local std::vector<Found> best, found;
+  thread_local std::vector<std::uint32_t> mark;  // mark[t] == stamp: t has an edge in the slab
+  thread_local std::uint32_t stamp = 0;
+  best.clear();
   bool best_vertical = false;
   for (const bool vertical : {false, true}) {
-    // Along-coordinate u (x, or y if vertical) and across-coordinate w.
+    if (vertical && 2 * best.size() >= list.size()) break;  // left to right already separates most
+    // Along-coordinate u (x, or y if vertical) and across-coordinate w; the sort key is w
+    // (increasing y), or -w for a vertical slab (decreasing x): either way the later bands
+    // lie on the left of an edge directed along increasing u.
     auto u = [&](const Point& p) { return vertical ? p.y() : p.x(); };
-    auto w = [&](const Point& p) { return vertical ? p.x() : p.y(); };
-    const double ulo = vertical ? y0 : x0, uhi = vertical ? y1 : x1;
-    const double wlo = vertical ? x0 : y0, whi = vertical ? x1 : y1;
-    std::vector<SlabEdge> found;
+    auto w = [&](const Point& p) { return vertical ? -p.x() : p.y(); };
+    const double ulo = vertical ? y0 : x0, uhi = vertical ? y1 : x1, um = ulo / 2 + uhi / 2;
+    const double wlo = vertical ? -x1 : y0, whi = vertical ? -x0 : y1;
+    found.clear();
     for (const std::uint32_t t : list) {
-      for (int s = 0; s < 3; ++s) {
-        std::uint32_t a = T[t].v[s], b = T[t].v[(s + 1) % 3];  // t lies left of a -> b
-        const Point *pa = &P[a], *pb = &P[b];
-        if (std::min(u(*pa), u(*pb)) > ulo || std::max(u(*pa), u(*pb)) < uhi) continue;  // not across
-        // Where it crosses the cell's two sides (doubles: only filters).
-        auto at = [&](double uu) { return w(*pa) + (w(*pb) - w(*pa)) * ((uu - u(*pa)) / (u(*pb) - u(*pa))); };
+      for (std::uint8_t s = 0; s < 3; ++s) {
+        const std::uint32_t a = T[t].v[s], b = T[t].v[(s + 1) % 3];  // t lies left of a -> b
+        const Point &pa = P[a], &pb = P[b];
+        if (std::min(u(pa), u(pb)) > ulo || std::max(u(pa), u(pb)) < uhi) continue;  // not across
+        const double slope = (w(pb) - w(pa)) / (u(pb) - u(pa));
+        auto at = [&](double uu) { return w(pa) + slope * (uu - u(pa)); };
         const double c0 = at(ulo), c1 = at(uhi);
         if (std::max(c0, c1) < wlo || std::min(c0, c1) > whi) continue;  // passes beside the cell
-        // Direct it along u increasing; for a vertical slab that puts the later bands
-        // (sorted by decreasing x) on its left, as for a horizontal one (increasing y).
-        const bool forward = u(*pa) < u(*pb);
-        SlabEdge edge{forward ? a : b, forward ? b : a, forward ? t : kNone, forward ? kNone : t, 0, 0, 0};
-        const Point &ea = P[edge.a], &eb = P[edge.b];
-        edge.A = -(eb.y() - ea.y()), edge.B = eb.x() - ea.x();
-        edge.C = -(edge.A * ea.x() + edge.B * ea.y());
-        found.push_back(edge);
+        const bool reversed = u(pa) > u(pb);  // along increasing u the edge runs b -> a: t on its right
+        found.push_back({std::min(a, b), std::max(a, b),
+                         SlabEdge{t, s, reversed, static_cast<float>(at(um)), static_cast<float>(slope)}, at(um)});
       }
     }
-    std::sort(found.begin(), found.end(), [](const SlabEdge& p, const SlabEdge& q) {
-      return p.a != q.a ? p.a < q.a : p.b < q.b;
+    std::sort(found.begin(), found.end(), [](const Found& p, const Found& q) {
+      return p.lo != q.lo ? p.lo < q.lo : p.hi != q.hi ? p.hi < q.hi : p.e.reversed < q.e.reversed;
     });
-    std::size_t kept = 0;  // merge the two sides of an edge
-    for (std::size_t k = 0; k < found.size(); ++k) {
-      if (kept > 0 && found[kept - 1].a == found[k].a && found[kept - 1].b == found[k].b) {
-        if (found[k].left != kNone) found[kept - 1].left = found[k].left;
-        if (found[k].right != kNone) found[kept - 1].right = found[k].right;
-      } else {
-        found[kept++] = found[k];
-      }
-    }
+    std::size_t kept = 0;  // one record per edge, from its left side when that is listed
+    for (std::size_t k = 0; k < found.size(); ++k)
+      if (kept == 0 || found[kept - 1].lo != found[k].lo || found[kept - 1].hi != found[k].hi) found[kept++] = found[k];
     found.resize(kept);
-    // Across the cell: by the across-coordinate at the middle of the cell (increasing y,
-    // or decreasing x for a vertical slab).
-    const double um = ulo / 2 + uhi / 2;
-    auto key = [&](const SlabEdge& e) {
-      const Point &pa = P[e.a], &pb = P[e.b];
-      const double v = w(pa) + (w(pb) - w(pa)) * ((um - u(pa)) / (u(pb) - u(pa)));
-      return vertical ? -v : v;
-    };
-    std::vector<std::pair<double, std::size_t>> order(found.size());
-    for (std::size_t k = 0; k < found.size(); ++k) order[k] = {key(found[k]), k};
-    std::sort(order.begin(), order.end());
-    std::vector<SlabEdge> sorted(found.size());
-    for (std::size_t k = 0; k < order.size(); ++k) sorted[k] = found[order[k].second];
-    if (sorted.size() > best.size()) best = std::move(sorted), best_vertical = vertical;
+    std::sort(found.begin(), found.end(), [](const Found& p, const Found& q) { return p.key < q.key; });
+    if (found.size() > best.size()) std::swap(best, found), best_vertical = vertical;
   }
-  if (best.size() < 2) return false;
-
-  // File the triangles in bands: by an edge of theirs among the slab's (exact given the
-  // order), else by a representative point of their part in the cell (exact orientations
-  // on a double point; a point on an edge files in both bands).
-  const std::size_t S = best.size();
-  std::vector<std::vector<std::uint32_t>> bands(S + 1);
-  auto left_of = [&](const SlabEdge& e, const Point& p) { return orientation(P[e.a], P[e.b], p); };
-  for (const std::uint32_t t : list) {
-    bool filed = false;
-    for (std::size_t k = 0; k < S; ++k) {
-      if (best[k].left == t) bands[k + 1].push_back(t), filed = true;
-      if (best[k].right == t) bands[k].push_back(t), filed = true;
-    }
-    if (filed) continue;
-    const Point* const V[3] = {&P[T[t].v[0]], &P[T[t].v[1]], &P[T[t].v[2]]};
-    Point r;
-    if (!vis_clipped_centroid(V, x0, y0, x1, y1, r)) continue;  // touches the cell's side only: the full list has it
-    std::size_t lo = 0, hi = S;  // first edge not having r strictly left
-    while (lo < hi) {
-      const std::size_t m = (lo + hi) / 2;
-      if (left_of(best[m], r) > 0) lo = m + 1;
-      else hi = m;
-    }
-    std::size_t last = lo;  // r on edge `last`: the band after it too
-    while (last < S && left_of(best[last], r) == 0) ++last;
-    for (std::size_t k = lo; k <= last; ++k) bands[k].push_back(t);
+  if (best.size() < 4) return false;
+  // The cell's triangles with no edge in the slab.
+  if (mark.size() != T.size() || stamp == std::numeric_limits<std::uint32_t>::max()) mark.assign(T.size(), 0), stamp = 0;
+  ++stamp;
+  for (const Found& f : best) {
+    mark[f.e.tri] = stamp;
+    if (const std::uint32_t nb = T[f.e.tri].nbr[f.e.slot]; nb != kNone) mark[nb] = stamp;
   }
-  Slab slab{static_cast<std::uint32_t>(slab_edges_.size()), static_cast<std::uint32_t>(slab_edges_.size() + S),
-            static_cast<std::uint32_t>(band_off_.size()), best_vertical, best_vertical ? y0 : x0, best_vertical ? y1 : x1};
-  slab_edges_.insert(slab_edges_.end(), best.begin(), best.end());
-  for (auto& b : bands) {  // each in the cell's order (overlap area); a triangle's filings are consecutive
-    b.erase(std::unique(b.begin(), b.end()), b.end());
-    band_off_.push_back(static_cast<std::uint32_t>(band_tris_.size()));
-    band_tris_.insert(band_tris_.end(), b.begin(), b.end());
-  }
-  band_off_.push_back(static_cast<std::uint32_t>(band_tris_.size()));
-  slabs_.push_back(slab);
+  thread_local std::vector<std::uint32_t> others;
+  others.clear();
+  for (const std::uint32_t t : list)
+    if (mark[t] != stamp) others.push_back(t);
+  if (2 * others.size() > list.size()) return false;  // mostly triangles the slab does not separate
+  const double ulo = best_vertical ? y0 : x0, uhi = best_vertical ? y1 : x1;
+  slabs_.push_back(Slab{static_cast<std::uint32_t>(slab_edges_.size()), static_cast<std::uint32_t>(slab_edges_.size() + best.size()),
+                        static_cast<std::uint32_t>(slab_others_.size()), static_cast<std::uint32_t>(slab_others_.size() + others.size()),
+                        best_vertical, ulo, uhi, ulo / 2 + uhi / 2});
+  for (const Found& f : best) slab_edges_.push_back(f.e);
+  slab_others_.insert(slab_others_.end(), others.begin(), others.end());
   return true;
 }
 
@@ -490,47 +425,71 @@ VisibilityIndex::Located VisibilityIndex::locate_triangle(const Q& q, const Poin
     if constexpr (double_query) return Located{{Location::Kind::Interior, 0}, *k & ~kInsideCell, -1};
   } else if (k != end && (*k & kSlabCell)) {
     const Slab& sl = slabs_[*k & ~kSlabCell];
-    ++k;  // the full list follows
+    const SlabEdge* E = slab_edges_.data() + sl.edges;
+    const std::size_t S = sl.edge_end - sl.edges;
+    auto ends = [&](const SlabEdge& e, std::uint32_t& a, std::uint32_t& b) {
+      a = T[e.tri].v[e.slot], b = T[e.tri].v[(e.slot + 1) % 3];
+      if (e.reversed) std::swap(a, b);
+    };
+    auto left_tri = [&](const SlabEdge& e) { return e.reversed ? T[e.tri].nbr[e.slot] : e.tri; };
+    auto right_tri = [&](const SlabEdge& e) { return e.reversed ? e.tri : T[e.tri].nbr[e.slot]; };
+    auto try_tri = [&](std::uint32_t t) -> std::optional<Located> {
+      if (t == kNone) return std::nullopt;
+      return test(t);
+    };
     if constexpr (double_query) {
-      const SlabEdge* E = slab_edges_.data() + sl.edges;
-      const std::size_t S = sl.edge_end - sl.edges;
       auto left_of = [&](const SlabEdge& e) {
+        std::uint32_t a, b;
+        ends(e, a, b);
         count();
-        return orientation(P(e.a), P(e.b), q);
+        return orientation(P(a), P(b), q);
       };
-      // The band: guessed in doubles (the first edge not having q on its left), then
-      // verified exactly against its two edges; exact binary search if that fails.
-      const double qx = q.x(), qy = q.y();
+      // The band: guessed in floats, verified exactly against its two edges; exact
+      // binary search if that fails.
+      const double along = sl.vertical ? q.y() : q.x(), across = sl.vertical ? -q.x() : q.y();
+      const float du = static_cast<float>(along - sl.mid), kq = static_cast<float>(across);
       std::size_t lo = 0, hi = S;
       while (lo < hi) {
         const std::size_t m = (lo + hi) / 2;
-        if (E[m].A * qx + E[m].B * qy + E[m].C > 0) lo = m + 1;
+        if (E[m].w_mid + E[m].slope * du < kq) lo = m + 1;
         else hi = m;
       }
-      const int below = lo > 0 ? left_of(E[lo - 1]) : 1, above = lo < S ? left_of(E[lo]) : -1;
-      bool strict = below > 0 && above < 0;
-      if (!strict) {
-        lo = 0, hi = S;
+      int below = lo > 0 ? left_of(E[lo - 1]) : 1, above = lo < S ? left_of(E[lo]) : -1;
+      if (below <= 0 || above >= 0) {
+        lo = 0, hi = S, below = 1, above = -1;
         while (lo < hi) {
           const std::size_t m = (lo + hi) / 2;
-          if (left_of(E[m]) > 0) lo = m + 1;
-          else hi = m;
+          const int o = left_of(E[m]);
+          if (o > 0) lo = m + 1, below = o;
+          else hi = m, above = o;
         }
       }
-      // Strictly between two edges of one triangle, strictly inside the cell's extent
-      // along them (so both cross q's line across the slab at interior points): q lies on
-      // the open chord of that triangle there, in its interior.
-      if (strict && lo > 0 && lo < S && E[lo - 1].left == E[lo].right && E[lo].right != kNone) {
-        const double along = sl.vertical ? qy : qx;
-        if (along > sl.lo && along < sl.hi) return Located{{Location::Kind::Interior, 0}, E[lo].right, -1};
+      if (above == 0) {  // on edge E[lo] (it crosses q's line across the cell): one of its sides
+        if (auto r = try_tri(left_tri(E[lo]))) return *r;
+        if (auto r = try_tri(right_tri(E[lo]))) return *r;
+      } else if (lo > 0 && lo < S) {
+        // Strictly between two edges of one triangle, strictly inside the cell's extent
+        // along them (so both cross q's line across the cell at interior points): q lies
+        // on the open chord of that triangle there, in its interior.
+        const std::uint32_t t = left_tri(E[lo - 1]);
+        if (t != kNone && t == right_tri(E[lo]) && along > sl.lo && along < sl.hi)
+          return Located{{Location::Kind::Interior, 0}, t, -1};
+        if (auto r = try_tri(t)) return *r;
+        if (auto r = try_tri(right_tri(E[lo]))) return *r;
+      } else if (lo == 0 && S > 0) {
+        if (auto r = try_tri(right_tri(E[0]))) return *r;
+      } else if (S > 0) {
+        if (auto r = try_tri(left_tri(E[S - 1]))) return *r;
       }
-      const std::uint32_t *b = band_tris_.data() + band_off_[sl.bands + lo],
-                          *b_end = band_tris_.data() + band_off_[sl.bands + lo + 1];
-      for (; b != b_end; ++b)
-        if (auto r = test(*b)) return *r;
-      // Not in its band (q on a band edge, or a band list made incomplete by rounding):
-      // the full list below.
     }
+    // Every triangle of the cell: the others, then both sides of every slab edge.
+    for (std::uint32_t i = sl.others; i < sl.others_end; ++i)
+      if (auto r = test(slab_others_[i])) return *r;
+    for (std::size_t i = 0; i < S; ++i) {
+      if (auto r = try_tri(left_tri(E[i]))) return *r;
+      if (auto r = try_tri(right_tri(E[i]))) return *r;
+    }
+    k = end;
   }
   for (; k != end; ++k)
     if (auto r = test(*k & ~kInsideCell)) return *r;

@@ -152,24 +152,28 @@ class VisibilityIndex {
   // area of the overlap, largest first; a first entry with kInsideCell set is a triangle
   // holding the whole box in its interior.
   static constexpr std::uint32_t kInsideCell = 0x80000000u;
-  // A heavy cell (many triangles, e.g. long thin fans crossing it) lists first an entry
-  // kSlabCell | s naming slab s, then its triangles as above. Slab s: the triangle edges
-  // crossing the cell from side to side (left to right, or bottom to top), sorted across
-  // the cell; they cut it into bands, each listing the triangles meeting it. A query finds
-  // its band by binary search (exact orientations; a double guess verified exactly first),
-  // and a band between two edges of one triangle is that triangle. Any miss (a query on a
-  // band edge, a band list that rounding made incomplete) falls back to the full list.
+  // A heavy cell (many triangles, e.g. long thin fans crossing it) lists only an entry
+  // kSlabCell | s naming slab s. Slab s: the triangle edges crossing the cell from side to
+  // side (left to right, or bottom to top), sorted across the cell; they cut it into bands.
+  // A query finds its band by binary search (a float guess verified by two exact
+  // orientations; exact binary search if that fails); a band between two edges of one
+  // triangle is that triangle (proved by the two strict tests), so these triangles are
+  // not listed. The slab lists the cell's other triangles (no edge in the slab); a query on
+  // an edge tests the edge's two triangles; a miss (rounding in the guess, a band of other
+  // triangles) scans the other list, then every triangle of the slab's edges: all of the
+  // cell's triangles, so the answer stays exact.
   static constexpr std::uint32_t kSlabCell = 0x40000000u;
   struct SlabEdge {
-    std::uint32_t a, b;          // directed so that the bands after it lie on its left
-    std::uint32_t left, right;   // triangles on each side (kNone: none, or not in the cell)
-    double A, B, C;              // A x + B y + C > 0 approximately iff left: the guess only
+    std::uint32_t tri;   // the triangle on the edge's left (after-bands side), or on its
+    std::uint8_t slot;   // right when `reversed`; slot of the edge in it
+    bool reversed;
+    float w_mid, slope;  // across-coordinate at the cell's middle and its slope: the guess only
   };
   struct Slab {
-    std::uint32_t edges, edge_end;  // slab_edges_[edges, edge_end), sorted
-    std::uint32_t bands;            // band_off_[bands .. bands + count + 1]
-    bool vertical;                  // edges cross from bottom to top (else left to right)
-    double lo, hi;                  // the cell's extent along the edges (x, or y if vertical)
+    std::uint32_t edges, edge_end;    // slab_edges_[edges, edge_end), sorted
+    std::uint32_t others, others_end; // slab_others_[others, others_end)
+    bool vertical;                    // edges cross from bottom to top (else left to right)
+    double lo, hi, mid;               // the cell's extent along the edges (x, or y if vertical)
   };
   double x0_, y0_, cw_, ch_;
   std::uint32_t gx_, gy_;
@@ -177,7 +181,7 @@ class VisibilityIndex {
   std::vector<Slab> slabs_;
   std::vector<std::array<std::uint8_t, 4>> back_;  // back_[t][s]: the slot of edge s of t in its neighbour
   std::vector<SlabEdge> slab_edges_;
-  std::vector<std::uint32_t> band_off_, band_tris_;
+  std::vector<std::uint32_t> slab_others_;
 };
 
 /// Removes repeated and collinear middle vertices and rotates the cycle to start at its
