@@ -268,11 +268,16 @@ VisibilityIndex::VisibilityIndex(const Environment& env) : env_(&env), tri_(env)
       }
     }
   }
-  std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
-    if (a.cell != b.cell) return a.cell < b.cell;
-    if (a.area != b.area) return a.area > b.area;
-    return a.tri < b.tri;
-  });
+  // Entries by cell (a counting sort, stable: triangle ids ascending within a cell); a
+  // cell's list is sorted by overlap area only if it stays a list (not a slab).
+  const std::size_t ncells = std::size_t(gx_) * gy_;
+  std::vector<std::uint32_t> cell_start(ncells + 1, 0), by_cell(entries.size());
+  for (const Entry& e : entries) ++cell_start[e.cell + 1];
+  for (std::size_t c = 1; c <= ncells; ++c) cell_start[c] += cell_start[c - 1];
+  {
+    std::vector<std::uint32_t> pos(cell_start.begin(), cell_start.end() - 1);
+    for (std::size_t k = 0; k < entries.size(); ++k) by_cell[pos[entries[k].cell]++] = static_cast<std::uint32_t>(k);
+  }
   // For the expansion: the slot of each triangle edge in the neighbour across it.
   back_.assign(T.size(), {0, 0, 0, 0});
   for (std::uint32_t t = 0; t < T.size(); ++t)
@@ -284,22 +289,30 @@ VisibilityIndex::VisibilityIndex(const Environment& env) : env_(&env), tri_(env)
       back_[t][s] = j;
     }
   // Cell lists; a heavy cell gets a slab (see kSlabCell) named by an entry in front.
-  const std::size_t ncells = std::size_t(gx_) * gy_;
   cell_off_.assign(ncells + 1, 0);
   cell_tris_.clear();
   cell_tris_.reserve(entries.size() + entries.size() / 8);
   const bool slab_ids_fit = T.size() < kSlabCell;
   std::vector<std::uint32_t> list;
-  for (std::size_t e = 0, cell = 0; cell < ncells; ++cell) {
+  for (std::size_t cell = 0; cell < ncells; ++cell) {
+    std::uint32_t* const first = by_cell.data() + cell_start[cell];
+    std::uint32_t* const last = by_cell.data() + cell_start[cell + 1];
     list.clear();
-    for (; e < entries.size() && entries[e].cell == cell; ++e) list.push_back(entries[e].tri);
+    for (const std::uint32_t* k = first; k != last; ++k) list.push_back(entries[*k].tri & ~kInsideCell);
     bool slab = false;
     if (slab_ids_fit && list.size() > kSlabMinTriangles) {
       const std::uint32_t i = static_cast<std::uint32_t>(cell % gx_), j = static_cast<std::uint32_t>(cell / gx_);
       slab = build_slab(list, xs[i], ys[j], xs[i + 1], ys[j + 1]);
     }
-    if (slab) cell_tris_.push_back(kSlabCell | static_cast<std::uint32_t>(slabs_.size() - 1));
-    else cell_tris_.insert(cell_tris_.end(), list.begin(), list.end());
+    if (slab) {
+      cell_tris_.push_back(kSlabCell | static_cast<std::uint32_t>(slabs_.size() - 1));
+    } else {
+      std::sort(first, last, [&](std::uint32_t a, std::uint32_t b) {
+        if (entries[a].area != entries[b].area) return entries[a].area > entries[b].area;
+        return entries[a].tri < entries[b].tri;
+      });
+      for (const std::uint32_t* k = first; k != last; ++k) cell_tris_.push_back(entries[*k].tri);
+    }
     cell_off_[cell + 1] = static_cast<std::uint32_t>(cell_tris_.size());
   }
 }
