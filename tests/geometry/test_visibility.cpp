@@ -10,6 +10,8 @@
 
 #include <cmath>
 #include <random>
+#include <span>
+#include <thread>
 
 using namespace preimage::geometry;
 using preimage::testing::CgalVisibility;
@@ -202,6 +204,29 @@ TEST(Visibility, ComputeManyEqualsSequentialCompute) {
     ADD_FAILURE() << "no error for a query outside free space";
   } catch (const preimage::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("(-1, -1)"), std::string::npos) << e.what();
+  }
+}
+
+// compute_many from several callers at once (the helper pool is shared by the process):
+// every caller gets its own queries' polygons, equal to sequential compute.
+TEST(Visibility, ComputeManyFromConcurrentCallers) {
+  const auto env = generators::office(4, 3);
+  VisibilityIndex index(env);
+  std::vector<Point> qs;
+  for (const auto& q : preimage::testing::random_queries(env, 400, 0, 0, 43)) qs.push_back(q.p);
+  std::vector<VisibilityPolygon> want;
+  for (const Point& q : qs) want.push_back(index.compute(q));
+  std::vector<std::vector<VisibilityPolygon>> got(4);
+  std::vector<std::thread> callers;
+  for (std::size_t c = 0; c < got.size(); ++c)
+    callers.emplace_back([&, c] {
+      for (int round = 0; round < 5; ++round) got[c] = index.compute_many(std::span<const Point>(qs).subspan(c * 50), 2 + c % 2);
+    });
+  for (auto& t : callers) t.join();
+  for (std::size_t c = 0; c < got.size(); ++c) {
+    ASSERT_EQ(got[c].size(), qs.size() - c * 50);
+    for (std::size_t i = 0; i < got[c].size(); ++i)
+      expect_same_polygon(want[c * 50 + i], got[c][i], true, "caller " + std::to_string(c) + " query " + std::to_string(i));
   }
 }
 
