@@ -11,6 +11,7 @@
 //   {abstract,compute}/reference    CGAL TE (its face located outside the loop)
 //   compute+exact-points/preimage   ... plus every vertex's lazy-exact coordinates
 //   batch-{1,2}-threads/<map>       compute_many over the map's 500 queries (real time)
+//   batch-speedup/<map>             both, interleaved: median 1-thread time / median 2-thread time
 // Breakdown per query: locate = locate/, expand = abstract - locate, output = compute -
 // abstract. Counters: allocs_per_query (global operator new in this binary, steady state),
 // preprocess_ms (building the index, once), vertices, out_vertices.
@@ -26,6 +27,7 @@
 #include "ratio_reporter.hpp"
 #include "support/cgal_oracle.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdlib>
@@ -166,6 +168,35 @@ void bm_batch(benchmark::State& state, const std::string& name, unsigned threads
   state.counters["queries"] = static_cast<double>(qs.size());
 }
 
+// The two batch runs interleaved in one loop (1 thread, then 2, each timed in real time),
+// so a load change on the machine hits both alike: speedup = the median over the pairs of
+// 1-thread time / 2-thread time; best_speedup = best over best (the quietest moments).
+void bm_batch_speedup(benchmark::State& state, const std::string& name) {
+  Case& c = get_case(name);
+  std::vector<Point> qs;
+  for (const auto& q : c.queries) qs.push_back(q.p);
+  std::vector<double> one, two;
+  for (auto _ : state) {
+    for (unsigned threads : {1u, 2u}) {
+      const auto t0 = std::chrono::steady_clock::now();
+      auto all = c.ours->compute_many(qs, threads);
+      benchmark::DoNotOptimize(all.data());
+      const double us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
+      (threads == 1 ? one : two).push_back(us);
+    }
+  }
+  auto median = [](std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+  };
+  std::vector<double> ratio;  // per pair: the two runs of a pair met about the same load
+  for (std::size_t k = 0; k < one.size(); ++k) ratio.push_back(one[k] / two[k]);
+  state.counters["us_1_thread"] = median(one);
+  state.counters["us_2_threads"] = median(two);
+  state.counters["speedup"] = median(ratio);
+  state.counters["best_speedup"] = two.empty() ? 0 : *std::min_element(one.begin(), one.end()) / *std::min_element(two.begin(), two.end());
+}
+
 void bm_compute_exact_points(benchmark::State& state, const std::string& name) {
   Case& c = get_case(name);
   if (!c.identical) state.SkipWithError("outputs differ from CGAL");
@@ -208,6 +239,7 @@ void register_all() {
     reg("compute+exact-points/reference/", bm_reference, name);
     reg("batch-1-thread/", bm_batch, name, 1u)->UseRealTime();
     reg("batch-2-threads/", bm_batch, name, 2u)->UseRealTime();
+    reg("batch-speedup/", bm_batch_speedup, name)->UseRealTime();
   }
 }
 

@@ -4,8 +4,12 @@
 #include <preimage/error.hpp>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <bit>
+#include <condition_variable>
+#include <deque>
+#include <functional>
 #include <cmath>
 #include <exception>
 #include <limits>
@@ -264,16 +268,127 @@ VisibilityIndex::VisibilityIndex(const Environment& env) : env_(&env), tri_(env)
       }
     }
   }
-  std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
-    if (a.cell != b.cell) return a.cell < b.cell;
-    if (a.area != b.area) return a.area > b.area;
-    return a.tri < b.tri;
-  });
-  cell_off_.assign(std::size_t(gx_) * gy_ + 1, 0);
-  for (const Entry& e : entries) ++cell_off_[e.cell + 1];
-  for (std::size_t i = 1; i < cell_off_.size(); ++i) cell_off_[i] += cell_off_[i - 1];
-  cell_tris_.resize(entries.size());
-  for (std::size_t k = 0; k < entries.size(); ++k) cell_tris_[k] = entries[k].tri;
+  // Entries by cell (a counting sort, stable: triangle ids ascending within a cell); a
+  // cell's list is sorted by overlap area only if it stays a list (not a slab).
+  const std::size_t ncells = std::size_t(gx_) * gy_;
+  std::vector<std::uint32_t> cell_start(ncells + 1, 0), by_cell(entries.size());
+  for (const Entry& e : entries) ++cell_start[e.cell + 1];
+  for (std::size_t c = 1; c <= ncells; ++c) cell_start[c] += cell_start[c - 1];
+  {
+    std::vector<std::uint32_t> pos(cell_start.begin(), cell_start.end() - 1);
+    for (std::size_t k = 0; k < entries.size(); ++k) by_cell[pos[entries[k].cell]++] = static_cast<std::uint32_t>(k);
+  }
+  // For the expansion: the slot of each triangle edge in the neighbour across it.
+  back_.assign(T.size(), {0, 0, 0, 0});
+  for (std::uint32_t t = 0; t < T.size(); ++t)
+    for (int s = 0; s < 3; ++s) {
+      const std::uint32_t u = T[t].nbr[s];
+      if (u == kNone) continue;
+      std::uint8_t j = 0;
+      while (T[u].v[j] != T[t].v[(s + 1) % 3]) ++j;
+      back_[t][s] = j;
+    }
+  // Cell lists; a heavy cell gets a slab (see kSlabCell) named by an entry in front.
+  cell_off_.assign(ncells + 1, 0);
+  cell_tris_.clear();
+  cell_tris_.reserve(entries.size() + entries.size() / 8);
+  const bool slab_ids_fit = T.size() < kSlabCell;
+  std::vector<std::uint32_t> list;
+  for (std::size_t cell = 0; cell < ncells; ++cell) {
+    std::uint32_t* const first = by_cell.data() + cell_start[cell];
+    std::uint32_t* const last = by_cell.data() + cell_start[cell + 1];
+    list.clear();
+    for (const std::uint32_t* k = first; k != last; ++k) list.push_back(entries[*k].tri & ~kInsideCell);
+    bool slab = false;
+    if (slab_ids_fit && list.size() > kSlabMinTriangles) {
+      const std::uint32_t i = static_cast<std::uint32_t>(cell % gx_), j = static_cast<std::uint32_t>(cell / gx_);
+      slab = build_slab(list, xs[i], ys[j], xs[i + 1], ys[j + 1]);
+    }
+    if (slab) {
+      cell_tris_.push_back(kSlabCell | static_cast<std::uint32_t>(slabs_.size() - 1));
+    } else {
+      std::sort(first, last, [&](std::uint32_t a, std::uint32_t b) {
+        if (entries[a].area != entries[b].area) return entries[a].area > entries[b].area;
+        return entries[a].tri < entries[b].tri;
+      });
+      for (const std::uint32_t* k = first; k != last; ++k) cell_tris_.push_back(entries[*k].tri);
+    }
+    cell_off_[cell + 1] = static_cast<std::uint32_t>(cell_tris_.size());
+  }
+}
+
+
+// Builds the slab of a heavy cell with box [x0, x1] x [y0, y1] listing `list` (see
+// kSlabCell); false if a slab would not help. Double arithmetic here only chooses and
+// orders: a wrong choice costs a fallback at query time, never a wrong answer.
+bool VisibilityIndex::build_slab(const std::vector<std::uint32_t>& list, double x0, double y0, double x1, double y1) {
+  const auto& P = env_->vertices();
+  const auto& T = tri_.triangles();
+  struct Found {
+    std::uint32_t lo, hi;  // the edge's vertex ids, ascending (to merge its two sides)
+    SlabEdge e;
+    double key;
+  };
+  // Scratch kept between the cells of one construction (and across, per thread).
+  thread_local std::vector<Found> best, found;
+  thread_local std::vector<std::uint32_t> mark;  // mark[t] == stamp: t has an edge in the slab
+  thread_local std::uint32_t stamp = 0;
+  best.clear();
+  bool best_vertical = false;
+  for (const bool vertical : {false, true}) {
+    if (vertical && 2 * best.size() >= list.size()) break;  // left to right already separates most
+    // Along-coordinate u (x, or y if vertical) and across-coordinate w; the sort key is w
+    // (increasing y), or -w for a vertical slab (decreasing x): either way the later bands
+    // lie on the left of an edge directed along increasing u.
+    auto u = [&](const Point& p) { return vertical ? p.y() : p.x(); };
+    auto w = [&](const Point& p) { return vertical ? -p.x() : p.y(); };
+    const double ulo = vertical ? y0 : x0, uhi = vertical ? y1 : x1, um = ulo / 2 + uhi / 2;
+    const double wlo = vertical ? -x1 : y0, whi = vertical ? -x0 : y1;
+    found.clear();
+    for (const std::uint32_t t : list) {
+      for (std::uint8_t s = 0; s < 3; ++s) {
+        const std::uint32_t a = T[t].v[s], b = T[t].v[(s + 1) % 3];  // t lies left of a -> b
+        const Point &pa = P[a], &pb = P[b];
+        if (std::min(u(pa), u(pb)) > ulo || std::max(u(pa), u(pb)) < uhi) continue;  // not across
+        const double slope = (w(pb) - w(pa)) / (u(pb) - u(pa));
+        auto at = [&](double uu) { return w(pa) + slope * (uu - u(pa)); };
+        const double c0 = at(ulo), c1 = at(uhi);
+        if (std::max(c0, c1) < wlo || std::min(c0, c1) > whi) continue;  // passes beside the cell
+        const bool reversed = u(pa) > u(pb);  // along increasing u the edge runs b -> a: t on its right
+        found.push_back({std::min(a, b), std::max(a, b),
+                         SlabEdge{t, s, reversed, static_cast<float>(at(um)), static_cast<float>(slope)}, at(um)});
+      }
+    }
+    std::sort(found.begin(), found.end(), [](const Found& p, const Found& q) {
+      return p.lo != q.lo ? p.lo < q.lo : p.hi != q.hi ? p.hi < q.hi : p.e.reversed < q.e.reversed;
+    });
+    std::size_t kept = 0;  // one record per edge, from its left side when that is listed
+    for (std::size_t k = 0; k < found.size(); ++k)
+      if (kept == 0 || found[kept - 1].lo != found[k].lo || found[kept - 1].hi != found[k].hi) found[kept++] = found[k];
+    found.resize(kept);
+    std::sort(found.begin(), found.end(), [](const Found& p, const Found& q) { return p.key < q.key; });
+    if (found.size() > best.size()) std::swap(best, found), best_vertical = vertical;
+  }
+  if (best.size() < 4) return false;
+  // The cell's triangles with no edge in the slab.
+  if (mark.size() != T.size() || stamp == std::numeric_limits<std::uint32_t>::max()) mark.assign(T.size(), 0), stamp = 0;
+  ++stamp;
+  for (const Found& f : best) {
+    mark[f.e.tri] = stamp;
+    if (const std::uint32_t nb = T[f.e.tri].nbr[f.e.slot]; nb != kNone) mark[nb] = stamp;
+  }
+  thread_local std::vector<std::uint32_t> others;
+  others.clear();
+  for (const std::uint32_t t : list)
+    if (mark[t] != stamp) others.push_back(t);
+  if (2 * others.size() > list.size()) return false;  // mostly triangles the slab does not separate
+  const double ulo = best_vertical ? y0 : x0, uhi = best_vertical ? y1 : x1;
+  slabs_.push_back(Slab{static_cast<std::uint32_t>(slab_edges_.size()), static_cast<std::uint32_t>(slab_edges_.size() + best.size()),
+                        static_cast<std::uint32_t>(slab_others_.size()), static_cast<std::uint32_t>(slab_others_.size() + others.size()),
+                        best_vertical, ulo, uhi, ulo / 2 + uhi / 2});
+  for (const Found& f : best) slab_edges_.push_back(f.e);
+  slab_others_.insert(slab_others_.end(), others.begin(), others.end());
+  return true;
 }
 
 // Environment vertices in the query's number type: input points, or their lazy-exact twins
@@ -321,6 +436,73 @@ VisibilityIndex::Located VisibilityIndex::locate_triangle(const Q& q, const Poin
     // q's cell box lies in the interior of one triangle: q does too, no test needed (only
     // for a double query, whose cell is its own; a constructed one may lie off its rounding's cell).
     if constexpr (double_query) return Located{{Location::Kind::Interior, 0}, *k & ~kInsideCell, -1};
+  } else if (k != end && (*k & kSlabCell)) {
+    const Slab& sl = slabs_[*k & ~kSlabCell];
+    const SlabEdge* E = slab_edges_.data() + sl.edges;
+    const std::size_t S = sl.edge_end - sl.edges;
+    auto ends = [&](const SlabEdge& e, std::uint32_t& a, std::uint32_t& b) {
+      a = T[e.tri].v[e.slot], b = T[e.tri].v[(e.slot + 1) % 3];
+      if (e.reversed) std::swap(a, b);
+    };
+    auto left_tri = [&](const SlabEdge& e) { return e.reversed ? T[e.tri].nbr[e.slot] : e.tri; };
+    auto right_tri = [&](const SlabEdge& e) { return e.reversed ? e.tri : T[e.tri].nbr[e.slot]; };
+    auto try_tri = [&](std::uint32_t t) -> std::optional<Located> {
+      if (t == kNone) return std::nullopt;
+      return test(t);
+    };
+    if constexpr (double_query) {
+      auto left_of = [&](const SlabEdge& e) {
+        std::uint32_t a, b;
+        ends(e, a, b);
+        count();
+        return orientation(P(a), P(b), q);
+      };
+      // The band: guessed in floats, verified exactly against its two edges; exact
+      // binary search if that fails.
+      const double along = sl.vertical ? q.y() : q.x(), across = sl.vertical ? -q.x() : q.y();
+      const float du = static_cast<float>(along - sl.mid), kq = static_cast<float>(across);
+      std::size_t lo = 0, hi = S;
+      while (lo < hi) {
+        const std::size_t m = (lo + hi) / 2;
+        if (E[m].w_mid + E[m].slope * du < kq) lo = m + 1;
+        else hi = m;
+      }
+      int below = lo > 0 ? left_of(E[lo - 1]) : 1, above = lo < S ? left_of(E[lo]) : -1;
+      if (below <= 0 || above >= 0) {
+        lo = 0, hi = S, below = 1, above = -1;
+        while (lo < hi) {
+          const std::size_t m = (lo + hi) / 2;
+          const int o = left_of(E[m]);
+          if (o > 0) lo = m + 1, below = o;
+          else hi = m, above = o;
+        }
+      }
+      if (above == 0) {  // on edge E[lo] (it crosses q's line across the cell): one of its sides
+        if (auto r = try_tri(left_tri(E[lo]))) return *r;
+        if (auto r = try_tri(right_tri(E[lo]))) return *r;
+      } else if (lo > 0 && lo < S) {
+        // Strictly between two edges of one triangle, strictly inside the cell's extent
+        // along them (so both cross q's line across the cell at interior points): q lies
+        // on the open chord of that triangle there, in its interior.
+        const std::uint32_t t = left_tri(E[lo - 1]);
+        if (t != kNone && t == right_tri(E[lo]) && along > sl.lo && along < sl.hi)
+          return Located{{Location::Kind::Interior, 0}, t, -1};
+        if (auto r = try_tri(t)) return *r;
+        if (auto r = try_tri(right_tri(E[lo]))) return *r;
+      } else if (lo == 0 && S > 0) {
+        if (auto r = try_tri(right_tri(E[0]))) return *r;
+      } else if (S > 0) {
+        if (auto r = try_tri(left_tri(E[S - 1]))) return *r;
+      }
+    }
+    // Every triangle of the cell: the others, then both sides of every slab edge.
+    for (std::uint32_t i = sl.others; i < sl.others_end; ++i)
+      if (auto r = test(slab_others_[i])) return *r;
+    for (std::size_t i = 0; i < S; ++i) {
+      if (auto r = try_tri(left_tri(E[i]))) return *r;
+      if (auto r = try_tri(right_tri(E[i]))) return *r;
+    }
+    k = end;
   }
   for (; k != end; ++k)
     if (auto r = test(*k & ~kInsideCell)) return *r;
@@ -351,6 +533,41 @@ std::size_t VisibilityIndex::locate_tests(const Point& q) const {
 
 // ---------------------------------------------------------------- expansion
 namespace {
+
+// Orientation of (p, a, b) for the expansion's hot loop: CGAL's own semi-static filter for
+// Orientation_2 (Static_filters_predicates/Orientation_2.h: the same differences, the same
+// error bound and under/overflow guards), inlined here because the library call is not;
+// whenever the double sign is not certain, CGAL::orientation decides (exact).
+inline int vis_orient(const Point& p, const Point& a, const Point& b) {
+  const double pax = a.x() - p.x(), pay = a.y() - p.y(), pbx = b.x() - p.x(), pby = b.y() - p.y();
+  double maxx = std::max(std::abs(pax), std::abs(pbx)), maxy = std::max(std::abs(pay), std::abs(pby));
+  if (maxx > maxy) std::swap(maxx, maxy);
+  if (maxx >= 1e-146 && maxy < 1e153) {
+    const double det = pax * pby - pay * pbx, eps = 8.8872057372592798e-16 * maxx * maxy;
+    if (det > eps) return 1;
+    if (det < -eps) return -1;
+  }
+  return orientation(p, a, b);
+}
+inline int vis_orient(const ExactPoint& p, const ExactPoint& a, const ExactPoint& b) { return orientation(p, a, b); }
+
+// A point relative to the query: its differences and their magnitudes, for vis_orient's
+// filter with the differences shared between tests.
+struct Rel {
+  double x = 0, y = 0, ax = 0, ay = 0;
+  Rel() = default;
+  Rel(const Point& a, const Point& q) : x(a.x() - q.x()), y(a.y() - q.y()), ax(std::abs(x)), ay(std::abs(y)) {}
+};
+// vis_orient(q, a, b) given a - q and b - q: the same filter on the same differences.
+inline int orient_rel(const Rel& a, const Rel& b, const Point& q, const Point& pa, const Point& pb) {
+  const double maxx = std::max(a.ax, b.ax), maxy = std::max(a.ay, b.ay);
+  if (std::min(maxx, maxy) >= 1e-146 && std::max(maxx, maxy) < 1e153) {
+    const double det = a.x * b.y - a.y * b.x, eps = 8.8872057372592798e-16 * maxx * maxy;
+    if (det > eps) return 1;
+    if (det < -eps) return -1;
+  }
+  return orientation(q, pa, pb);
+}
 
 // Symbolic polygon vertex: exact points are constructed only once, at the end.
 struct Sym {
@@ -385,10 +602,20 @@ VisScratch& vis_scratch() {
 
 }  // namespace
 
+// A polygon returned by value is computed into this thread's reused polygon and then
+// copied out with exactly sized vectors: compute_at's reservation (twice the piece count)
+// would otherwise be allocated, and its pages touched, for every result.
+namespace {
+VisibilityPolygon& vis_result_scratch() {
+  thread_local VisibilityPolygon scratch;
+  return scratch;
+}
+}  // namespace
+
 VisibilityPolygon VisibilityIndex::compute(const Point& q) const {
-  VisibilityPolygon out;
-  compute_at(q, q, out, true);
-  return out;
+  VisibilityPolygon& scratch = vis_result_scratch();
+  compute_at(q, q, scratch, true);
+  return scratch;
 }
 
 void VisibilityIndex::compute(const Point& q, VisibilityPolygon& out) const { compute_at(q, q, out, true); }
@@ -409,22 +636,107 @@ VisibilityPolygon VisibilityIndex::compute(const ExactPoint& q) const {
   return out;
 }
 
+namespace {
+// Process-wide pool of helper threads for compute_many, started on first use and kept:
+// a batch of 500 queries lasts 0.5-2 ms on small maps, about what starting and joining
+// threads per call cost. Idle helpers sleep on a condition variable (no spinning). A batch
+// is queued; each helper that takes it runs its chunks until none are left; the caller
+// runs chunks too, then withdraws the batch from the queue (no helper can join after
+// that) and waits for the helpers that joined to leave, so the batch (on the caller's
+// stack) is never touched after compute_many returns. Several callers at once each queue
+// their own batch; helpers serve the oldest.
+class VisWorkerPool {
+ public:
+  struct Batch {
+    std::function<void()> work;  // runs chunks until the batch's counter is exhausted
+    std::size_t max_helpers = 0;
+    std::size_t helpers = 0;     // joined and not yet left (guarded by the pool's mutex)
+    std::condition_variable left;
+  };
+
+  static VisWorkerPool& instance() {
+    static VisWorkerPool pool;
+    return pool;
+  }
+
+  // Runs b.work on the calling thread and on up to b.max_helpers helpers; returns when all
+  // of them have finished.
+  void run(Batch& b) {
+    {
+      std::lock_guard<std::mutex> lock(m_);
+      // Grow lazily to what callers have asked for (capped); never shrinks.
+      while (workers_.size() < std::min<std::size_t>(b.max_helpers, kMaxWorkers))
+        workers_.emplace_back([this] { serve(); });
+      queue_.push_back(&b);
+    }
+    if (b.max_helpers == 1) wake_.notify_one();
+    else wake_.notify_all();
+    b.work();
+    std::unique_lock<std::mutex> lock(m_);
+    withdraw(&b);
+    b.left.wait(lock, [&] { return b.helpers == 0; });
+  }
+
+  ~VisWorkerPool() {
+    {
+      std::lock_guard<std::mutex> lock(m_);
+      stop_ = true;
+    }
+    wake_.notify_all();
+    for (auto& t : workers_) t.join();
+  }
+
+ private:
+  static constexpr std::size_t kMaxWorkers = 64;
+  VisWorkerPool() = default;
+
+  void withdraw(Batch* b) {  // under m_
+    const auto it = std::find(queue_.begin(), queue_.end(), b);
+    if (it != queue_.end()) queue_.erase(it);
+  }
+
+  void serve() {
+    std::unique_lock<std::mutex> lock(m_);
+    while (true) {
+      wake_.wait(lock, [&] { return stop_ || !queue_.empty(); });
+      if (stop_) return;
+      Batch* b = queue_.front();
+      if (++b->helpers >= b->max_helpers) queue_.pop_front();  // enough helpers joined
+      lock.unlock();
+      b->work();
+      lock.lock();
+      withdraw(b);  // its work is exhausted: nobody else need join
+      if (--b->helpers == 0) b->left.notify_all();
+    }
+  }
+
+  std::mutex m_;
+  std::condition_variable wake_;
+  std::deque<Batch*> queue_;
+  std::vector<std::thread> workers_;
+  bool stop_ = false;
+};
+}  // namespace
+
 std::vector<VisibilityPolygon> VisibilityIndex::compute_many(std::span<const Point> queries, unsigned threads,
                                                              bool abstract) const {
   std::vector<VisibilityPolygon> out(queries.size());
-  constexpr std::size_t kChunk = 64;  // queries taken at once by a thread
-  const std::size_t chunks = (queries.size() + kChunk - 1) / kChunk;
   std::size_t n = threads ? threads : std::max(1u, std::thread::hardware_concurrency());
-  n = std::max<std::size_t>(1, std::min(n, chunks));
+  // Chunks small enough that the threads finish together (about 8 per thread), large
+  // enough that taking one (an atomic add) is negligible next to its queries.
+  const std::size_t chunk = std::clamp<std::size_t>(queries.size() / (8 * n), 1, 64);
+  n = std::max<std::size_t>(1, std::min(n, (queries.size() + chunk - 1) / chunk));
   std::atomic<std::size_t> next{0};
   std::mutex failed;
   std::size_t failed_at = queries.size();
   std::exception_ptr error;
   auto work = [&] {
-    for (std::size_t b; (b = next.fetch_add(kChunk, std::memory_order_relaxed)) < queries.size();) {
-      for (std::size_t i = b; i < std::min(queries.size(), b + kChunk); ++i) {
+    for (std::size_t b; (b = next.fetch_add(chunk, std::memory_order_relaxed)) < queries.size();) {
+      for (std::size_t i = b; i < std::min(queries.size(), b + chunk); ++i) {
         try {
-          compute_at(queries[i], queries[i], out[i], !abstract);
+          VisibilityPolygon& scratch = vis_result_scratch();
+          compute_at(queries[i], queries[i], scratch, !abstract);
+          out[i] = scratch;  // exactly sized
         } catch (...) {
           std::lock_guard<std::mutex> lock(failed);
           if (i < failed_at) failed_at = i, error = std::current_exception();
@@ -432,11 +744,14 @@ std::vector<VisibilityPolygon> VisibilityIndex::compute_many(std::span<const Poi
       }
     }
   };
-  std::vector<std::thread> pool;
-  pool.reserve(n - 1);
-  for (std::size_t k = 1; k < n; ++k) pool.emplace_back(work);
-  work();
-  for (auto& t : pool) t.join();
+  if (n == 1) {
+    work();
+  } else {
+    VisWorkerPool::Batch batch;
+    batch.work = work;
+    batch.max_helpers = n - 1;
+    VisWorkerPool::instance().run(batch);
+  }
   if (error) std::rethrow_exception(error);
   return out;
 }
@@ -459,7 +774,6 @@ void VisibilityIndex::compute_at(const Q& q, const Point& approx, VisibilityPoly
   const Environment& E = *env_;
 
   auto sym_vertex = [](std::uint32_t v) { return Sym{VisibilityVertex::Kind::EnvironmentVertex, v, kNone}; };
-  auto sym_hit = [](std::uint32_t through, std::uint32_t e) { return Sym{VisibilityVertex::Kind::RayHit, through, e}; };
   const Sym sym_query{VisibilityVertex::Kind::Query, kNone, kNone};
 
   // This thread's scratch, moved into locals for the query (the hot loop then keeps the
@@ -494,32 +808,54 @@ void VisibilityIndex::compute_at(const Q& q, const Point& approx, VisibilityPoly
     push({t0, s0, R0, L0});
     while (top > 0) {
       VisItem it = stack[--top];
+      Rel rd, ld;  // R - q and L - q (double queries)
+      if constexpr (std::is_same_v<Q, Point>) rd = Rel(P[it.R], q), ld = Rel(P[it.L], q);
       // Follow one cone across triangles; a split pushes its left part and goes on with
       // the right one (the order of the pieces is that of a plain stack).
       while (true) {
         const Triangle& tr = T[it.t];
         const std::uint32_t r = tr.v[it.slot], l = tr.v[(it.slot + 1) % 3];
         if (tr.nbr[it.slot] == kNone) {  // boundary: emit the visible piece of this edge
+          // Written field by field into the list: a piece composed on the stack and copied
+          // was reloaded wider than it was stored, stalling store forwarding (profiled).
           const std::uint32_t e = tr.edge[it.slot];
-          Piece pc{e, it.R, it.L, {}, {}};
-          pc.start = (it.R == r || orientation(q, Pq(it.R), Pq(r)) == 0) ? sym_vertex(r) : sym_hit(it.R, e);
-          pc.end = (it.L == l || orientation(q, Pq(it.L), Pq(l)) == 0) ? sym_vertex(l) : sym_hit(it.L, e);
-          pieces.push_back(pc);
+          Piece& pc = pieces.emplace_back();
+          pc.edge = e, pc.ray_r = it.R, pc.ray_l = it.L;
+          if (it.R == r || vis_orient(q, Pq(it.R), Pq(r)) == 0) {
+            pc.start.kind = VisibilityVertex::Kind::EnvironmentVertex, pc.start.vertex = r, pc.start.edge = kNone;
+          } else {
+            pc.start.kind = VisibilityVertex::Kind::RayHit, pc.start.vertex = it.R, pc.start.edge = e;
+          }
+          if (it.L == l || vis_orient(q, Pq(it.L), Pq(l)) == 0) {
+            pc.end.kind = VisibilityVertex::Kind::EnvironmentVertex, pc.end.vertex = l, pc.end.edge = kNone;
+          } else {
+            pc.end.kind = VisibilityVertex::Kind::RayHit, pc.end.vertex = it.L, pc.end.edge = e;
+          }
           break;
         }
         const std::uint32_t u = tr.nbr[it.slot];
         const Triangle& nt = T[u];
-        int j = 0;
-        while (nt.v[j] != l) ++j;  // entry edge in u runs l -> r
+        const int j = back_[it.t][it.slot];  // entry edge in u runs l -> r
         const std::uint32_t c = nt.v[(j + 2) % 3];
         const int right_slot = (j + 1) % 3, left_slot = (j + 2) % 3;  // (r, c) and (c, l)
-        const int cr = orientation(q, Pq(it.R), Pq(c));
-        const int cl = orientation(q, Pq(it.L), Pq(c));
-        if (cr <= 0) {
+        if constexpr (std::is_same_v<Q, Point>) {
+          // vis_orient(q, R, c) and vis_orient(q, L, c) with the differences from q shared
+          // (c's computed once, R's and L's kept while the cone is followed).
+          const Rel cd(P[c], q);
+          if (orient_rel(rd, cd, q, P[it.R], P[c]) <= 0) {
+            it = {u, left_slot, it.R, it.L};
+          } else if (orient_rel(ld, cd, q, P[it.L], P[c]) >= 0) {
+            it = {u, right_slot, it.R, it.L};
+          } else {  // c splits the cone; right part first (counter-clockwise output)
+            push({u, left_slot, c, it.L});
+            it = {u, right_slot, it.R, c};
+            ld = cd;
+          }
+        } else if (vis_orient(q, Pq(it.R), Pq(c)) <= 0) {
           it = {u, left_slot, it.R, it.L};
-        } else if (cl >= 0) {
+        } else if (vis_orient(q, Pq(it.L), Pq(c)) >= 0) {
           it = {u, right_slot, it.R, it.L};
-        } else {  // c splits the cone; right part first (counter-clockwise output)
+        } else {
           push({u, left_slot, c, it.L});
           it = {u, right_slot, it.R, c};
         }
@@ -611,27 +947,40 @@ void VisibilityIndex::compute_at(const Q& q, const Point& approx, VisibilityPoly
     if (coordinates) v.approx = sv.kind == VisibilityVertex::Kind::EnvironmentVertex ? P[sv.vertex] : approx_vertex(E, approx, v);
     return v;
   };
+  // Output records are written field by field in place (as the pieces above: a record
+  // composed on the stack and copied stalled store forwarding).
+  auto emit_vertex = [&](const Sym& sv) {
+    VisibilityVertex& v = out.vertices.emplace_back();
+    v.kind = sv.kind, v.vertex = sv.vertex, v.edge = sv.edge;
+    if (!coordinates) v.approx = no_coordinates;
+    else if (sv.kind == VisibilityVertex::Kind::EnvironmentVertex) v.approx = P[sv.vertex];
+    else v.approx = approx_vertex(E, approx, v);
+  };
+  auto emit_edge = [&](VisibilityEdge::Kind kind, std::uint32_t edge, std::uint32_t reflex, bool left) {
+    VisibilityEdge& d = out.edges.emplace_back();
+    d.kind = kind, d.edge = edge, d.reflex = reflex, d.occluder_on_left = left;
+  };
   const std::size_t m = pieces.size();
   out.vertices.reserve(2 * m);
   out.edges.reserve(2 * m);
   for (std::size_t k = 0; k < m; ++k) {
     const Piece& pc = pieces[k];
-    out.vertices.push_back(realise(pc.start));
-    out.edges.push_back({VisibilityEdge::Kind::Solid, pc.edge, kNone, false});
+    emit_vertex(pc.start);
+    emit_edge(VisibilityEdge::Kind::Solid, pc.edge, kNone, false);
     const Sym &X = pc.end, &Y = pieces[(k + 1) % m].start;
     if (X == Y) continue;
     // A gap along the shared cone ray q -> c between the two hits X (end of this piece)
     // and Y (start of the next).
-    out.vertices.push_back(realise(X));
+    emit_vertex(X);
     const bool both_vertices = X.kind == VisibilityVertex::Kind::EnvironmentVertex &&
                                Y.kind == VisibilityVertex::Kind::EnvironmentVertex;
     if (both_vertices) {  // the ray may run along an edge (ids at a contact name one wedge: compare points)
       if (const std::size_t e = E.edge_between(X.vertex, Y.vertex); e != SIZE_MAX) {
-        out.edges.push_back({VisibilityEdge::Kind::Solid, static_cast<std::uint32_t>(e), kNone, false});
+        emit_edge(VisibilityEdge::Kind::Solid, static_cast<std::uint32_t>(e), kNone, false);
         continue;
       }
       if (const std::size_t e = E.edge_between(Y.vertex, X.vertex); e != SIZE_MAX) {
-        out.edges.push_back({VisibilityEdge::Kind::Solid, static_cast<std::uint32_t>(e), kNone, false});
+        emit_edge(VisibilityEdge::Kind::Solid, static_cast<std::uint32_t>(e), kNone, false);
         continue;
       }
     }
@@ -646,7 +995,7 @@ void VisibilityIndex::compute_at(const Q& q, const Point& approx, VisibilityPoly
       outward = CGAL::compare_distance_to_point(eq, exact_vertex(env_, eq, out.vertices.back()),
                                                 exact_vertex(env_, eq, realise(Y))) == CGAL::SMALLER;
     }
-    out.edges.push_back({VisibilityEdge::Kind::Free, kNone, pc.ray_l, !outward});
+    emit_edge(VisibilityEdge::Kind::Free, kNone, pc.ray_l, !outward);
   }
 }
 

@@ -10,6 +10,8 @@
 
 #include <cmath>
 #include <random>
+#include <span>
+#include <thread>
 
 using namespace preimage::geometry;
 using preimage::testing::CgalVisibility;
@@ -205,6 +207,29 @@ TEST(Visibility, ComputeManyEqualsSequentialCompute) {
   }
 }
 
+// compute_many from several callers at once (the helper pool is shared by the process):
+// every caller gets its own queries' polygons, equal to sequential compute.
+TEST(Visibility, ComputeManyFromConcurrentCallers) {
+  const auto env = generators::office(4, 3);
+  VisibilityIndex index(env);
+  std::vector<Point> qs;
+  for (const auto& q : preimage::testing::random_queries(env, 400, 0, 0, 43)) qs.push_back(q.p);
+  std::vector<VisibilityPolygon> want;
+  for (const Point& q : qs) want.push_back(index.compute(q));
+  std::vector<std::vector<VisibilityPolygon>> got(4);
+  std::vector<std::thread> callers;
+  for (std::size_t c = 0; c < got.size(); ++c)
+    callers.emplace_back([&, c] {
+      for (int round = 0; round < 5; ++round) got[c] = index.compute_many(std::span<const Point>(qs).subspan(c * 50), 2 + c % 2);
+    });
+  for (auto& t : callers) t.join();
+  for (std::size_t c = 0; c < got.size(); ++c) {
+    ASSERT_EQ(got[c].size(), qs.size() - c * 50);
+    for (std::size_t i = 0; i < got[c].size(); ++i)
+      expect_same_polygon(want[c * 50 + i], got[c][i], true, "caller " + std::to_string(c) + " query " + std::to_string(i));
+  }
+}
+
 TEST(Visibility, LocateEqualsBruteForce) {
   std::size_t checked = 0, on_boundary = 0, outside = 0;
   for (const auto& [name, env] : vis_environments()) {
@@ -245,4 +270,42 @@ TEST(Visibility, LocateEqualsBruteForce) {
   EXPECT_GE(checked, 20000u);
   EXPECT_GE(on_boundary, 3000u);
   EXPECT_GE(outside, 1000u);
+}
+
+// Combs: the base strip is triangulated as two fans of long thin triangles, so grid cells
+// there list hundreds of them and get a slab (edges across the cell, binary search). Turned
+// by a quarter, the slabs run bottom to top. Locate equals brute force on points inside,
+// on edges, at vertices and on triangle edges; V(q) equals CGAL's; and few tests per locate.
+TEST(Visibility, LocateInHeavyCellsEqualsBruteForce) {
+  auto turned = [](Ring r) {
+    for (Point& p : r) p = Point(-p.y(), p.x());
+    return r;
+  };
+  const std::vector<std::pair<std::string, Environment>> envs = [&] {
+    std::vector<std::pair<std::string, Environment>> e;
+    e.emplace_back("comb 400", Environment::make(generators::comb(400), {}));
+    e.emplace_back("comb 400 turned", Environment::make(turned(generators::comb(400)), {}));
+    return e;
+  }();
+  for (const auto& [name, env] : envs) {
+    VisibilityIndex index(env);
+    std::vector<Point> pts;
+    std::size_t tests = 0, interior = 0;  // per locate of random interior points
+    for (const auto& q : preimage::testing::random_queries(env, 3000, 300, 300, 17)) {
+      pts.push_back(q.p);
+      if (q.loc.kind == Location::Kind::Interior) tests += index.locate_tests(q.p), ++interior;
+    }
+    for (const Triangle& t : index.triangulation().triangles())
+      for (int i = 0; i < 3; ++i) pts.push_back(CGAL::midpoint(env.vertex(t.v[i]), env.vertex(t.v[(i + 1) % 3])));
+    for (const Point& p : pts) {
+      const Location want = brute_locate(env, index.triangulation(), p);
+      const Location got = index.locate(p);
+      EXPECT_EQ(got.kind, want.kind) << name << " at " << format_point(p);
+      if (want.kind != Location::Kind::Interior) {
+        EXPECT_EQ(got.index, want.index) << name << " at " << format_point(p);
+      }
+    }
+    EXPECT_LT(static_cast<double>(tests) / static_cast<double>(interior), 5.0) << name;
+    EXPECT_GE(compare_with_cgal(env, 40, 10, 10, 91), 60) << name;
+  }
 }

@@ -8,6 +8,7 @@
 #include <preimage/geometry/queries.hpp>
 #include <preimage/geometry/triangulation.hpp>
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -128,6 +129,8 @@ class VisibilityIndex {
   };
   template <class Q, class Count = NoCount>
   Located locate_triangle(const Q& q, const Point& approx, bool name_outside = true, Count count = {}) const;
+  bool build_slab(const std::vector<std::uint32_t>& list, double x0, double y0, double x1, double y1);
+  static constexpr std::size_t kSlabMinTriangles = 12;  // a cell listing more gets a slab
   template <class Q>
   void compute_at(const Q& q, const Point& approx, VisibilityPolygon& out, bool coordinates,
                   std::uint32_t only_wedge = kNone) const;
@@ -149,9 +152,36 @@ class VisibilityIndex {
   // area of the overlap, largest first; a first entry with kInsideCell set is a triangle
   // holding the whole box in its interior.
   static constexpr std::uint32_t kInsideCell = 0x80000000u;
+  // A heavy cell (many triangles, e.g. long thin fans crossing it) lists only an entry
+  // kSlabCell | s naming slab s. Slab s: the triangle edges crossing the cell from side to
+  // side (left to right, or bottom to top), sorted across the cell; they cut it into bands.
+  // A query finds its band by binary search (a float guess verified by two exact
+  // orientations; exact binary search if that fails); a band between two edges of one
+  // triangle is that triangle (proved by the two strict tests), so these triangles are
+  // not listed. The slab lists the cell's other triangles (no edge in the slab); a query on
+  // an edge tests the edge's two triangles; a miss (rounding in the guess, a band of other
+  // triangles) scans the other list, then every triangle of the slab's edges: all of the
+  // cell's triangles, so the answer stays exact.
+  static constexpr std::uint32_t kSlabCell = 0x40000000u;
+  struct SlabEdge {
+    std::uint32_t tri;   // the triangle on the edge's left (after-bands side), or on its
+    std::uint8_t slot;   // right when `reversed`; slot of the edge in it
+    bool reversed;
+    float w_mid, slope;  // across-coordinate at the cell's middle and its slope: the guess only
+  };
+  struct Slab {
+    std::uint32_t edges, edge_end;    // slab_edges_[edges, edge_end), sorted
+    std::uint32_t others, others_end; // slab_others_[others, others_end)
+    bool vertical;                    // edges cross from bottom to top (else left to right)
+    double lo, hi, mid;               // the cell's extent along the edges (x, or y if vertical)
+  };
   double x0_, y0_, cw_, ch_;
   std::uint32_t gx_, gy_;
   std::vector<std::uint32_t> cell_off_, cell_tris_;
+  std::vector<Slab> slabs_;
+  std::vector<std::array<std::uint8_t, 4>> back_;  // back_[t][s]: the slot of edge s of t in its neighbour
+  std::vector<SlabEdge> slab_edges_;
+  std::vector<std::uint32_t> slab_others_;
 };
 
 /// Removes repeated and collinear middle vertices and rotates the cycle to start at its
