@@ -141,18 +141,7 @@ CoverageReport plan_at(const Planning& P, const BoustrophedonDecomposition& b, d
         if (d < best) best = d, first = c;
       }
     }
-    const auto adj = b.adjacency();
-    std::vector<char> seen(n, 0);
-    std::vector<std::uint32_t> stack{first};
-    while (!stack.empty()) {
-      const std::uint32_t k = stack.back();
-      stack.pop_back();
-      if (seen[k]) continue;
-      seen[k] = 1;
-      order.push_back(k);
-      for (auto it = adj[k].rbegin(); it != adj[k].rend(); ++it)
-        if (!seen[*it]) stack.push_back(*it);
-    }
+    order = detail::depth_first_order(b.adjacency(), first);
     chosen.assign(order.size(), 0);
   }
 
@@ -180,6 +169,27 @@ CoverageReport plan_at(const Planning& P, const BoustrophedonDecomposition& b, d
 }
 
 }  // namespace
+
+std::vector<std::uint32_t> detail::depth_first_order(const std::vector<std::vector<std::uint32_t>>& adj, std::uint32_t first) {
+  std::vector<std::uint32_t> order;
+  std::vector<char> seen(adj.size(), 0);
+  std::vector<std::uint32_t> roots{first};
+  for (std::uint32_t k = 0; k < adj.size(); ++k) roots.push_back(k);
+  for (const std::uint32_t root : roots) {
+    if (root >= adj.size() || seen[root]) continue;
+    std::vector<std::uint32_t> stack{root};
+    while (!stack.empty()) {
+      const std::uint32_t k = stack.back();
+      stack.pop_back();
+      if (seen[k]) continue;
+      seen[k] = 1;
+      order.push_back(k);
+      for (auto it = adj[k].rbegin(); it != adj[k].rend(); ++it)
+        if (!seen[*it]) stack.push_back(*it);
+    }
+  }
+  return order;
+}
 
 void detail::finish_path(const Planning& P, Polyline path, CoverageReport& rep) {
   // Certified output: every segment in the component (exact walk) and, with a footprint,

@@ -27,6 +27,10 @@ struct Planning {
 /// transit length, rotation and turns.
 void finish_path(const Planning& P, Polyline path, CoverageReport& rep);
 
+/// 6.2.1's exhaustive walk: cells in depth-first order of the adjacency graph from `first`
+/// (neighbours in their listed order), then any cell the walk did not reach, the same way.
+std::vector<std::uint32_t> depth_first_order(const std::vector<std::vector<std::uint32_t>>& adj, std::uint32_t first);
+
 /// The variable-slice patterns of 6.2.3 (spiral, concentric, spike, squarel) on the Morse
 /// decomposition of E (morse_coverage.cpp).
 CoverageReport plan_pattern(const Planning& P);

@@ -429,45 +429,23 @@ struct Builder {
   }
 
   // Spike: the ray from q away from c (outwards) or towards it, stopping at c. Linear: the
-  // vertical ray up (outwards) or down.
+  // vertical ray up (outwards) or down. Both are segments long enough to leave the map.
   Candidate shoot_ray(std::uint32_t from, const V2& q, bool outwards, double& span) {
     const bool linear = fam == SliceFamily::Linear;
-    const V2 u = linear ? V2{0, 1} : V2{q.x - c.x(), q.y - c.y()};
-    const Point qa = points[from].approx;
-    const Point other = linear ? Point(qa.x(), qa.y() + 1) : capprox;
-    // Only edges whose endpoints are not strictly on one side of the slice's line can meet it
-    // (an exact test on the input doubles; q is a vertex for these families).
-    std::optional<std::pair<FT, Candidate>> best;
-    for (const std::size_t e : candidates(qa)) {
-      const int oa = geometry::orientation(other, qa, env.vertex(e)), ob = geometry::orientation(other, qa, env.vertex(env.next(e)));
-      if (oa == ob && oa != 0) continue;
-      const ExactPoint& ea = env.exact_vertex(e);
-      const V2 d = edge_dir(e);
-      const V2 dir = outwards ? u : V2{-u.x, -u.y};
-      const FT den = cross(dir, d);
-      const V2 as{ea.x() - q.x, ea.y() - q.y};
-      if (sgn(den) == 0) {
-        if (sgn(cross(as, dir)) != 0) continue;
-        // A flat edge on this ray: met at its nearer end.
-        const FT dd = dot(dir, dir);
-        for (const std::uint32_t v : {static_cast<std::uint32_t>(e), static_cast<std::uint32_t>(env.next(e))}) {
-          const ExactPoint& pv = env.exact_vertex(v);
-          const FT s = dot(V2{pv.x() - q.x, pv.y() - q.y}, dir) / dd;
-          if (sgn(s) <= 0 || (!outwards && !linear && !(s < 1))) continue;
-          if (best && !(s < best->first)) continue;
-          best.emplace(s, vertex_candidate(v));
-        }
-        continue;
-      }
-      const FT s = cross(as, d) / den, t = cross(as, dir) / den;
-      if (sgn(s) <= 0 || sgn(t) < 0 || t > 1) continue;
-      if (!outwards && !linear && !(s < 1)) continue;  // beyond the centre
-      if (best && !(s < best->first)) continue;
-      best.emplace(s, candidate_at(static_cast<std::uint32_t>(e), t));
-    }
     span = 0;
-    if (best) return best->second;
-    if (!outwards && !linear) {
+    V2 z;
+    if (!linear && !outwards) {
+      z = V2{c.x(), c.y()};  // the ray ends at the centre, where h is undefined
+    } else {
+      const V2 u = linear ? V2{0, 1} : V2{q.x - c.x(), q.y - c.y()};
+      const V2 dir = outwards ? u : V2{-u.x, -u.y};
+      const auto box = env.bbox();
+      // |dir|_1 >= |dir|_2, so this length in units of dir reaches beyond the map's box.
+      const FT reach = FT(2 * (box.xmax() - box.xmin() + box.ymax() - box.ymin()) + 1) / (CGAL::abs(dir.x) + CGAL::abs(dir.y));
+      z = V2{q.x + reach * dir.x, q.y + reach * dir.y};
+    }
+    if (const auto hit = first_hit_on_segment(q, z, true, candidates(points[from].approx))) return hit->second;
+    if (!linear && !outwards) {
       Candidate k;
       k.kind = MorsePoint::Kind::Centre, k.id = 0;
       return k;

@@ -242,25 +242,7 @@ CoverageReport plan_pattern(const Planning& P) {
   std::uint32_t first = 0;
   if (P.start)
     if (const auto c = m.cell_of(*P.start)) first = static_cast<std::uint32_t>(*c);
-  std::vector<std::uint32_t> order;
-  {
-    std::vector<char> seen(n, 0);
-    std::vector<std::uint32_t> roots{first};  // then every other component of the graph
-    for (std::uint32_t k = 0; k < n; ++k) roots.push_back(k);
-    for (const std::uint32_t root : roots) {
-      if (seen[root]) continue;
-      std::vector<std::uint32_t> stack{root};
-      while (!stack.empty()) {
-        const std::uint32_t k = stack.back();
-        stack.pop_back();
-        if (seen[k]) continue;
-        seen[k] = 1;
-        order.push_back(k);
-        for (auto it = adj[k].rbegin(); it != adj[k].rend(); ++it)
-          if (!seen[*it]) stack.push_back(*it);
-      }
-    }
-  }
+  const std::vector<std::uint32_t> order = depth_first_order(adj, first);
 
   // Assemble, keeping only points in the free space and joining consecutive points by a
   // straight move when it is certified, else by the shortest path.
@@ -284,7 +266,7 @@ CoverageReport plan_pattern(const Planning& P) {
     ++detours;
     for (std::size_t i = 1; i < sp.points.size(); ++i) path.append(sp.points[i], move == Move::Lap ? Move::Follow : move);
   };
-  auto free_point = [&](const Point& p) { return P.index.locate(p).in_free_space(); };
+  auto free_point = [&](const Point& p) { return P.index.in_free_space(p); };
   // From a to z along the cell's boundary (6.2.3: "motion along the boundary of the cell"),
   // the shorter way round the ring nearest to both: it sweeps the corners that the laps'
   // ends cut, where a straight step would leave them uncovered.
