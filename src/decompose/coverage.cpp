@@ -168,6 +168,44 @@ CoverageReport plan_at(const Planning& P, const BoustrophedonDecomposition& b, d
   return rep;
 }
 
+// 6.2.1's pattern: the sweep direction given, or the two most promising candidates planned
+// and the shorter path kept.
+CoverageReport plan_boustrophedon(const Planning& P) {
+  std::vector<double> angles;
+  if (P.o.angle_deg) {
+    angles.push_back(*P.o.angle_deg);
+  } else {
+    // Candidates: the axes and the directions of the longest edges (sweeping along an edge
+    // avoids slivers along it); the two that need the fewest laps and cells are planned.
+    std::vector<std::pair<double, double>> edges;  // length, angle
+    for (std::size_t e = 0; e < P.env.num_vertices(); ++e) {
+      const Point &a = P.env.vertex(e), &b = P.env.vertex(P.env.next(e));
+      const double deg = std::fmod(std::atan2(b.y() - a.y(), b.x() - a.x()) * 180 / std::numbers::pi + 360.0, 180.0);
+      edges.emplace_back(std::hypot(b.x() - a.x(), b.y() - a.y()), deg);
+    }
+    std::sort(edges.rbegin(), edges.rend());
+    std::set<double> candidates{0.0, 90.0};
+    for (std::size_t i = 0; i < edges.size() && candidates.size() < 10; ++i) candidates.insert(std::round(edges[i].second * 1e6) / 1e6);
+    std::vector<std::pair<double, double>> scored;
+    for (double a : candidates) {
+      try {
+        scored.emplace_back(direction_score(BoustrophedonDecomposition(P.E, a), P.w), a);
+      } catch (const InputError&) {
+        // this direction made the rotated environment invalid: skip it
+      }
+    }
+    std::sort(scored.begin(), scored.end());
+    for (std::size_t i = 0; i < scored.size() && i < 2; ++i) angles.push_back(scored[i].second);
+    if (angles.empty()) throw InputError("coverage: no sweep direction gave a valid decomposition");
+  }
+  std::optional<CoverageReport> best;
+  for (double a : angles) {
+    CoverageReport cand = plan_at(P, BoustrophedonDecomposition(P.E, a), a);
+    if (!best || cand.length < best->length) best = std::move(cand);
+  }
+  return std::move(*best);
+}
+
 }  // namespace
 
 std::vector<std::uint32_t> detail::depth_first_order(const std::vector<std::vector<std::uint32_t>>& adj, std::uint32_t first) {
@@ -262,44 +300,7 @@ CoverageReport plan_coverage(const Environment& env, const CoverageOptions& o) {
   const VisibilityGraph graph(index);
   const Planning P{env, cs, E, index, graph, o, w, entry};
 
-  CoverageReport rep;
-  if (o.pattern != Pattern::Boustrophedon) {
-    rep = detail::plan_pattern(P);
-  } else {
-  std::vector<double> angles;
-  if (o.angle_deg) {
-    angles.push_back(*o.angle_deg);
-  } else {
-    // Candidates: the axes and the directions of the longest edges (sweeping along an edge
-    // avoids slivers along it); the two that need the fewest laps and cells are planned.
-    std::vector<std::pair<double, double>> edges;  // length, angle
-    for (std::size_t e = 0; e < env.num_vertices(); ++e) {
-      const Point &a = env.vertex(e), &b = env.vertex(env.next(e));
-      const double deg = std::fmod(std::atan2(b.y() - a.y(), b.x() - a.x()) * 180 / std::numbers::pi + 360.0, 180.0);
-      edges.emplace_back(std::hypot(b.x() - a.x(), b.y() - a.y()), deg);
-    }
-    std::sort(edges.rbegin(), edges.rend());
-    std::set<double> candidates{0.0, 90.0};
-    for (std::size_t i = 0; i < edges.size() && candidates.size() < 10; ++i) candidates.insert(std::round(edges[i].second * 1e6) / 1e6);
-    std::vector<std::pair<double, double>> scored;
-    for (double a : candidates) {
-      try {
-        scored.emplace_back(direction_score(BoustrophedonDecomposition(E, a), w), a);
-      } catch (const InputError&) {
-        // this direction made the rotated environment invalid: skip it
-      }
-    }
-    std::sort(scored.begin(), scored.end());
-    for (std::size_t i = 0; i < scored.size() && i < 2; ++i) angles.push_back(scored[i].second);
-    if (angles.empty()) throw InputError("coverage: no sweep direction gave a valid decomposition");
-  }
-  std::optional<CoverageReport> best;
-  for (double a : angles) {
-    CoverageReport cand = plan_at(P, BoustrophedonDecomposition(E, a), a);
-    if (!best || cand.length < best->length) best = std::move(cand);
-  }
-  rep = std::move(*best);
-  }
+  CoverageReport rep = o.pattern == Pattern::Boustrophedon ? plan_boustrophedon(P) : detail::plan_pattern(P);
   rep.width = w, rep.robot_radius = r;
   rep.target_area = E.area();
   for (std::size_t k = 0; k < cs.components().size(); ++k)
