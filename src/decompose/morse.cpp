@@ -364,7 +364,7 @@ struct Builder {
   bool is_self(const Candidate& k, std::uint32_t from) const {
     const MorsePoint& p = points[from];
     if (k.kind != p.kind) return false;
-    if (k.kind == MorsePoint::Kind::Vertex) return k.id == p.id;
+    if (k.kind == MorsePoint::Kind::Vertex) return vertex_point[k.id] == from;
     if (k.kind == MorsePoint::Kind::OnEdge)
       for (const auto& [key, id] : on_edge[k.id])
         if (id == from) return key == k.key;
@@ -614,7 +614,9 @@ struct Builder {
     if (std::abs(gap) > 1e-7) return gap < 0;
     const bool sa = is_self(a, from), sb = is_self(b, from);
     if (sa || sb) return !sa && sb;
-    if (a.kind == b.kind && a.id == b.id && (a.kind != MorsePoint::Kind::OnEdge || a.key == b.key)) return false;  // one point
+    if (a.kind == b.kind && (a.kind == MorsePoint::Kind::Vertex ? vertex_point[a.id] == vertex_point[b.id] : a.id == b.id) &&
+        (a.kind != MorsePoint::Kind::OnEdge || a.key == b.key))
+      return false;  // one point
     // Relative to c, mirrored for clockwise so the order is always counter-clockwise.
     auto my = [&](const RootNumber& y) { return ccw ? RootNumber{y.a - c.y(), y.b, y.d} : RootNumber{c.y() - y.a, -y.b, y.d}; };
     const RootNumber ax{a.x.a - c.x(), a.x.b, a.x.d}, ay = my(a.y), bx{b.x.a - c.x(), b.x.b, b.x.d}, by = my(b.y);
@@ -673,7 +675,6 @@ bool ray_parity(const Point& x, double phi, const std::vector<Point>& ring, doub
 void MorseDecomposition::build() {
   const Environment& env = *env_;
   const std::string who = std::string("the ") + std::string(to_string(family_)) + " decomposition";
-  geometry::require_no_contacts(env, who);
   const ExactPoint c = geometry::to_exact(centre_);
   if (family_ != SliceFamily::Linear) {  // h = x has no centre
     const auto loc = geometry::locate(env, c);
@@ -689,6 +690,15 @@ void MorseDecomposition::build() {
   B.vertex_point.resize(n);
   B.on_edge.resize(n);
   for (std::size_t v = 0; v < n; ++v) {
+    // A contact is one point of the graph, whichever ring's vertex names it.
+    if (env.is_contact(v)) {
+      std::size_t first = v;
+      for (std::size_t u = env.same_point_next(v); u != v; u = env.same_point_next(u)) first = std::min(first, u);
+      if (first < v) {
+        B.vertex_point[v] = B.vertex_point[first];
+        continue;
+      }
+    }
     MorsePoint p;
     p.kind = MorsePoint::Kind::Vertex, p.id = static_cast<std::uint32_t>(v);
     p.x = RootNumber{env.exact_vertex(v).x(), 0, 0}, p.y = RootNumber{env.exact_vertex(v).y(), 0, 0};
@@ -727,23 +737,43 @@ void MorseDecomposition::build() {
   // c; squarel, an edge parallel to the diamond's side in its quadrant). A maximal run of
   // flat sub-edges is one event, like a vertical wall in the boustrophedon decomposition:
   // the slice continues beyond each end or not, and the pair is one critical slice.
-  std::vector<std::int32_t> critical_of(points_.size() + 1, -1);
-  struct Shot { std::uint32_t point; bool ccw; };
+  // Critical points by (point, free wedge): at a contact each wedge is its own boundary point
+  // of the open free space (named by the ring vertex whose out-edge starts it); elsewhere 0.
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> critical_at;
+  auto critical_of = [&](std::uint32_t pid, std::uint32_t wedge) -> std::int32_t {
+    const auto it = critical_at.find({pid, wedge});
+    return it == critical_at.end() ? -1 : static_cast<std::int32_t>(it->second);
+  };
+  // The wedge of a contact point that a direction leaving it lies in (0 elsewhere).
+  auto wedge_of = [&](std::uint32_t pid, const V2& dir) -> std::uint32_t {
+    const MorsePoint& p = points_[pid];
+    if (p.kind != MorsePoint::Kind::Vertex || !env.is_contact(p.id)) return 0;
+    std::size_t v = p.id;
+    do {
+      const std::size_t u = env.wedge_end(v);
+      if (strictly_in_wedge(B.edge_dir(v), sub(env.exact_vertex(env.prev(u)), env.exact_vertex(u)), dir)) return static_cast<std::uint32_t>(v);
+      v = env.same_point_next(v);
+    } while (v != p.id);
+    return 0;
+  };
+  struct Shot { std::uint32_t point; bool ccw; std::uint32_t critical; };
   std::vector<Shot> shots;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> same_node;  // critical points joined by a flat run
-  auto add_critical = [&](std::uint32_t pid, CriticalKind kind) {
-    if (critical_of[pid] >= 0) return;
-    critical_of[pid] = static_cast<std::int32_t>(critical_.size());
-    critical_.push_back({pid, kind, level(points_[pid].approx), 0});
+  auto add_critical = [&](std::uint32_t pid, CriticalKind kind, std::uint32_t wedge = 0) {
+    const auto [it, fresh] = critical_at.emplace(std::make_pair(pid, wedge), static_cast<std::uint32_t>(critical_.size()));
+    if (fresh) critical_.push_back({pid, kind, level(points_[pid].approx), 0});
+    return it->second;
   };
   for (std::size_t r = 0; r < env.num_rings(); ++r) {
     std::vector<std::uint32_t> seq;  // event points around the ring, free space on the left
+    std::vector<std::uint32_t> seq_vertex;  // the ring vertex of each, or UINT32_MAX inside an edge
     for (std::size_t e = env.ring_begin(r); e < env.ring_end(r); ++e) {
-      seq.push_back(B.vertex_point[e]);
+      seq.push_back(B.vertex_point[e]), seq_vertex.push_back(static_cast<std::uint32_t>(e));
       auto list = B.on_edge[e];
       std::sort(list.begin(), list.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-      for (const auto& [k, id] : list) seq.push_back(id);
+      for (const auto& [k, id] : list) seq.push_back(id), seq_vertex.push_back(UINT32_MAX);
     }
+    auto contact = [&](std::size_t i) { return seq_vertex[i % seq.size()] != UINT32_MAX && env.is_contact(seq_vertex[i % seq.size()]); };
     const std::size_t m = seq.size();
     auto P = [&](std::size_t i) { return Builder::rational(points_[seq[i % m]]); };
     auto dir = [&](std::size_t i) { const V2 a = P(i), b = P(i + 1); return V2{b.x - a.x, b.y - a.y}; };  // piece i
@@ -770,20 +800,38 @@ void MorseDecomposition::build() {
     for (std::size_t k = 1; k <= m; ++k) {
       const std::size_t i = (first_bent + k) % m;  // point seq[i] between piece i-1 and piece i
       const std::size_t prev = (i + m - 1) % m;
+      if ((flat[prev] || flat[i]) && contact(i))
+        throw InputError(std::string(to_string(family_)) + " decomposition around --center " + geometry::format_point(centre_) + ": " +
+                         edge_name(env, flat[i] ? seq_vertex[i] : env.prev(seq_vertex[i])) +
+                         " lies on a slice and ends where holes touch; move the centre");
       if (flat[prev]) continue;  // inside or at the end of a run: handled at its start
       const V2 q = P(i);
       if (!flat[i]) {
-        const V2 a = dir(i), din = dir(prev), b{-din.x, -din.y};
+        // The free wedge from this vertex's out-edge to the in-edge of the ring vertex that
+        // closes it (another ring's at a contact, Environment::wedge_end).
+        V2 b;
+        if (contact(i)) {
+          const std::size_t u = env.wedge_end(seq_vertex[i]);
+          b = sub(env.exact_vertex(env.prev(u)), env.exact_vertex(u));
+        } else {
+          const V2 din = dir(prev);
+          b = V2{-din.x, -din.y};
+        }
+        const V2 a = dir(i);
         const int count = B.enters(q, a, b, B.slice_direction(q, true)) + B.enters(q, a, b, B.slice_direction(q, false));
         if (count == 1) continue;
-        add_critical(seq[i], count == 2 ? CriticalKind::SplitMerge : CriticalKind::BirthDeath);
-        if (count == 2) shots.push_back({seq[i], true}), shots.push_back({seq[i], false});
+        const std::uint32_t k = add_critical(seq[i], count == 2 ? CriticalKind::SplitMerge : CriticalKind::BirthDeath,
+                                             contact(i) ? seq_vertex[i] : 0);
+        if (count == 2) shots.push_back({seq[i], true, k}), shots.push_back({seq[i], false, k});
         continue;
       }
       // A flat run from seq[i] to seq[j].
       std::size_t j = i;
       while (flat[j % m]) ++j;
       const std::size_t last = (j + m - 1) % m;
+      if (contact(j))
+        throw InputError(std::string(to_string(family_)) + " decomposition around --center " + geometry::format_point(centre_) + ": " +
+                         edge_name(env, env.prev(seq_vertex[j % m])) + " lies on a slice and ends where holes touch; move the centre");
       const V2 d0 = dir(i), w = P(j), dl = dir(last), dn = dir(j);
       const V2 sc = B.slice_direction(q, true);
       const bool travel = sgn(dot(d0, sc)) > 0 && sgn(cross(d0, sc)) == 0;  // the run goes ccw (spike: outwards)
@@ -793,17 +841,15 @@ void MorseDecomposition::build() {
       const int count = ev + ew;
       if (count == 1) continue;
       const auto kind = count == 2 ? CriticalKind::SplitMerge : CriticalKind::BirthDeath;
-      add_critical(seq[i], kind), add_critical(seq[j % m], kind);
-      same_node.emplace_back(seq[i], seq[j % m]);
-      if (count == 2) shots.push_back({seq[i], !travel}), shots.push_back({seq[j % m], travel});
+      const std::uint32_t kv = add_critical(seq[i], kind), kw = add_critical(seq[j % m], kind);
+      same_node.emplace_back(kv, kw);
+      if (count == 2) shots.push_back({seq[i], !travel, kv}), shots.push_back({seq[j % m], travel, kw});
     }
   }
-  if (centre_free_ && family_ != SliceFamily::Spike) {
-    critical_of[B.centre_point] = static_cast<std::int32_t>(critical_.size());
-    critical_.push_back({B.centre_point, CriticalKind::Minimum, 0.0, 0});
-  }
+  if (centre_free_ && family_ != SliceFamily::Spike) add_critical(B.centre_point, CriticalKind::Minimum);
   // Arcs, each once: an arc's two ends are (from, leaving ccw) and (to, leaving the other way).
   std::map<std::pair<std::uint32_t, bool>, std::uint32_t> end_used;
+  std::vector<std::uint32_t> arc_critical;  // per arc: the critical point it leaves
   for (const Shot& shot : shots) {
     const std::uint32_t pid = shot.point;
     const bool ccw = shot.ccw;
@@ -821,27 +867,32 @@ void MorseDecomposition::build() {
       end_used[{pid, ccw}] = id;
       if (to != B.centre_point) end_used[{to, !ccw}] = id;
       arcs_.push_back(std::move(arc));
+      arc_critical.push_back(shot.critical);
     }
   }
-  critical_of.resize(points_.size(), -1);
 
   // Reeb nodes: critical points joined by arcs (not through the centre, where h is undefined
   // for spike and which is its own minimum otherwise).
   std::vector<std::uint32_t> parent(critical_.size());
   std::iota(parent.begin(), parent.end(), 0u);
-  for (const MorseArc& arc : arcs_) {
-    const int a = critical_of[arc.from], b = critical_of[arc.to];
-    if (a >= 0 && b >= 0 && arc.to != B.centre_point) parent[find(parent, static_cast<std::uint32_t>(a))] = find(parent, static_cast<std::uint32_t>(b));
+  for (std::size_t i = 0; i < arcs_.size(); ++i) {
+    const MorseArc& arc = arcs_[i];
+    if (arc.to == B.centre_point) continue;
+    // The end: a critical point of the same level if the arc stops at one (in the wedge it
+    // arrives in, at a contact).
+    std::int32_t b = -1;
+    if (sgn(points_[arc.to].x.b) == 0 && sgn(points_[arc.to].y.b) == 0)
+      b = critical_of(arc.to, wedge_of(arc.to, B.slice_direction(Builder::rational(points_[arc.to]), !arc.ccw)));
+    if (b >= 0) parent[find(parent, arc_critical[i])] = find(parent, static_cast<std::uint32_t>(b));
   }
-  for (const auto& [x, y] : same_node)
-    parent[find(parent, static_cast<std::uint32_t>(critical_of[x]))] = find(parent, static_cast<std::uint32_t>(critical_of[y]));
+  for (const auto& [x, y] : same_node) parent[find(parent, x)] = find(parent, y);
   std::vector<std::int32_t> node_of_root(critical_.size(), -1);
   for (std::uint32_t i = 0; i < critical_.size(); ++i) {
     const std::uint32_t r = find(parent, i);
     if (node_of_root[r] < 0) node_of_root[r] = static_cast<std::int32_t>(num_nodes_++);
     critical_[i].node = static_cast<std::uint32_t>(node_of_root[r]);
   }
-  for (MorseArc& arc : arcs_) arc.node = critical_[static_cast<std::size_t>(critical_of[arc.from])].node;
+  for (std::size_t i = 0; i < arcs_.size(); ++i) arcs_[i].node = critical_[arc_critical[i]].node;
 
   // ---- the plane graph: boundary pieces and arcs, with the free space on the left ----
   struct Half {
@@ -900,10 +951,15 @@ void MorseDecomposition::build() {
     int unknown = 0;
     for (const Spoke& k : s) unknown += !k.known;
     if (unknown > 0 && s.size() > 3) throw std::logic_error("morse: several arcs meet at an irrational point");
+    // Counter-clockwise from an out-edge; at equal directions an out-edge comes first and an
+    // in-edge last (an arc tangent to an edge runs on its free side). With one free wedge
+    // (no contact) that is: out-edge, arcs, in-edge. An arc at an irrational point is alone
+    // between its edge's two pieces.
     std::stable_sort(s.begin(), s.end(), [&](const Spoke& x, const Spoke& y) {
-      if (x.rank != y.rank && (x.rank != 1 || y.rank != 1)) return x.rank < y.rank;
-      if (!x.known || !y.known) return false;
-      return ccw_from_less(ref, x.dir, y.dir);
+      if (!x.known || !y.known) return x.rank < y.rank;
+      if (ccw_from_less(ref, x.dir, y.dir)) return true;
+      if (ccw_from_less(ref, y.dir, x.dir)) return false;
+      return x.rank < y.rank;
     });
     // The centre: only arcs, ordered by angle from +x (rank 1 throughout; ref = (1, 0)).
     for (std::size_t i = 0; i < s.size(); ++i) {
@@ -1051,7 +1107,9 @@ void MorseDecomposition::build() {
     for (const auto& cyc : cell.cycles)
       for (const MorsePiece& p : cyc) {
         if (p.arc >= 0) cell.nodes.push_back(arcs_[static_cast<std::size_t>(p.arc)].node);
-        const int k = critical_of[p.from];
+        // A boundary piece leaving a contact leaves it in the wedge its edge starts.
+        const bool at_contact = p.arc < 0 && points_[p.from].kind == MorsePoint::Kind::Vertex && env.is_contact(points_[p.from].id);
+        const int k = critical_of(p.from, at_contact ? p.edge : 0);
         if (k >= 0 && critical_[static_cast<std::size_t>(k)].kind == CriticalKind::BirthDeath)
           cell.nodes.push_back(critical_[static_cast<std::size_t>(k)].node);
       }
@@ -1060,7 +1118,7 @@ void MorseDecomposition::build() {
     const std::int32_t k = enclosing(centre_, UINT32_MAX);
     if (k < 0) throw std::logic_error("morse: the centre lies in no cell");
     cells_[static_cast<std::size_t>(cell_of_cycle[static_cast<std::size_t>(k)])].nodes.push_back(
-        critical_[static_cast<std::size_t>(critical_of[B.centre_point])].node);
+        critical_[static_cast<std::size_t>(critical_of(B.centre_point, 0))].node);
   }
   for (MorseCell& cell : cells_) {
     std::sort(cell.nodes.begin(), cell.nodes.end());

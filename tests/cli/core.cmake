@@ -218,3 +218,5 @@ cli_test(cover_squarel_houseexpo 0 "covered (99\\.[0-9]+|100)% of the configurat
 cli_test(decompose_circular_houseexpo 0 "circular decomposition around" - decompose ${OUT}/house0000.json --method circular)
 set_tests_properties(cli.cover_squarel_houseexpo PROPERTIES DEPENDS cli.import_houseexpo_1451)
 set_tests_properties(cli.decompose_circular_houseexpo PROPERTIES DEPENDS cli.import_houseexpo_0000)
+cli_test(decompose_circular_contacts 0 "circular decomposition around \\(2.5, 0.5\\): 19 cells" - decompose ${FIX}/contacts/checkerboard.json --method circular --center 2.5,0.5)
+cli_test(cover_spiral_contacts 0 "covered (99\\.[0-9]+|100)% of the configuration space" - cover ${FIX}/contacts/checkerboard.json --pattern spiral --width 0.2 --radius 0 --center 2.5,0.5)

@@ -100,8 +100,9 @@ void check(const Environment& env, SliceFamily f, const Point& c, const std::str
   // Euler for the Reeb graph (nodes = critical slices, edges = cells): E = V + b1 - 1, where b1
   // counts the free space's loops the slices sweep across: every hole, plus the centre for
   // spike (h is undefined there), minus the loops that lie along closed slices.
-  const auto loops = static_cast<long>(env.num_holes()) + ((f == SliceFamily::Spike && m.centre_in_free_space()) ? 1 : 0) -
-                     static_cast<long>(level_set_loops(env, m));
+  // Holes touching at a vertex close no loop there: one loop fewer per merge.
+  const auto loops = static_cast<long>(env.num_holes()) - static_cast<long>(env.contact_merges()) +
+                     ((f == SliceFamily::Spike && m.centre_in_free_space()) ? 1 : 0) - static_cast<long>(level_set_loops(env, m));
   const long nodes = std::max<long>(1, static_cast<long>(m.num_nodes()));  // a loop with no critical point: one virtual node
   EXPECT_EQ(static_cast<long>(cells.size()), nodes + loops - 1) << what;
   // Each cell runs between at most two critical slices, and every node bounds a cell.
@@ -393,4 +394,34 @@ TEST(MorseCoverage, SpiralReplacesCirclesInAnnularCells) {
   EXPECT_GE(decompose::measure_coverage(env, circles).covered_fraction, 0.99);
   // A spiral has no radial steps: fewer turns over a degree.
   EXPECT_LT(spiral.turns, circles.turns);
+}
+
+TEST(Morse, HolesTouchingAtVerticesAreOnePointOfSeveralWedges) {
+  // Contacts (issue 29): every ring's vertex at a contact is one point of the graph; each free
+  // wedge there is classified on its own; Euler loses one loop per merge. Random touching
+  // squares, plain and sheared, and the checkerboard fixture, every family.
+  std::mt19937_64 rng(29);
+  std::vector<std::pair<std::string, Environment>> envs;
+  envs.emplace_back("checkerboard", *scene::load_scene(std::string(PREIMAGE_FIXTURES) + "/contacts/checkerboard.json").environment);
+  envs.emplace_back("hole_touches_boundary", *scene::load_scene(std::string(PREIMAGE_FIXTURES) + "/contacts/hole_touches_boundary.json").environment);
+  for (std::uint64_t seed = 0; seed < 8; ++seed)
+    envs.emplace_back("touching squares " + std::to_string(seed), geometry::generators::touching_squares(5, 0.5, seed, seed % 2 == 1));
+  int checked = 0, with_contacts = 0;
+  for (const auto& [what, env] : envs) {
+    if (!env.has_contacts()) continue;  // a random draw without one
+    ++with_contacts;
+    for (const auto f : kFamilies)
+      for (int k = 0; k < 3; ++k) {
+        const Point c = random_centre(env, rng);
+        try {
+          check(env, f, c, what + " " + std::string(to_string(f)) + " " + geometry::format_point(c), rng);
+          ++checked;
+        } catch (const InputError& e) {
+          // a centre on a wall or a flat edge ending at a contact: named, never a wrong answer
+          EXPECT_NE(std::string(e.what()).find("--center"), std::string::npos) << e.what();
+        }
+      }
+  }
+  EXPECT_GE(with_contacts, 8);
+  EXPECT_GT(checked, 60);
 }

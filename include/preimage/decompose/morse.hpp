@@ -26,9 +26,11 @@
 // are rational; circle hits are a + b*sqrt(d) with rational a, b, d and are ordered around
 // the circle by a double filter with an exact fallback (RootNumber). Which face encloses an
 // inner component is decided in double with a certified margin, and an input too close to
-// call is rejected with an error, never guessed. Degenerate inputs rejected with a one-line
-// error: the centre on the boundary, an edge lying along a slice (spike: its line passes
-// through c; squarel: it is parallel to the diamond's side in its quadrant), holes that touch.
+// call is rejected with an error, never guessed. Edges lying along a slice (spike: on a line
+// through c; squarel: parallel to the diamond's side in its quadrant; h = x: vertical) form
+// flat runs, each one critical event. Holes touching at a vertex are one graph point with a
+// critical point per free wedge. Rejected with a one-line error: the centre on the boundary,
+// a whole ring on one slice, a flat run ending at a contact.
 #pragma once
 #include <preimage/geometry/environment.hpp>
 
