@@ -48,15 +48,23 @@ void demo_decompose(DemoContext& ctx) {
 
 namespace preimage::cli {
 
+namespace {
+// The field with three obstacles that the boustrophedon and variable-slice sections share.
+scene::Scene coverage_field() {
+  scene::Scene field;
+  field.environment = geometry::Environment::make({{0, 0}, {12, 0}, {12, 8}, {0, 8}},
+                                                  {{{2, 3}, {3.5, 2}, {4, 4}, {2.5, 5}},
+                                                   {{6, 1.5}, {8.5, 1}, {8, 3}},
+                                                   {{7, 5}, {9, 4.5}, {10, 6.5}, {8, 7}}});
+  return field;
+}
+}  // namespace
+
 void demo_coverage(DemoContext& ctx) {
   using namespace geometry;
   auto& R = ctx.report;
   R.section("Cell decompositions: boustrophedon decomposition, Reeb graph and coverage (6.2)");
-  scene::Scene field;
-  field.environment = Environment::make({{0, 0}, {12, 0}, {12, 8}, {0, 8}},
-                                        {{{2, 3}, {3.5, 2}, {4, 4}, {2.5, 5}},
-                                         {{6, 1.5}, {8.5, 1}, {8, 3}},
-                                         {{7, 5}, {9, 4.5}, {10, 6.5}, {8, 7}}});
+  scene::Scene field = coverage_field();
   field.start = Point(0.5, 0.5);
   const Environment& env = *field.environment;
   const decompose::BoustrophedonDecomposition b(env);
@@ -100,11 +108,7 @@ void demo_morse(DemoContext& ctx) {
   using namespace geometry;
   auto& R = ctx.report;
   R.section("Cell decompositions: variable slices — circular, spike and squarel (6.2.3)");
-  scene::Scene field;
-  field.environment = Environment::make({{0, 0}, {12, 0}, {12, 8}, {0, 8}},
-                                        {{{2, 3}, {3.5, 2}, {4, 4}, {2.5, 5}},
-                                         {{6, 1.5}, {8.5, 1}, {8, 3}},
-                                         {{7, 5}, {9, 4.5}, {10, 6.5}, {8, 7}}});
+  scene::Scene field = coverage_field();
   const Environment& env = *field.environment;
   const Point centre(5.3, 4.1);
   R.result("The field of the boustrophedon section, sliced around " + format_point(centre) +
