@@ -467,7 +467,8 @@ void add_decompose_commands(CLI::App& app) {
   {
     auto* cmd = app.add_subcommand("decompose", "Exact cell decomposition of the free space, with its adjacency graph");
     set_examples(cmd, {"preimage decompose examples/gallery.json --svg cells.svg", "preimage decompose examples/gallery.json --method boustrophedon --angle 30 --json",
-                       "preimage decompose examples/gallery.json --method circular --center 6.1,4.05 --svg circular.svg"});
+                       "preimage decompose examples/gallery.json --method circular --center 6.1,4.05 --svg circular.svg",
+                       "preimage decompose examples/gallery.json --method wavefront --start 0.5,7.5 --svg wavefront.svg"});
     auto path = std::make_shared<std::string>();
     auto method = std::make_shared<std::string>("trapezoidal");
     auto angle = std::make_shared<double>(0.0);
