@@ -149,6 +149,7 @@ void run_wavefront(const scene::Scene& s, const std::string& start_s, bool as_js
   const geometry::VisibilityGraph graph(index);
   const geometry::ShortestPathMap spm(graph, start);
   const auto ext = spm.extensions();
+  const auto meets = spm.collisions();
   std::size_t collisions = 0;
   for (const auto& e : ext) collisions += e.collides;
   auto root_json = [&](std::uint32_t r) { return r == geometry::ShortestPathMap::kSource ? json("source") : json(r); };
@@ -202,11 +203,16 @@ void run_wavefront(const scene::Scene& s, const std::string& start_s, bool as_js
       }
       c.point(V, 2.5, {"#e67e22", "none", 0, 1, ""}, "tangency bend");
     }
+    for (const auto& m : meets) {
+      c.segment(env.vertex(m.a), env.vertex(m.b), clipped);
+      c.point(m.point, 3.5, {"#8e44ad", "none", 0, 1, ""}, "two fronts collide (saddle of h)");
+    }
     c.point(start, 4, {"#1e8449", "#fff", 1, 1, ""}, "source");
     c.legend("source", {"#1e8449", "#fff", 1, 1, ""});
     c.legend("tangency bend (critical point)", {"#e67e22", "none", 0, 1, ""});
     c.legend("extension: SPM boundary", bound);
     c.legend("collision on an extension", {"#c0392b", "none", 0, 1, ""});
+    c.legend("two fronts collide (saddle of h)", {"#8e44ad", "none", 0, 1, ""});
     c.legend("wave fronts (sampled)", front);
     c.save(svg);
   }
@@ -226,6 +232,8 @@ void run_wavefront(const scene::Scene& s, const std::string& start_s, bool as_js
       if (e.collides) k["collision"] = {{"point", {e.end.x(), e.end.y()}}, {"roots", {e.vertex, root_json(e.from), root_json(e.collider)}}};
       crit.push_back(k);
     }
+    for (const auto& m : meets)
+      crit.push_back({{"kind", "fronts_collide"}, {"point", {m.point.x(), m.point.y()}}, {"roots", {m.a, m.b}}, {"distance", m.distance}});
     print_json({{"method", "wavefront"}, {"start", {start.x(), start.y()}}, {"reflex_vertices", spm.num_reflex()}, {"reached", spm.num_reached()},
                 {"dijkstra_edges", spm.num_edges()}, {"distance_range", {dmin, spm.max_vertex_distance()}}, {"vertices", verts},
                 {"critical_points", crit}, {"collisions_on_extensions", collisions}});
@@ -234,13 +242,16 @@ void run_wavefront(const scene::Scene& s, const std::string& start_s, bool as_js
   std::cout << "wavefront: shortest path map from " << geometry::format_point(start) << ": " << spm.num_reached() << " of " << spm.num_reflex()
             << " reflex vertices reached, D at reflex vertices from " << dmin << " to " << spm.max_vertex_distance() << "\n";
   std::cout << "critical points: " << ext.size() << " tangency bends (extensions to the boundary), " << collisions
-            << " collisions on extensions (collisions away from extensions: not detected)\n";
+            << " collisions on extensions, " << meets.size() << " first collisions of two fronts (saddles of h)\n";
   for (const auto& e : ext) {
     std::cout << "  bend at " << geometry::format_point(env.vertex(e.vertex)) << " (D " << spm.vertex_distance(e.vertex) << ") from "
               << geometry::format_point(spm.root_point(e.from)) << ": extension to " << geometry::format_point(e.hit);
     if (e.collides) std::cout << ", collision at " << geometry::format_point(e.end);
     std::cout << "\n";
   }
+  for (const auto& m : meets)
+    std::cout << "  fronts from " << geometry::format_point(env.vertex(m.a)) << " and " << geometry::format_point(env.vertex(m.b)) << " meet at "
+              << geometry::format_point(m.point) << " (h " << m.distance << ")\n";
   if (!svg.empty()) std::cout << "wrote " << svg << " (regions and wave fronts sampled: a drawing)\n";
 }
 

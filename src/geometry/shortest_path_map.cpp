@@ -62,6 +62,13 @@ ShortestPathMap::ShortestPathMap(const VisibilityGraph& graph, const Point& sour
       if (w != u && slot[w] != kNone && env.vertex(w) != env.vertex(u) && tangent_at(env, u, env.vertex(w))) out[k].push_back(w);
   });
 
+  out_off_.assign(reflex.size() + 1, 0);
+  for (std::size_t k = 0; k < reflex.size(); ++k) out_off_[k + 1] = out_off_[k] + static_cast<std::uint32_t>(out[k].size());
+  out_.reserve(out_off_.back());
+  for (auto& list : out) out_.insert(out_.end(), list.begin(), list.end());
+  slot_ = std::move(slot);
+  const auto& slot_ref = slot_;
+
   struct Item {
     double d;
     std::uint32_t v;
@@ -69,7 +76,7 @@ ShortestPathMap::ShortestPathMap(const VisibilityGraph& graph, const Point& sour
   };
   std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
   for (std::uint32_t w : index.visible_vertices(source))
-    if (slot[w] != kNone) {
+    if (slot_ref[w] != kNone) {
       const double d = spm_length(source, env.vertex(w));
       if (d < dist_[w]) dist_[w] = d, pred_[w] = kSource, open.push({d, w});
     }
@@ -80,7 +87,8 @@ ShortestPathMap::ShortestPathMap(const VisibilityGraph& graph, const Point& sour
     if (done[it.v]) continue;
     done[it.v] = 1, ++reached_, max_dist_ = std::max(max_dist_, it.d);
     const Point& U = env.vertex(it.v);
-    for (std::uint32_t w : out[slot[it.v]]) {
+    for (std::uint32_t k = out_off_[slot_ref[it.v]]; k < out_off_[slot_ref[it.v] + 1]; ++k) {
+      const std::uint32_t w = out_[k];
       ++edges_;
       const double d = it.d + spm_length(U, env.vertex(w));
       if (d < dist_[w]) dist_[w] = d, pred_[w] = it.v, open.push({d, w});
@@ -164,6 +172,33 @@ std::vector<ShortestPathMap::Extension> ShortestPathMap::extensions(double toler
     }
     result.push_back(e);
   }
+  return result;
+}
+
+std::vector<ShortestPathMap::Collision> ShortestPathMap::collisions() const {
+  const Environment& env = environment();
+  const auto& reflex = graph_->reflex_vertices();
+  std::vector<Collision> result;
+  for (std::size_t k = 0; k < reflex.size(); ++k) {
+    const std::uint32_t a = reflex[k];
+    if (pred_[a] == kNone) continue;
+    const Point& A = env.vertex(a);
+    for (std::uint32_t j = out_off_[k]; j < out_off_[k + 1]; ++j) {
+      const std::uint32_t b = out_[j];
+      if (b < a || pred_[b] == kNone) continue;  // each pair once (the segment is tangent at a here)
+      const Point& B = env.vertex(b);
+      if (!tangent_at(env, b, A)) continue;
+      const double ab = spm_length(A, B), da = dist_[a], db = dist_[b];
+      if (!(std::fabs(da - db) < ab * (1 - 1e-9))) continue;  // one front reaches the other's root first
+      const double t = (ab + db - da) / 2 / ab;
+      const Point x(A.x() + t * (B.x() - A.x()), A.y() + t * (B.y() - A.y()));
+      const double h = da + t * ab;
+      const Query q = query(x);
+      if (q.root == kNone || q.distance < h - 1e-9 * std::max(1.0, h)) continue;  // a third root is shorter there
+      result.push_back({x, a, b, h});
+    }
+  }
+  std::sort(result.begin(), result.end(), [](const Collision& l, const Collision& r) { return l.a != r.a ? l.a < r.a : l.b < r.b; });
   return result;
 }
 

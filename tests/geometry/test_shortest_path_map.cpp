@@ -163,7 +163,7 @@ TEST(ShortestPathMap, GeodesicDistanceAgainstBruteForce) {
 
 TEST(ShortestPathMap, ExtensionsAndCollisions) {
   std::mt19937_64 rng(21);
-  std::size_t extensions = 0, collisions = 0;
+  std::size_t extensions = 0, collisions = 0, fronts = 0;
   for (const auto& c : spmt_cases()) {
     VisibilityIndex index(c.env);
     VisibilityGraph graph(index);
@@ -206,7 +206,28 @@ TEST(ShortestPathMap, ExtensionsAndCollisions) {
       }
       ++extensions;
     }
+    // (c) first collisions of two fronts: h through both roots, the brute force agrees, and
+    // h decreases at unit rate from x towards either root
+    for (const auto& k : spm.collisions()) {
+      const Point &A = c.env.vertex(k.a), &B = c.env.vertex(k.b);
+      ASSERT_TRUE(spmt_visible(c.env, A, B)) << c.name;
+      ASSERT_TRUE(spmt_close(spm.vertex_distance(k.a) + spmt_len(A, k.point), k.distance));
+      ASSERT_TRUE(spmt_close(spm.vertex_distance(k.b) + spmt_len(B, k.point), k.distance));
+      ASSERT_TRUE(spmt_close(brute.distance(k.point), k.distance)) << c.name << " " << format_point(k.point);
+      const double ab = spmt_len(A, B), delta = 1e-3 * std::min(spmt_len(A, k.point), spmt_len(B, k.point));
+      for (const Point& toward : {A, B}) {
+        const double l = spmt_len(toward, k.point);
+        const Point y(k.point.x() + delta / l * (toward.x() - k.point.x()), k.point.y() + delta / l * (toward.y() - k.point.y()));
+        if (locate(c.env, y).in_free_space()) {
+          ASSERT_LE(brute.distance(y), k.distance - delta / 2) << c.name;
+        }
+      }
+      ASSERT_GT(ab, 0);
+      ++fronts;
+    }
   }
+  std::cout << "[ counts   ] " << fronts << " collisions of two fronts\n";
+  EXPECT_GT(fronts, 20u);
   std::cout << "[ counts   ] " << extensions << " extensions, " << collisions << " collisions\n";
   EXPECT_GT(extensions, 200u);
   EXPECT_GT(collisions, 20u);
@@ -231,6 +252,11 @@ TEST(ShortestPathMap, SquareAroundASquareHoleByHand) {
   const std::vector<ExactPoint> want{{10, 2}, {10, 4}, {10, 6}, {10, 8}};
   EXPECT_EQ(hits, want);
   EXPECT_EQ(spm.num_reached(), 4u);
+  // the fronts round the top and the bottom of the hole meet behind it, at (6, 5)
+  const auto meet = spm.collisions();
+  ASSERT_EQ(meet.size(), 1u);
+  EXPECT_EQ(meet[0].point, Point(6, 5));
+  EXPECT_NEAR(meet[0].distance, 3 + std::sqrt(10.0), 1e-12);
   EXPECT_THROW(ShortestPathMap(graph, Point(5, 5)), InputError);
   EXPECT_THROW(ShortestPathMap(graph, Point(11, 5)), InputError);
   try {

@@ -31,9 +31,15 @@
 //      one final interval of the extension; its start (found by bisection in double, a
 //      sampled value within `tolerance`) is where a third wave front meets the two fronts
 //      separated there — a vertex of the SPM. The extension is an SPM boundary only before it.
-// Not detected: collisions of two fronts away from an extension (saddles of h on the
-// hyperbolic bisectors between regions, e.g. behind an obstacle where the fronts from its
-// two sides meet).
+//  (c) first collisions of two fronts: for mutually visible reflex vertices a, b with
+//      |D(a) - D(b)| < |ab|, the point x of segment ab with D(a) + |ax| = D(b) + |bx| (the
+//      vertex of their hyperbolic bisector: h has a maximum there along ab and a minimum
+//      along the bisector, a saddle), kept when x is in free space, both segments are
+//      tangent at their roots and no root gives a shorter h at x — that last comparison in
+//      double, to a relative 1e-9. E.g. behind an obstacle where the fronts from its two
+//      sides meet. x is a double point (a sum of square roots solved in double).
+// Not detected: collisions elsewhere along bisectors (where a bisector meets a third
+// region or an obstacle away from a segment between its roots).
 #pragma once
 #include <preimage/geometry/visibility_graph.hpp>
 
@@ -118,6 +124,14 @@ class ShortestPathMap {
   };
   Samples sample(std::size_t columns, unsigned threads = 0) const;
 
+  /// (c): where two fronts first collide, one per pair of roots, ascending by (a, b).
+  struct Collision {
+    Point point;
+    std::uint32_t a, b;  // the two roots (reflex vertices), a < b
+    double distance;     // h there
+  };
+  std::vector<Collision> collisions() const;
+
  private:
   const VisibilityGraph* graph_;
   Point source_;
@@ -125,6 +139,8 @@ class ShortestPathMap {
   std::vector<std::uint32_t> pred_;
   std::size_t reached_ = 0, edges_ = 0;
   double max_dist_ = 0;
+  // Dijkstra's out-lists (reflex u -> reflex w seen with uw tangent at u), CSR by u's slot.
+  std::vector<std::uint32_t> slot_, out_off_, out_;
 };
 
 }  // namespace preimage::geometry
