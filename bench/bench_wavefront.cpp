@@ -12,6 +12,8 @@
 //   spm-with-index/<map>          VisibilityIndex + ShortestPathMap (nothing prepared)
 //   visibility-index/<map>        the index alone
 //   geodesic-query/<map>          one h(p) query (V(p)'s vertices + one triangle walk)
+//   extensions/<map>              tangency extensions and collisions on them (one pass)
+//   fronts-collide/<map>          first collisions of two fronts (one pass)
 #include <preimage/geometry/generators.hpp>
 #include <preimage/geometry/shortest_path_map.hpp>
 #include <preimage/geometry/visibility_graphs.hpp>
@@ -128,6 +130,17 @@ void geodesic_query(benchmark::State& state, const std::string& name) {
   for (auto _ : state) benchmark::DoNotOptimize(spm.distance(c.queries[i++ & 255]));
 }
 
+// The critical points on demand, after the map: tangency extensions (with the bisection of
+// collisions on them) and the first collisions of two fronts.
+void critical_points(benchmark::State& state, const std::string& name, bool fronts) {
+  WaveCase& c = wave_case(name);
+  VisibilityGraph graph(*c.index);
+  const ShortestPathMap spm(graph, c.source);
+  std::size_t found = 0;
+  for (auto _ : state) found = fronts ? spm.collisions().size() : spm.extensions().size();
+  state.counters["found"] = static_cast<double>(found);
+}
+
 const int registered = [] {
   for (const std::string name : {"random-10000-50", "office-20x20"}) {
     benchmark::RegisterBenchmark(("spm/preimage/" + name).c_str(), spm_preimage, name, 0u)->Unit(benchmark::kMillisecond);
@@ -137,6 +150,8 @@ const int registered = [] {
     benchmark::RegisterBenchmark(("spm-with-index/" + name).c_str(), spm_with_index, name)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("visibility-index/" + name).c_str(), index_only, name)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("geodesic-query/" + name).c_str(), geodesic_query, name)->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark(("extensions/" + name).c_str(), critical_points, name, false)->Unit(benchmark::kMillisecond)->Iterations(1);
+    benchmark::RegisterBenchmark(("fronts-collide/" + name).c_str(), critical_points, name, true)->Unit(benchmark::kMillisecond)->Iterations(1);
   }
   return 0;
 }();

@@ -123,10 +123,12 @@ std::vector<Point> ShortestPathMap::path_to(const Point& p) const {
   return out;
 }
 
-std::vector<ShortestPathMap::Extension> ShortestPathMap::extensions(double tolerance) const {
+std::vector<ShortestPathMap::Extension> ShortestPathMap::extensions(double tolerance, unsigned threads) const {
   const Environment& env = environment();
+  const auto& reflex = graph_->reflex_vertices();
+  // Exact part (lazy-exact points are not shared between threads): which bends, and the hits.
   std::vector<Extension> result;
-  for (std::uint32_t v : graph_->reflex_vertices()) {
+  for (std::uint32_t v : reflex) {
     const std::uint32_t u = pred_[v];
     if (u == kNone) continue;
     const Point& U = root_point(u);
@@ -144,7 +146,13 @@ std::vector<ShortestPathMap::Extension> ShortestPathMap::extensions(double toler
     const ExactPoint eu = to_exact(U), ev = env.exact_vertex(v);
     const auto hit = shoot_ray(env, ev, ev - eu);
     if (!hit) continue;  // cannot happen in a bounded environment
-    Extension e{v, u, hit->point, hit->edge, to_double(hit->point), false, kNone};
+    result.push_back({v, u, hit->point, hit->edge, to_double(hit->point), false, kNone});
+  }
+  // Collisions on the extensions, in double: one query each, a bisection for those that collide.
+  spm_parallel(result.size(), spm_threads(threads, result.size()), [&](std::size_t k) {
+    Extension& e = result[k];
+    const std::uint32_t v = e.vertex;
+    const Point& V = env.vertex(v);
     // h through v along the extension: D(v) + |v x|. The true h is 1-Lipschitz, so
     // h(x) - (D(v) + |vx|) is non-increasing from 0 along it: find where it drops below.
     const Point H = e.end;
@@ -170,13 +178,25 @@ std::vector<ShortestPathMap::Extension> ShortestPathMap::extensions(double toler
       shorter(hi, &who);
       e.end = at(lo), e.collides = true, e.collider = who;
     }
-    result.push_back(e);
-  }
+  });
   return result;
 }
 
 std::vector<ShortestPathMap::Collision> ShortestPathMap::collisions() const {
   const Environment& env = environment();
+  // Is predecessor(v) -> v -> x locally shortest: a turn at v (if any) towards the obstacle,
+  // whose neighbours of v then lie on that side of both segments (exact orientations)?
+  auto taut = [&](std::uint32_t v, const Point& x) {
+    const Point& P = root_point(pred_[v]);
+    const Point& V = env.vertex(v);
+    const int s = orientation(P, V, x);
+    if (s == 0 || P == V) return true;
+    for (const std::size_t n : {env.prev(v), env.next(v)}) {
+      const Point& N = env.vertex(n);
+      if (orientation(P, V, N) * s < 0 || orientation(V, x, N) * s < 0) return false;
+    }
+    return true;
+  };
   const auto& reflex = graph_->reflex_vertices();
   std::vector<Collision> result;
   for (std::size_t k = 0; k < reflex.size(); ++k) {
@@ -193,6 +213,7 @@ std::vector<ShortestPathMap::Collision> ShortestPathMap::collisions() const {
       const double t = (ab + db - da) / 2 / ab;
       const Point x(A.x() + t * (B.x() - A.x()), A.y() + t * (B.y() - A.y()));
       const double h = da + t * ab;
+      if (!taut(a, x) || !taut(b, x)) continue;  // x cannot be reached through both: no query
       const Query q = query(x);
       if (q.root == kNone || q.distance < h - 1e-9 * std::max(1.0, h)) continue;  // a third root is shorter there
       result.push_back({x, a, b, h});

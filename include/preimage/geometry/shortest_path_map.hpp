@@ -109,8 +109,9 @@ class ShortestPathMap {
   };
   /// (a) and (b): every bend whose extension enters free space, in ascending vertex order;
   /// collisions located to `tolerance` (relative to the extension's length). Costs O(log
-  /// 1/tolerance) point queries per extension that collides, one for the others.
-  std::vector<Extension> extensions(double tolerance = 1e-9) const;
+  /// 1/tolerance) point queries per extension that collides, one for the others; on
+  /// `threads` threads (0: hardware).
+  std::vector<Extension> extensions(double tolerance = 1e-9, unsigned threads = 0) const;
 
   /// h and roots on a grid of samples (a drawing, decided by nothing): `columns` across the
   /// bounding box, square cells; row-major from (xmin, ymin), points outside free space
@@ -124,7 +125,9 @@ class ShortestPathMap {
   };
   Samples sample(std::size_t columns, unsigned threads = 0) const;
 
-  /// (c): where two fronts first collide, one per pair of roots, ascending by (a, b).
+  /// (c): where two fronts first collide, one per pair of roots, ascending by (a, b). Pairs
+  /// whose paths are not taut at the candidate point (exact turn tests) are dropped before
+  /// the one point query each other pair costs.
   struct Collision {
     Point point;
     std::uint32_t a, b;  // the two roots (reflex vertices), a < b
