@@ -8,12 +8,14 @@
 #include <preimage/decompose/planner.hpp>
 #include <preimage/geometry/configuration_space.hpp>
 #include <preimage/geometry/coordinates.hpp>
+#include <preimage/geometry/shortest_path_map.hpp>
 #include <preimage/decompose/figures.hpp>
 #include <preimage/error.hpp>
 #include <preimage/render/figures.hpp>
 
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <optional>
 
 namespace preimage::cli {
@@ -135,9 +137,132 @@ void run_morse(const scene::Scene& s, decompose::SliceFamily family, const std::
   if (!geojson.empty()) std::cout << "wrote " << geojson << "\n";
 }
 
-void run_decompose(const std::string& path, const std::string& method, double angle, const std::string& centre, bool as_json,
-                   const std::string& svg, const std::string& geojson) {
+// Wave-front decomposition (6.2.3, Fig. 6.18), its base so far: the shortest path map from
+// --start. Vertex distances, roots and the tangency extensions are computed (see
+// geometry/shortest_path_map.hpp); the SVG's region colours and wave fronts are sampled on a
+// grid: a drawing, not a decision.
+void run_wavefront(const scene::Scene& s, const std::string& start_s, bool as_json, const std::string& svg) {
+  const auto& env = s.require_environment();
+  if (start_s.empty()) throw InputError("--method wavefront: needs --start X,Y (the source of the wave front)");
+  const geometry::Point start = parse_point(start_s, "--start");
+  const geometry::VisibilityIndex index(env);
+  const geometry::VisibilityGraph graph(index);
+  const geometry::ShortestPathMap spm(graph, start);
+  const auto ext = spm.extensions();
+  const auto meets = spm.collisions();
+  std::size_t collisions = 0;
+  for (const auto& e : ext) collisions += e.collides;
+  auto root_json = [&](std::uint32_t r) { return r == geometry::ShortestPathMap::kSource ? json("source") : json(r); };
+  if (!svg.empty()) {
+    render::SvgCanvas c(render::scene_box(s));
+    render::draw_scene(c, s);
+    const auto grid = spm.sample(160);
+    const double half = grid.step / 2;
+    for (std::size_t j = 0; j < grid.rows; ++j)
+      for (std::size_t i = 0, k; i < grid.columns; i = k) {  // one rectangle per run of samples with one root
+        const std::uint32_t r = grid.at(i, j).root;
+        for (k = i + 1; k < grid.columns && grid.at(k, j).root == r;) ++k;
+        if (r == geometry::kNone) continue;
+        const std::uint32_t h = r == geometry::ShortestPathMap::kSource ? 0u : (r * 2654435761u) % 360u;
+        const geometry::Point p = grid.point(i, j), q = grid.point(k - 1, j);
+        c.polygon({{p.x() - half, p.y() - half}, {q.x() + half, p.y() - half}, {q.x() + half, p.y() + half}, {p.x() - half, p.y() + half}},
+                  {std::string("hsl(").append(std::to_string(h)).append(",55%,82%)"), "none", 0, 0.8, ""});
+      }
+    // wave fronts: marching squares on the sampled h, over cells with four free corners
+    const double top = spm.max_vertex_distance() > 0 ? spm.max_vertex_distance() : 1;
+    const render::Style front{"none", "#1f5fa8", 0.8, 0.9, ""};
+    for (int k = 1; k <= 16; ++k) {
+      const double level = top * 1.25 * k / 16;
+      for (std::size_t j = 0; j + 1 < grid.rows; ++j)
+        for (std::size_t i = 0; i + 1 < grid.columns; ++i) {
+          const std::size_t ci[4] = {i, i + 1, i + 1, i}, cj[4] = {j, j, j + 1, j + 1};
+          std::vector<geometry::Point> cut;
+          for (int a = 0; a < 4; ++a) {
+            const auto& qa = grid.at(ci[a], cj[a]);
+            const auto& qb = grid.at(ci[(a + 1) % 4], cj[(a + 1) % 4]);
+            if (qa.root == geometry::kNone || qb.root == geometry::kNone) {
+              cut.clear();
+              break;
+            }
+            if ((qa.distance < level) != (qb.distance < level)) {
+              const double t = (level - qa.distance) / (qb.distance - qa.distance);
+              const auto pa = grid.point(ci[a], cj[a]), pb = grid.point(ci[(a + 1) % 4], cj[(a + 1) % 4]);
+              cut.emplace_back(pa.x() + t * (pb.x() - pa.x()), pa.y() + t * (pb.y() - pa.y()));
+            }
+          }
+          for (std::size_t m = 0; m + 1 < cut.size(); m += 2) c.segment(cut[m], cut[m + 1], front);
+        }
+    }
+    const render::Style bound{"none", "#222", 1.4, 1, ""}, clipped{"none", "#888", 0.8, 1, "3 3"};
+    for (const auto& e : ext) {
+      const auto& V = env.vertex(e.vertex);
+      c.segment(V, e.end, bound, std::string("extension of the shortest path through vertex ").append(std::to_string(e.vertex)));
+      if (e.collides) {
+        c.segment(e.end, geometry::to_double(e.hit), clipped);
+        c.point(e.end, 3, {"#c0392b", "none", 0, 1, ""}, "collision on the extension");
+      }
+      c.point(V, 2.5, {"#e67e22", "none", 0, 1, ""}, "tangency bend");
+    }
+    for (const auto& m : meets) {
+      c.segment(env.vertex(m.a), env.vertex(m.b), clipped);
+      c.point(m.point, 3.5, {"#8e44ad", "none", 0, 1, ""}, "two fronts collide (saddle of h)");
+    }
+    c.point(start, 4, {"#1e8449", "#fff", 1, 1, ""}, "source");
+    c.legend("source", {"#1e8449", "#fff", 1, 1, ""});
+    c.legend("tangency bend (critical point)", {"#e67e22", "none", 0, 1, ""});
+    c.legend("extension: SPM boundary", bound);
+    c.legend("collision on an extension", {"#c0392b", "none", 0, 1, ""});
+    c.legend("two fronts collide (saddle of h)", {"#8e44ad", "none", 0, 1, ""});
+    c.legend("wave fronts (sampled)", front);
+    c.save(svg);
+  }
+  double dmin = std::numeric_limits<double>::infinity();
+  for (auto v : graph.reflex_vertices())
+    if (spm.reached(v)) dmin = std::min(dmin, spm.vertex_distance(v));
+  if (spm.num_reached() == 0) dmin = 0;
+  if (as_json) {
+    json verts = json::array(), crit = json::array();
+    for (auto v : graph.reflex_vertices())
+      verts.push_back({{"id", v}, {"point", {env.vertex(v).x(), env.vertex(v).y()}}, {"distance", spm.reached(v) ? json(spm.vertex_distance(v)) : json(nullptr)},
+                       {"predecessor", spm.reached(v) ? root_json(spm.vertex_predecessor(v)) : json(nullptr)}});
+    for (const auto& e : ext) {
+      json k{{"kind", "tangency"}, {"vertex", e.vertex}, {"point", {env.vertex(e.vertex).x(), env.vertex(e.vertex).y()}}, {"from", root_json(e.from)},
+             {"distance", spm.vertex_distance(e.vertex)}, {"extension", {{env.vertex(e.vertex).x(), env.vertex(e.vertex).y()}, point_json(e.hit)}},
+             {"boundary_end", {e.end.x(), e.end.y()}}};
+      if (e.collides) k["collision"] = {{"point", {e.end.x(), e.end.y()}}, {"roots", {e.vertex, root_json(e.from), root_json(e.collider)}}};
+      crit.push_back(k);
+    }
+    for (const auto& m : meets)
+      crit.push_back({{"kind", "fronts_collide"}, {"point", {m.point.x(), m.point.y()}}, {"roots", {m.a, m.b}}, {"distance", m.distance}});
+    print_json({{"method", "wavefront"}, {"start", {start.x(), start.y()}}, {"reflex_vertices", spm.num_reflex()}, {"reached", spm.num_reached()},
+                {"dijkstra_edges", spm.num_edges()}, {"distance_range", {dmin, spm.max_vertex_distance()}}, {"vertices", verts},
+                {"critical_points", crit}, {"collisions_on_extensions", collisions}});
+    return;
+  }
+  std::cout << "wavefront: shortest path map from " << geometry::format_point(start) << ": " << spm.num_reached() << " of " << spm.num_reflex()
+            << " reflex vertices reached, D at reflex vertices from " << dmin << " to " << spm.max_vertex_distance() << "\n";
+  std::cout << "critical points: " << ext.size() << " tangency bends (extensions to the boundary), " << collisions
+            << " collisions on extensions, " << meets.size() << " first collisions of two fronts (saddles of h)\n";
+  for (const auto& e : ext) {
+    std::cout << "  bend at " << geometry::format_point(env.vertex(e.vertex)) << " (D " << spm.vertex_distance(e.vertex) << ") from "
+              << geometry::format_point(spm.root_point(e.from)) << ": extension to " << geometry::format_point(e.hit);
+    if (e.collides) std::cout << ", collision at " << geometry::format_point(e.end);
+    std::cout << "\n";
+  }
+  for (const auto& m : meets)
+    std::cout << "  fronts from " << geometry::format_point(env.vertex(m.a)) << " and " << geometry::format_point(env.vertex(m.b)) << " meet at "
+              << geometry::format_point(m.point) << " (h " << m.distance << ")\n";
+  if (!svg.empty()) std::cout << "wrote " << svg << " (regions and wave fronts sampled: a drawing)\n";
+}
+
+void run_decompose(const std::string& path, const std::string& method, double angle, const std::string& centre, const std::string& start,
+                   bool as_json, const std::string& svg, const std::string& geojson) {
   const scene::Scene s = scene::load_scene(path);
+  if (method == "wavefront") {
+    if (angle != 0 || !centre.empty() || !geojson.empty()) throw InputError("--method wavefront: takes --start, --json and --svg only");
+    return run_wavefront(s, start, as_json, svg);
+  }
+  if (!start.empty()) throw InputError("--start: only the wavefront decomposition has a start point");
   if (const auto family = decompose::parse_slice_family(method)) {
     if (angle != 0) throw InputError("--angle: only the boustrophedon decomposition has a sweep direction");
     return run_morse(s, *family, centre, as_json, svg, geojson);
@@ -353,7 +478,8 @@ void add_decompose_commands(CLI::App& app) {
   {
     auto* cmd = app.add_subcommand("decompose", "Exact cell decomposition of the free space, with its adjacency graph");
     set_examples(cmd, {"preimage decompose examples/gallery.json --svg cells.svg", "preimage decompose examples/gallery.json --method boustrophedon --angle 30 --json",
-                       "preimage decompose examples/gallery.json --method circular --center 6.1,4.05 --svg circular.svg"});
+                       "preimage decompose examples/gallery.json --method circular --center 6.1,4.05 --svg circular.svg",
+                       "preimage decompose examples/gallery.json --method wavefront --start 0.5,7.5 --svg wavefront.svg"});
     auto path = std::make_shared<std::string>();
     auto method = std::make_shared<std::string>("trapezoidal");
     auto angle = std::make_shared<double>(0.0);
@@ -361,8 +487,8 @@ void add_decompose_commands(CLI::App& app) {
     auto svg = std::make_shared<std::string>();
     cmd->add_option("scene", *path, "Scene JSON file")->required();
     auto centre = std::make_shared<std::string>();
-    cmd->add_option("--method", *method, "Decomposition method: trapezoidal, boustrophedon, or a variable slice of 6.2.3 (circular, spike, squarel)")
-        ->check(CLI::IsMember({"trapezoidal", "boustrophedon", "circular", "spike", "squarel"}))
+    cmd->add_option("--method", *method, "Decomposition method: trapezoidal, boustrophedon, a variable slice of 6.2.3 (circular, spike, squarel), or wavefront (shortest path map from --start)")
+        ->check(CLI::IsMember({"trapezoidal", "boustrophedon", "circular", "spike", "squarel", "wavefront"}))
         ->capture_default_str();
     cmd->add_option("--angle", *angle, "Sweep direction in degrees, counter-clockwise from +x (boustrophedon)");
     cmd->add_option("--center", *centre, "Centre X,Y of the circles, rays or diamonds (circular, spike, squarel; default: the middle of the bounding box)");
@@ -370,7 +496,9 @@ void add_decompose_commands(CLI::App& app) {
     auto geojson = std::make_shared<std::string>();
     cmd->add_option("--svg", *svg, "Draw cells, extensions and the adjacency graph to this SVG file");
     cmd->add_option("--geojson", *geojson, "Also write the environment and the cells as GeoJSON polygons");
-    cmd->callback([=] { run_decompose(*path, *method, *angle, *centre, *json_out, *svg, *geojson); });
+    auto start = std::make_shared<std::string>();
+    cmd->add_option("--start", *start, "Source X,Y of the wave front (wavefront)");
+    cmd->callback([=] { run_decompose(*path, *method, *angle, *centre, *start, *json_out, *svg, *geojson); });
   }
   {
     auto* cmd = app.add_subcommand("plan", "Collision-free path for a point or disc robot: shortest, or through the trapezoidal decomposition");

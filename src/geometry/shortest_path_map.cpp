@@ -1,0 +1,242 @@
+// SPDX-License-Identifier: Apache-2.0
+#include <preimage/geometry/shortest_path_map.hpp>
+
+#include <preimage/error.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <queue>
+#include <string>
+#include <thread>
+
+namespace preimage::geometry {
+
+namespace {
+
+double spm_length(const Point& a, const Point& b) { return std::hypot(a.x() - b.x(), a.y() - b.y()); }
+
+unsigned spm_threads(unsigned threads, std::size_t work) {
+  if (work < 64) return 1;
+  if (threads == 0) threads = std::clamp(std::thread::hardware_concurrency(), 1u, 8u);
+  return threads;
+}
+
+// Runs body(k) for k in [0, n) on `threads` threads, strided.
+template <class Body>
+void spm_parallel(std::size_t n, unsigned threads, Body&& body) {
+  if (threads <= 1) {
+    for (std::size_t k = 0; k < n; ++k) body(k);
+    return;
+  }
+  std::vector<std::thread> pool;
+  for (unsigned t = 0; t < threads; ++t)
+    pool.emplace_back([&, t] {
+      for (std::size_t k = t; k < n; k += threads) body(k);
+    });
+  for (auto& th : pool) th.join();
+}
+
+}  // namespace
+
+ShortestPathMap::ShortestPathMap(const VisibilityGraph& graph, const Point& source, unsigned threads)
+    : graph_(&graph), source_(source) {
+  const VisibilityIndex& index = graph.index();
+  const Environment& env = graph.environment();
+  if (!index.in_free_space(source)) {
+    std::string msg("shortest path map: the source ");
+    msg.append(format_point(source)).append(" is not in free space");
+    throw InputError(msg);
+  }
+  const auto& reflex = graph.reflex_vertices();
+  const double inf = std::numeric_limits<double>::infinity();
+  dist_.assign(env.num_vertices(), inf);
+  pred_.assign(env.num_vertices(), kNone);
+
+  // Out-lists: for reflex u, the reflex vertices w it sees with segment uw tangent at u.
+  std::vector<std::uint32_t> slot(env.num_vertices(), kNone);
+  for (std::size_t k = 0; k < reflex.size(); ++k) slot[reflex[k]] = static_cast<std::uint32_t>(k);
+  std::vector<std::vector<std::uint32_t>> out(reflex.size());
+  spm_parallel(reflex.size(), spm_threads(threads, reflex.size()), [&](std::size_t k) {
+    const std::uint32_t u = reflex[k];
+    for (std::uint32_t w : index.visible_vertices(env.vertex(u)))
+      if (w != u && slot[w] != kNone && env.vertex(w) != env.vertex(u) && tangent_at(env, u, env.vertex(w))) out[k].push_back(w);
+  });
+
+  out_off_.assign(reflex.size() + 1, 0);
+  for (std::size_t k = 0; k < reflex.size(); ++k) out_off_[k + 1] = out_off_[k] + static_cast<std::uint32_t>(out[k].size());
+  out_.reserve(out_off_.back());
+  for (auto& list : out) out_.insert(out_.end(), list.begin(), list.end());
+  slot_ = std::move(slot);
+  const auto& slot_ref = slot_;
+
+  struct Item {
+    double d;
+    std::uint32_t v;
+    bool operator>(const Item& o) const { return d > o.d || (d == o.d && v > o.v); }
+  };
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
+  for (std::uint32_t w : index.visible_vertices(source))
+    if (slot_ref[w] != kNone) {
+      const double d = spm_length(source, env.vertex(w));
+      if (d < dist_[w]) dist_[w] = d, pred_[w] = kSource, open.push({d, w});
+    }
+  std::vector<char> done(env.num_vertices(), 0);
+  while (!open.empty()) {
+    const Item it = open.top();
+    open.pop();
+    if (done[it.v]) continue;
+    done[it.v] = 1, ++reached_, max_dist_ = std::max(max_dist_, it.d);
+    const Point& U = env.vertex(it.v);
+    for (std::uint32_t k = out_off_[slot_ref[it.v]]; k < out_off_[slot_ref[it.v] + 1]; ++k) {
+      const std::uint32_t w = out_[k];
+      ++edges_;
+      const double d = it.d + spm_length(U, env.vertex(w));
+      if (d < dist_[w]) dist_[w] = d, pred_[w] = it.v, open.push({d, w});
+    }
+  }
+}
+
+ShortestPathMap::Query ShortestPathMap::query(const Point& p) const {
+  Query q;
+  const VisibilityIndex& index = graph_->index();
+  if (!index.in_free_space(p)) return q;
+  const Environment& env = graph_->environment();
+  if (index.visible(source_, p)) q.distance = spm_length(source_, p), q.root = kSource;
+  for (std::uint32_t v : index.visible_vertices(p)) {
+    if (pred_[v] == kNone || !tangent_at(env, v, p)) continue;
+    const double d = dist_[v] + spm_length(env.vertex(v), p);
+    if (d < q.distance) q.distance = d, q.root = v;
+  }
+  return q;
+}
+
+Point ShortestPathMap::root_point(std::uint32_t root) const { return root == kSource ? source_ : environment().vertex(root); }
+
+std::vector<Point> ShortestPathMap::path_to(const Point& p) const {
+  const Query q = query(p);
+  std::vector<Point> out;
+  if (q.root == kNone) return out;
+  out.push_back(p);
+  for (std::uint32_t r = q.root; r != kSource; r = pred_[r]) out.push_back(environment().vertex(r));
+  out.push_back(source_);
+  std::reverse(out.begin(), out.end());
+  return out;
+}
+
+std::vector<ShortestPathMap::Extension> ShortestPathMap::extensions(double tolerance, unsigned threads) const {
+  const Environment& env = environment();
+  const auto& reflex = graph_->reflex_vertices();
+  // Exact part (lazy-exact points are not shared between threads): which bends, and the hits.
+  std::vector<Extension> result;
+  for (std::uint32_t v : reflex) {
+    const std::uint32_t u = pred_[v];
+    if (u == kNone) continue;
+    const Point& U = root_point(u);
+    const Point& V = env.vertex(v);
+    if (U == V) continue;
+    // The extension enters free space iff the obstacle's wedge at v (between its two
+    // neighbours, < 180 degrees at a reflex vertex) lies on one side of the line UV and the
+    // ray beyond V does not run along one of v's edges.
+    const Point& A = env.vertex(env.prev(v));
+    const Point& B = env.vertex(env.next(v));
+    const int oa = orientation(U, V, A), ob = orientation(U, V, B);
+    if (oa * ob < 0) continue;                              // the ray enters the obstacle at v
+    if (oa == 0 && dot_sign(U, V, V, A) > 0) continue;      // runs along edge v-prev(v)
+    if (ob == 0 && dot_sign(U, V, V, B) > 0) continue;      // runs along edge v-next(v)
+    const ExactPoint eu = to_exact(U), ev = env.exact_vertex(v);
+    const auto hit = shoot_ray(env, ev, ev - eu);
+    if (!hit) continue;  // cannot happen in a bounded environment
+    result.push_back({v, u, hit->point, hit->edge, to_double(hit->point), false, kNone});
+  }
+  // Collisions on the extensions, in double: one query each, a bisection for those that collide.
+  spm_parallel(result.size(), spm_threads(threads, result.size()), [&](std::size_t k) {
+    Extension& e = result[k];
+    const std::uint32_t v = e.vertex;
+    const Point& V = env.vertex(v);
+    // h through v along the extension: D(v) + |v x|. The true h is 1-Lipschitz, so
+    // h(x) - (D(v) + |vx|) is non-increasing from 0 along it: find where it drops below.
+    const Point H = e.end;
+    const double len = spm_length(V, H);
+    auto at = [&](double t) { return Point(V.x() + t * (H.x() - V.x()), V.y() + t * (H.y() - V.y())); };
+    auto shorter = [&](double t, std::uint32_t* who) {
+      const Point x = at(t);
+      const Query q = query(x);
+      if (q.root == kNone) return false;  // rounded off the boundary: nothing decided there
+      const double f = dist_[v] + spm_length(V, x);
+      if (who) *who = q.root;
+      return q.distance < f - 1e-9 * std::max(1.0, f);
+    };
+    const double t_end = 1 - 1e-9;
+    if (len > 0 && shorter(t_end, nullptr)) {
+      double lo = 0, hi = t_end;
+      const double eps = std::max(tolerance, 1e-15);
+      while (hi - lo > eps) {
+        const double mid = (lo + hi) / 2;
+        (shorter(mid, nullptr) ? hi : lo) = mid;
+      }
+      std::uint32_t who = kNone;
+      shorter(hi, &who);
+      e.end = at(lo), e.collides = true, e.collider = who;
+    }
+  });
+  return result;
+}
+
+std::vector<ShortestPathMap::Collision> ShortestPathMap::collisions() const {
+  const Environment& env = environment();
+  // Is predecessor(v) -> v -> x locally shortest: a turn at v (if any) towards the obstacle,
+  // whose neighbours of v then lie on that side of both segments (exact orientations)?
+  auto taut = [&](std::uint32_t v, const Point& x) {
+    const Point& P = root_point(pred_[v]);
+    const Point& V = env.vertex(v);
+    const int s = orientation(P, V, x);
+    if (s == 0 || P == V) return true;
+    for (const std::size_t n : {env.prev(v), env.next(v)}) {
+      const Point& N = env.vertex(n);
+      if (orientation(P, V, N) * s < 0 || orientation(V, x, N) * s < 0) return false;
+    }
+    return true;
+  };
+  const auto& reflex = graph_->reflex_vertices();
+  std::vector<Collision> result;
+  for (std::size_t k = 0; k < reflex.size(); ++k) {
+    const std::uint32_t a = reflex[k];
+    if (pred_[a] == kNone) continue;
+    const Point& A = env.vertex(a);
+    for (std::uint32_t j = out_off_[k]; j < out_off_[k + 1]; ++j) {
+      const std::uint32_t b = out_[j];
+      if (b < a || pred_[b] == kNone) continue;  // each pair once (the segment is tangent at a here)
+      const Point& B = env.vertex(b);
+      if (!tangent_at(env, b, A)) continue;
+      const double ab = spm_length(A, B), da = dist_[a], db = dist_[b];
+      if (!(std::fabs(da - db) < ab * (1 - 1e-9))) continue;  // one front reaches the other's root first
+      const double t = (ab + db - da) / 2 / ab;
+      const Point x(A.x() + t * (B.x() - A.x()), A.y() + t * (B.y() - A.y()));
+      const double h = da + t * ab;
+      if (!taut(a, x) || !taut(b, x)) continue;  // x cannot be reached through both: no query
+      const Query q = query(x);
+      if (q.root == kNone || q.distance < h - 1e-9 * std::max(1.0, h)) continue;  // a third root is shorter there
+      result.push_back({x, a, b, h});
+    }
+  }
+  std::sort(result.begin(), result.end(), [](const Collision& l, const Collision& r) { return l.a != r.a ? l.a < r.a : l.b < r.b; });
+  return result;
+}
+
+ShortestPathMap::Samples ShortestPathMap::sample(std::size_t columns, unsigned threads) const {
+  Samples s;
+  const auto box = environment().bbox();
+  const double w = box.xmax() - box.xmin(), h = box.ymax() - box.ymin();
+  s.columns = std::max<std::size_t>(columns, 2);
+  s.step = w / static_cast<double>(s.columns - 1);
+  if (!(s.step > 0)) s.step = 1;
+  s.rows = static_cast<std::size_t>(std::floor(h / s.step)) + 1;
+  s.x0 = box.xmin(), s.y0 = box.ymin();
+  s.values.resize(s.columns * s.rows);
+  spm_parallel(s.rows, spm_threads(threads, s.values.size()), [&](std::size_t j) {
+    for (std::size_t i = 0; i < s.columns; ++i) s.values[j * s.columns + i] = query(s.point(i, j));
+  });
+  return s;
+}
+
+}  // namespace preimage::geometry

@@ -1,0 +1,34 @@
+# End-to-end tests of the command line: the wave-front decomposition's shortest path map
+# (preimage decompose --method wavefront --start X,Y). Included from tests/CMakeLists.txt, which
+# defines cli_test(), EXPECT, FIX, EXAMPLES, FLOORPLANS and OUT.
+cli_test(wavefront_text 0 "wavefront: shortest path map from \\(0\\.5, 7\\.5\\): 12 of 12 reflex vertices reached, D at reflex vertices from 4\\.74342 to 9\\.91261" -
+         decompose ${EXAMPLES}/gallery.json --method wavefront --start 0.5,7.5)
+cli_test(wavefront_critical_points 0 "critical points: 9 tangency bends \\(extensions to the boundary\\), 4 collisions on extensions" -
+         decompose ${EXAMPLES}/gallery.json --method wavefront --start 0.5,7.5)
+# the extension's end is the exact ray hit: (3,3) seen from (0.5,7.5) continues to y = 0 at x = 14/3
+cli_test(wavefront_exact_hit 0 "bend at \\(3, 3\\) \\(D 5\\.14782\\) from \\(0\\.5, 7\\.5\\): extension to \\(4\\.66666666667, 0\\)" -
+         decompose ${EXAMPLES}/gallery.json --method wavefront --start 0.5,7.5)
+cli_test(wavefront_collision 0 "bend at \\(3, 2\\) \\(D 6\\.14782\\) from \\(3, 3\\): extension to \\(3, 0\\), collision at \\(3, 1\\.10474541314\\)" -
+         decompose ${EXAMPLES}/gallery.json --method wavefront --start 0.5,7.5)
+cli_test(wavefront_fronts_collide 0 "3 first collisions of two fronts \\(saddles of h\\)" - decompose ${EXAMPLES}/gallery.json --method wavefront --start 0.5,7.5)
+# behind the L-shaped obstacle the fronts from its top and bottom meet on its right face
+cli_test(wavefront_fronts_meet 0 "fronts from \\(6\\.2, 7\\) and \\(6\\.2, 2\\.5\\) meet at \\(6\\.2, 3\\.76779965379\\) \\(h 8\\.95409\\)" -
+         decompose ${EXAMPLES}/gallery.json --method wavefront --start 0.5,7.5)
+cli_test(wavefront_svg 0 "wrote .*wavefront\\.svg \\(regions and wave fronts sampled: a drawing\\)" ${OUT}/wavefront.svg
+         decompose ${EXAMPLES}/gallery.json --method wavefront --start 0.5,7.5 --svg ${OUT}/wavefront.svg)
+cli_test(wavefront_office 0 "critical points: 43 tangency bends \\(extensions to the boundary\\), 15 collisions on extensions" - decompose ${FIX}/scenes/office_walls.json --method wavefront --start 1,1)
+cli_test(wavefront_houseexpo 0 "227 of 227 reflex vertices reached" - decompose ${OUT}/house1451.json --method wavefront --start 3,3)
+set_tests_properties(cli.wavefront_houseexpo PROPERTIES DEPENDS cli.import_houseexpo_1451)
+cli_test(wavefront_no_start fail "^preimage: --method wavefront: needs --start X,Y \\(the source of the wave front\\)$" - decompose ${EXAMPLES}/gallery.json --method wavefront)
+cli_test(wavefront_start_in_hole fail "^preimage: shortest path map: the source \\(2\\.5, 2\\.5\\) is not in free space$" -
+         decompose ${EXAMPLES}/gallery.json --method wavefront --start 2.5,2.5)
+cli_test(wavefront_bad_start fail "--start: expected X,Y" - decompose ${EXAMPLES}/gallery.json --method wavefront --start 2.5)
+cli_test(wavefront_start_elsewhere fail "^preimage: --start: only the wavefront decomposition has a start point$" - decompose ${EXAMPLES}/gallery.json --start 1,1)
+cli_test(wavefront_angle fail "^preimage: --method wavefront: takes --start, --json and --svg only$" -
+         decompose ${EXAMPLES}/gallery.json --method wavefront --start 1,1 --angle 3)
+# --json carries what the text says: counts, every reflex vertex with D and predecessor, each
+# tangency with its extension from the bend, the collisions.
+find_package(Python3 COMPONENTS Interpreter REQUIRED)
+add_test(NAME cli.wavefront_json_document COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/cli/json_expect.py
+  "d['method'] == 'wavefront' and d['start'] == [0.5, 7.5] and d['reached'] == 12 and len(d['vertices']) == 12 and len(d['critical_points']) == 12 and sum(k['kind'] == 'fronts_collide' for k in d['critical_points']) == 3 and d['collisions_on_extensions'] == 4 and sum('collision' in k for k in d['critical_points']) == 4 and all(k['extension'][0] == k['point'] for k in d['critical_points'] if k['kind'] == 'tangency') and [4.666666666666, 0] < d['critical_points'][1]['extension'][1] < [4.666666666667, 0] and all(v['distance'] is not None for v in d['vertices']) and abs(d['distance_range'][0] - 4.743416490252569) < 1e-12"
+  -- $<TARGET_FILE:preimage_cli> decompose ${EXAMPLES}/gallery.json --method wavefront --start 0.5,7.5 --json)
