@@ -196,7 +196,7 @@ TEST(Morse, OfficesAndRectilinearMapsWithFlatEdges) {
 TEST(Morse, BothFloorPlans) {
   std::mt19937_64 rng(3);
   for (const char* name : {"house_expo_room_0000.json", "house_expo_room_1451.json"}) {
-    const auto s = scene::import_houseexpo(std::string(PREIMAGE_SHARED_DATA) + "/floorplans/" + name);
+    const auto s = scene::import_houseexpo(std::string(PREIMAGE_FLOORPLANS) + "/" + name);
     const Environment& env = s.require_environment();
     for (int i = 0; i < 4; ++i)
       for (const auto f : kFamilies) check(env, f, random_centre(env, rng), std::string(name) + " " + std::string(to_string(f)), rng);
@@ -313,7 +313,7 @@ TEST(Morse, LinearSlicesReproduceTheBoustrophedonDecomposition) {
   envs.emplace_back("office", geometry::generators::office(3, 3));
   for (std::uint64_t seed = 0; seed < 6; ++seed) envs.emplace_back("rectilinear " + std::to_string(seed), geometry::generators::random_rectilinear(6, 5, true, seed));
   for (const char* name : {"house_expo_room_0000.json", "house_expo_room_1451.json"})
-    envs.emplace_back(name, *scene::import_houseexpo(std::string(PREIMAGE_SHARED_DATA) + "/floorplans/" + name).environment);
+    envs.emplace_back(name, *scene::import_houseexpo(std::string(PREIMAGE_FLOORPLANS) + "/" + name).environment);
   for (const auto& [what, env] : envs) {
     const decompose::BoustrophedonDecomposition b(env);
     const MorseDecomposition m(env, SliceFamily::Linear, Point(0, 0));
@@ -359,7 +359,7 @@ TEST(MorseCoverage, PatternsCoverTheConfigurationSpaceAndKeepClear) {
   envs.emplace_back("office", geometry::generators::office(2, 3));
   envs.emplace_back("random", geometry::generators::random_environment(200, 3, 77));
   for (const char* name : {"house_expo_room_0000.json", "house_expo_room_1451.json"})
-    envs.emplace_back(name, *scene::import_houseexpo(std::string(PREIMAGE_SHARED_DATA) + "/floorplans/" + name).environment);
+    envs.emplace_back(name, *scene::import_houseexpo(std::string(PREIMAGE_FLOORPLANS) + "/" + name).environment);
   for (const auto& [what, env] : envs) {
     const auto box = env.bbox();
     const double r = std::max(box.xmax() - box.xmin(), box.ymax() - box.ymin()) / 120;

@@ -148,7 +148,7 @@ void check_all(const Environment& env, const std::string& what) {
 }
 
 Environment houseexpo(const std::string& name) {
-  const std::string path = std::string(PREIMAGE_SHARED_DATA) + "/floorplans/" + name;
+  const std::string path = std::string(PREIMAGE_FLOORPLANS) + "/" + name;
   return *scene::import_houseexpo(scene::read_file(path), path).environment;
 }
 

@@ -103,7 +103,7 @@ std::vector<SpmtCase> spmt_cases() {
   c.push_back({"office-2x3", generators::office(2, 3), 60});
   for (std::uint64_t seed : {5u, 6u}) c.push_back({"rectilinear-" + std::to_string(seed), generators::random_rectilinear(7, 6, true, seed), 50});
   for (const char* name : {"house_expo_room_0000.json", "house_expo_room_1451.json"})
-    c.push_back({name, *scene::import_houseexpo(std::string(PREIMAGE_SHARED_DATA) + "/floorplans/" + name).environment, 50});
+    c.push_back({name, *scene::import_houseexpo(std::string(PREIMAGE_FLOORPLANS) + "/" + name).environment, 50});
   return c;
 }
 
