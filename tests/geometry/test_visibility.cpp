@@ -230,6 +230,19 @@ TEST(Visibility, ComputeManyFromConcurrentCallers) {
   }
 }
 
+namespace {
+// index.locate(p) against the brute-force locator: same kind, same edge, vertex or hole.
+Location expect_locate_as_brute_force(const Environment& env, const VisibilityIndex& index, const Point& p, const std::string& name) {
+  const Location want = brute_locate(env, index.triangulation(), p);
+  const Location got = index.locate(p);
+  EXPECT_EQ(got.kind, want.kind) << name << " at " << format_point(p);
+  if (want.kind != Location::Kind::Interior) {
+    EXPECT_EQ(got.index, want.index) << name << " at " << format_point(p);
+  }
+  return want;
+}
+}  // namespace
+
 TEST(Visibility, LocateEqualsBruteForce) {
   std::size_t checked = 0, on_boundary = 0, outside = 0;
   for (const auto& [name, env] : vis_environments()) {
@@ -255,12 +268,7 @@ TEST(Visibility, LocateEqualsBruteForce) {
       for (int i = 0; i < 3; ++i) pts.push_back(CGAL::midpoint(env.vertex(t.v[i]), env.vertex(t.v[(i + 1) % 3])));
     for (const auto& q : preimage::testing::random_queries(env, 0, name.rfind("random", 0) != 0 ? 200 : 0, 0, 3)) pts.push_back(q.p);
     for (const Point& p : pts) {
-      const Location want = brute_locate(env, index.triangulation(), p);
-      const Location got = index.locate(p);
-      EXPECT_EQ(got.kind, want.kind) << name << " at " << format_point(p);
-      if (want.kind != Location::Kind::Interior) {
-        EXPECT_EQ(got.index, want.index) << name << " at " << format_point(p);
-      }
+      const Location want = expect_locate_as_brute_force(env, index, p, name);
       EXPECT_EQ(index.in_free_space(p), want.in_free_space()) << name << " at " << format_point(p);
       on_boundary += want.kind == Location::Kind::OnEdge || want.kind == Location::Kind::AtVertex;
       outside += !want.in_free_space();
@@ -298,12 +306,7 @@ TEST(Visibility, LocateInHeavyCellsEqualsBruteForce) {
     for (const Triangle& t : index.triangulation().triangles())
       for (int i = 0; i < 3; ++i) pts.push_back(CGAL::midpoint(env.vertex(t.v[i]), env.vertex(t.v[(i + 1) % 3])));
     for (const Point& p : pts) {
-      const Location want = brute_locate(env, index.triangulation(), p);
-      const Location got = index.locate(p);
-      EXPECT_EQ(got.kind, want.kind) << name << " at " << format_point(p);
-      if (want.kind != Location::Kind::Interior) {
-        EXPECT_EQ(got.index, want.index) << name << " at " << format_point(p);
-      }
+      expect_locate_as_brute_force(env, index, p, name);
     }
     EXPECT_LT(static_cast<double>(tests) / static_cast<double>(interior), 5.0) << name;
     EXPECT_GE(compare_with_cgal(env, 40, 10, 10, 91), 60) << name;
