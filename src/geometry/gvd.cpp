@@ -11,6 +11,7 @@
 #include <preimage/geometry/gvd.hpp>
 
 #include <preimage/error.hpp>
+#include <preimage/geometry/queries.hpp>
 #include <preimage/geometry/segment_sweep.hpp>
 #include <preimage/union_find.hpp>
 
@@ -95,6 +96,8 @@ GeneralizedVoronoiDiagram GeneralizedVoronoiDiagram::build(const Environment& en
     }
   }
   g.edge_obstacle_.resize(n);
+  g.next_.resize(n);
+  for (std::size_t e = 0; e < n; ++e) g.next_[e] = static_cast<std::uint32_t>(env.next(e));
   g.segments_.reserve(n);
   for (std::size_t e = 0; e < n; ++e) {
     g.edge_obstacle_[e] = g.ring_obstacle_[env.ring_of(e)];
@@ -180,48 +183,31 @@ GeneralizedVoronoiDiagram GeneralizedVoronoiDiagram::build(const Environment& en
   g.max_deviation_ = want_dev;
   const double dev = want_dev / res;
 
-  // ---- keep the edges between different obstacles
+  // ---- the shape of a Voronoi edge: its ends, their clearance, samples of a curved edge,
+  // and how D runs along it (shared by the GVD and the medial axis)
   const auto& bverts = vd.vertices();
-  std::vector<std::uint32_t> vid(bverts.size(), UINT32_MAX);
-  std::vector<EdgeShape> shapes;
-  std::vector<std::array<ScaledSite, 2>> edge_sites;
+  using BoostEdge = boost::polygon::voronoi_diagram<double>::edge_type;
   constexpr double kEquidistance = 1.0;  // grid units
-  for (std::size_t i = 0; i < vd.edges().size(); i += 2) {
-    const auto& be = vd.edges()[i];
-    const GvdSite s0 = site_of(*be.cell()), s1 = site_of(*be.twin()->cell());
-    if (s0.obstacle == s1.obstacle) continue;
-    if (be.is_infinite())
-      throw std::logic_error("gvd: Boost.Polygon returned an infinite Voronoi edge between " + site_name(s0) + " and " + site_name(s1) +
-                             " (cf. boostorg/polygon #72)");
-    if (!be.is_primary())
-      throw std::logic_error("gvd: Boost.Polygon returned a secondary edge between " + site_name(s0) + " and " + site_name(s1) + " of different obstacles");
-    const ScaledSite a = scaled(s0), b = scaled(s1);
-    GvdEdge out;
-    out.sites[0] = s0, out.sites[1] = s1;
-    const boost::polygon::voronoi_diagram<double>::vertex_type* bv[2] = {be.vertex0(), be.vertex1()};
-    double cl[2];
+  struct EdgeGeometry {
     XY ends[2];
+    double cl[2] = {0, 0};
+    std::vector<XY> inner;  // samples strictly between the ends (curved edges)
+    EdgeShape sh;
+  };
+  auto describe = [&](const BoostEdge& be, const GvdSite& s0, const GvdSite& s1, const ScaledSite& a, const ScaledSite& b) {
+    EdgeGeometry G;
+    EdgeShape& sh = G.sh;
+    XY* ends = G.ends;
+    const boost::polygon::voronoi_diagram<double>::vertex_type* bv[2] = {be.vertex0(), be.vertex1()};
     for (int k = 0; k < 2; ++k) {
       ends[k] = {bv[k]->x(), bv[k]->y()};
       const double da = distance_to(a, ends[k].x, ends[k].y), db = distance_to(b, ends[k].x, ends[k].y);
       if (!(std::fabs(da - db) <= kEquidistance))
         throw std::logic_error("gvd: Boost.Polygon's Voronoi vertex " + format_point(world(ends[k].x, ends[k].y)) + " is not equidistant to " +
                                site_name(s0) + " (" + format_number(da * res) + ") and " + site_name(s1) + " (" + format_number(db * res) + ")");
-      cl[k] = std::min(da, db);
-      const std::size_t bi = static_cast<std::size_t>(bv[k] - bverts.data());
-      if (vid[bi] == UINT32_MAX) {
-        vid[bi] = static_cast<std::uint32_t>(g.vertices_.size());
-        g.vertices_.push_back({world(ends[k].x, ends[k].y), cl[k] * res, 0});
-      }
-      ++g.vertices_[vid[bi]].degree;
+      G.cl[k] = std::min(da, db);
     }
-    out.from = vid[static_cast<std::size_t>(bv[0] - bverts.data())];
-    out.to = vid[static_cast<std::size_t>(bv[1] - bverts.data())];
-    out.clearance_from = cl[0] * res, out.clearance_to = cl[1] * res;
-    out.curved = be.is_curved();
-    EdgeShape sh;
     const double len = std::hypot(ends[1].x - ends[0].x, ends[1].y - ends[0].y);
-    out.polyline.push_back(world(ends[0].x, ends[0].y));
     // Along the edge D is convex: it falls to its minimum at parameter t* and rises after.
     // With t0 < t1 the ends' parameters, slopes follow from where t* lies (within a grid step
     // of an end counts as at the end).
@@ -261,7 +247,7 @@ GeneralizedVoronoiDiagram GeneralizedVoronoiDiagram::build(const Environment& en
       sh.min_point = {footp.x + nx * h / 2, footp.y + ny * h / 2};
       sh.min_nearest[0] = {P.ax, P.ay}, sh.min_nearest[1] = footp;
       if (!a.point) std::swap(sh.min_nearest[0], sh.min_nearest[1]);
-      if (out.curved && h > 0) {
+      if (be.is_curved() && h > 0) {
         const double step = std::sqrt(8 * h * dev);
         const double pieces_d = std::ceil(std::fabs(u1 - u0) / step);
         const std::size_t pieces = static_cast<std::size_t>(std::clamp(pieces_d, 1.0, 10000.0));
@@ -269,7 +255,7 @@ GeneralizedVoronoiDiagram GeneralizedVoronoiDiagram::build(const Environment& en
         g.max_deviation_ = std::max(g.max_deviation_, du * du / (8 * h) * res);
         for (std::size_t k = 1; k < pieces; ++k) {
           const double u = u0 + du * static_cast<double>(k), v = (u * u + h * h) / (2 * h);
-          out.polyline.push_back(world(footp.x + ex * u + nx * v, footp.y + ey * u + ny * v));
+          G.inner.push_back({footp.x + ex * u + nx * v, footp.y + ey * u + ny * v});
         }
       }
     } else {
@@ -280,19 +266,169 @@ GeneralizedVoronoiDiagram GeneralizedVoronoiDiagram::build(const Environment& en
       if (c == 0) {
         sh.plateau = true;
       } else {
-        const int s = cl[1] > cl[0] ? 1 : cl[1] < cl[0] ? -1 : 0;
+        const int s = G.cl[1] > G.cl[0] ? 1 : G.cl[1] < G.cl[0] ? -1 : 0;
         sh.slope[0] = s, sh.slope[1] = -s;
       }
       sh.min_point = {(ends[0].x + ends[1].x) / 2, (ends[0].y + ends[1].y) / 2};
       sh.min_nearest[0] = nearest_on(a, sh.min_point.x, sh.min_point.y);
       sh.min_nearest[1] = nearest_on(b, sh.min_point.x, sh.min_point.y);
     }
-    out.polyline.push_back(world(ends[1].x, ends[1].y));
+    return G;
+  };
+
+  // ---- keep the edges between different obstacles
+  std::vector<std::uint32_t> vid(bverts.size(), UINT32_MAX);
+  std::vector<EdgeShape> shapes;
+  std::vector<std::array<ScaledSite, 2>> edge_sites;
+  for (std::size_t i = 0; i < vd.edges().size(); i += 2) {
+    const auto& be = vd.edges()[i];
+    const GvdSite s0 = site_of(*be.cell()), s1 = site_of(*be.twin()->cell());
+    if (s0.obstacle == s1.obstacle) continue;
+    if (be.is_infinite())
+      throw std::logic_error("gvd: Boost.Polygon returned an infinite Voronoi edge between " + site_name(s0) + " and " + site_name(s1) +
+                             " (cf. boostorg/polygon #72)");
+    if (!be.is_primary())
+      throw std::logic_error("gvd: Boost.Polygon returned a secondary edge between " + site_name(s0) + " and " + site_name(s1) + " of different obstacles");
+    const ScaledSite a = scaled(s0), b = scaled(s1);
+    const EdgeGeometry G = describe(be, s0, s1, a, b);
+    const EdgeShape& sh = G.sh;
+    GvdEdge out;
+    out.sites[0] = s0, out.sites[1] = s1;
+    const boost::polygon::voronoi_diagram<double>::vertex_type* bv[2] = {be.vertex0(), be.vertex1()};
+    for (int k = 0; k < 2; ++k) {
+      const std::size_t bi = static_cast<std::size_t>(bv[k] - bverts.data());
+      if (vid[bi] == UINT32_MAX) {
+        vid[bi] = static_cast<std::uint32_t>(g.vertices_.size());
+        g.vertices_.push_back({world(G.ends[k].x, G.ends[k].y), G.cl[k] * res, 0});
+      }
+      ++g.vertices_[vid[bi]].degree;
+    }
+    out.from = vid[static_cast<std::size_t>(bv[0] - bverts.data())];
+    out.to = vid[static_cast<std::size_t>(bv[1] - bverts.data())];
+    out.clearance_from = G.cl[0] * res, out.clearance_to = G.cl[1] * res;
+    out.curved = be.is_curved();
+    out.polyline.push_back(world(G.ends[0].x, G.ends[0].y));
+    for (const XY& q : G.inner) out.polyline.push_back(world(q.x, q.y));
+    out.polyline.push_back(world(G.ends[1].x, G.ends[1].y));
     out.min_clearance = std::min(out.clearance_from, out.clearance_to);
     if (sh.interior_min) out.min_clearance = std::min(out.min_clearance, distance_to(a, sh.min_point.x, sh.min_point.y) * res);
     g.edges_.push_back(std::move(out));
     shapes.push_back(sh);
     edge_sites.push_back({a, b});
+  }
+
+  // ---- the medial axis: every primary edge in free space, split at the minimum of D
+  if (options.medial_axis) {
+    std::vector<std::uint32_t> mvid(bverts.size(), UINT32_MAX);
+    auto medial_vertex = [&](const boost::polygon::voronoi_diagram<double>::vertex_type* v, double cl) {
+      const std::size_t bi = static_cast<std::size_t>(v - bverts.data());
+      if (mvid[bi] == UINT32_MAX) {
+        mvid[bi] = static_cast<std::uint32_t>(g.medial_vertices_.size());
+        g.medial_vertices_.push_back({world(v->x(), v->y()), cl * res});
+      }
+      return mvid[bi];
+    };
+    // Per Boost half-edge kept: the first and the last sheet along its direction of travel.
+    std::vector<std::uint32_t> first_sheet(vd.edges().size(), UINT32_MAX), last_sheet(vd.edges().size(), UINT32_MAX);
+    auto half_index = [&](const BoostEdge* e) { return static_cast<std::size_t>(e - vd.edges().data()); };
+    for (std::size_t i = 0; i < vd.edges().size(); i += 2) {
+      const auto& be = vd.edges()[i];
+      if (!be.is_primary() || be.is_infinite()) continue;
+      const GvdSite s0 = site_of(*be.cell()), s1 = site_of(*be.twin()->cell());
+      const ScaledSite a = scaled(s0), b = scaled(s1);
+      const EdgeGeometry G = describe(be, s0, s1, a, b);
+      std::vector<XY> pts;
+      pts.push_back(G.ends[0]);
+      pts.insert(pts.end(), G.inner.begin(), G.inner.end());
+      pts.push_back(G.ends[1]);
+      if (s0.obstacle == s1.obstacle) {
+        // Inside free space or inside an obstacle (or outside the outer ring) as a whole:
+        // one interior point decides, exactly, against the site (its nearest obstacle).
+        const XY mid = pts.size() > 2 ? pts[pts.size() / 2] : XY{(pts[0].x + pts[1].x) / 2, (pts[0].y + pts[1].y) / 2};
+        const Point m = world(mid.x, mid.y);
+        bool free = false;
+        if (s0.kind == GvdSite::Kind::Edge)
+          free = CGAL::orientation(g.snapped_[s0.index], g.snapped_[env.next(s0.index)], m) == CGAL::LEFT_TURN;
+        else if (s1.kind == GvdSite::Kind::Edge)
+          free = CGAL::orientation(g.snapped_[s1.index], g.snapped_[env.next(s1.index)], m) == CGAL::LEFT_TURN;
+        else
+          free = distance_to(a, mid.x, mid.y) > 0 && in_free_wedge(env, s0.index, m);
+        if (!free) continue;
+      }
+      // Split at the interior minimum of D (a saddle): D is then monotone or constant on each piece.
+      std::vector<std::vector<XY>> pieces;
+      if (G.sh.interior_min) {
+        const XY mp = G.sh.min_point;
+        const double ux = G.ends[1].x - G.ends[0].x, uy = G.ends[1].y - G.ends[0].y;
+        const double tm = ux * (mp.x - G.ends[0].x) + uy * (mp.y - G.ends[0].y);
+        std::vector<XY> p0{pts.front()}, p1;
+        std::size_t k = 1;
+        for (; k + 1 < pts.size() && ux * (pts[k].x - G.ends[0].x) + uy * (pts[k].y - G.ends[0].y) < tm; ++k) p0.push_back(pts[k]);
+        p0.push_back(mp);
+        p1.push_back(mp);
+        for (; k < pts.size(); ++k) p1.push_back(pts[k]);
+        pieces.push_back(std::move(p0));
+        pieces.push_back(std::move(p1));
+      } else {
+        pieces.push_back(std::move(pts));
+      }
+      std::uint32_t prev_vertex = medial_vertex(be.vertex0(), G.cl[0]);
+      const auto first_edge = static_cast<std::uint32_t>(g.medial_edges_.size());
+      for (std::size_t p = 0; p < pieces.size(); ++p) {
+        MedialEdge me;
+        me.sites[0] = s0, me.sites[1] = s1;
+        me.plateau = G.sh.plateau;
+        me.from = prev_vertex;
+        if (p + 1 < pieces.size()) {
+          me.to = static_cast<std::uint32_t>(g.medial_vertices_.size());
+          g.medial_vertices_.push_back({world(pieces[p].back().x, pieces[p].back().y), distance_to(a, pieces[p].back().x, pieces[p].back().y) * res});
+        } else {
+          me.to = medial_vertex(be.vertex1(), G.cl[1]);
+        }
+        for (std::size_t k = 0; k < pieces[p].size(); ++k) {
+          const XY& q = pieces[p][k];
+          me.polyline.push_back(k == 0 ? g.medial_vertices_[me.from].p : k + 1 == pieces[p].size() ? g.medial_vertices_[me.to].p : world(q.x, q.y));
+          me.clearance.push_back(k == 0 ? g.medial_vertices_[me.from].clearance
+                                 : k + 1 == pieces[p].size() ? g.medial_vertices_[me.to].clearance
+                                                             : std::min(distance_to(a, q.x, q.y), distance_to(b, q.x, q.y)) * res);
+        }
+        if (me.plateau) {
+          const double c = (me.clearance.front() + me.clearance.back()) / 2;
+          std::fill(me.clearance.begin(), me.clearance.end(), c);
+        }
+        prev_vertex = me.to;
+        g.medial_edges_.push_back(std::move(me));
+      }
+      const auto last_edge = static_cast<std::uint32_t>(g.medial_edges_.size() - 1);
+      for (std::uint32_t e = first_edge; e < last_edge; ++e) {
+        g.medial_edges_[e].next_sheet[0] = 2 * (e + 1);       // along site 0 past the minimum
+        g.medial_edges_[e + 1].next_sheet[1] = 2 * e + 1;     // along site 1, the other way
+      }
+      first_sheet[i] = 2 * first_edge, last_sheet[i] = 2 * last_edge;
+      first_sheet[i + 1] = 2 * last_edge + 1, last_sheet[i + 1] = 2 * first_edge + 1;
+    }
+    // Across the flow line at the end of each half-edge: the next primary half-edge of the
+    // same cell, or, past a secondary edge (the perpendicular at a segment's endpoint), the
+    // next one of the neighbouring cell.
+    for (std::size_t h = 0; h < vd.edges().size(); ++h) {
+      if (last_sheet[h] == UINT32_MAX) continue;
+      const BoostEdge* nh = vd.edges()[h].next();
+      for (int guard = 0; guard < 4 && nh && !nh->is_primary(); ++guard) nh = nh->twin()->next();
+      if (!nh || first_sheet[half_index(nh)] == UINT32_MAX) continue;
+      const std::uint32_t s = last_sheet[h];
+      g.medial_edges_[s / 2].next_sheet[s % 2] = first_sheet[half_index(nh)];
+    }
+    // Check: a sheet whose end lies off the obstacles continues into a sheet starting there.
+    for (std::uint32_t e = 0; e < g.medial_edges_.size(); ++e)
+      for (int s = 0; s < 2; ++s) {
+        const MedialEdge& me = g.medial_edges_[e];
+        const std::uint32_t end = s == 0 ? me.to : me.from;
+        if (!(g.medial_vertices_[end].clearance > 2 * res)) continue;
+        const std::uint32_t nx = me.next_sheet[s];
+        if (nx == UINT32_MAX || (nx % 2 == 0 ? g.medial_edges_[nx / 2].from : g.medial_edges_[nx / 2].to) != end)
+          throw std::logic_error("gvd: the medial axis sheet of " + site_name(me.sites[s]) + " ending at " + format_point(g.medial_vertices_[end].p) +
+                                 " has no successor (Boost.Polygon's output is incomplete)");
+      }
   }
 
   // ---- the grid for clearance()
@@ -470,6 +606,15 @@ GeneralizedVoronoiDiagram GeneralizedVoronoiDiagram::build(const Environment& en
     }
   }
   return g;
+}
+
+Point GeneralizedVoronoiDiagram::nearest_on_site(const GvdSite& s, const Point& p) const {
+  const Point& a = snapped_[s.index];
+  if (s.kind == GvdSite::Kind::Vertex) return a;
+  const Point& b = snapped_[next_[s.index]];
+  const double dx = b.x() - a.x(), dy = b.y() - a.y(), len2 = dx * dx + dy * dy;
+  const double t = len2 > 0 ? std::clamp(((p.x() - a.x()) * dx + (p.y() - a.y()) * dy) / len2, 0.0, 1.0) : 0.0;
+  return {a.x() + t * dx, a.y() + t * dy};
 }
 
 double GeneralizedVoronoiDiagram::clearance_brute_force(const Point& p) const {

@@ -59,6 +59,33 @@ struct GvdCriticalPoint {
                                       // saddles; at a vertex the most nearly opposite pair
 };
 
+/// A vertex of the medial axis: a Voronoi vertex, or the minimum of D inside a Voronoi edge.
+struct MedialVertex {
+  Point p;
+  double clearance = 0;  // D there
+};
+
+/// An edge of the medial axis (GvdOptions::medial_axis): a piece of a primary Voronoi edge
+/// in free space — between sites of one obstacle too —, split at the minimum of D so that D
+/// is monotone (or constant) from `from` to `to`.
+///
+/// Its two *sheets* tile free space with all the others: sheet 2e + s is swept by the
+/// segments from the edge's points to their nearest points on sites[s]. D grows linearly
+/// along each such segment (the flow lines of the brushfire), so a level curve of D crosses
+/// a sheet once, above the points of the edge where D is at least its level. Sheet 2e runs
+/// from -> to with sites[0] on its left; sheet 2e + 1 runs to -> from with sites[1] on its left.
+struct MedialEdge {
+  static constexpr std::uint32_t kNoSheet = UINT32_MAX;
+  GvdSite sites[2];
+  std::uint32_t from = 0, to = 0;  // MedialVertex ids
+  std::vector<Point> polyline;     // from .. to (curved edges sampled within max_deviation())
+  std::vector<double> clearance;   // D at each polyline point: monotone, or constant (plateau)
+  bool plateau = false;            // between parallel walls: D constant
+  /// The sheet beyond the flow line at the end of sheet 2e + s (the next one along the same
+  /// obstacle boundary); kNoSheet where that end lies on an obstacle (D = 0).
+  std::uint32_t next_sheet[2] = {kNoSheet, kNoSheet};
+};
+
 struct GvdOptions {
   /// Curved edges are sampled so that the polyline stays within this distance of the
   /// arc; 0 means 1/1000 of the larger side of the bounding box.
@@ -66,6 +93,8 @@ struct GvdOptions {
   /// Snapping: every |coordinate| is below 2^grid_bits grid steps (16..30). Fewer bits, a
   /// coarser grid but a faster diagram: Boost's exact fallback works on shorter numbers.
   int grid_bits = 29;
+  /// Also build the medial axis (medial_vertices(), medial_edges()).
+  bool medial_axis = false;
 };
 
 class GeneralizedVoronoiDiagram {
@@ -78,6 +107,13 @@ class GeneralizedVoronoiDiagram {
   const std::vector<GvdEdge>& edges() const { return edges_; }
   const std::vector<GvdCriticalPoint>& saddles() const { return saddles_; }
   const std::vector<GvdCriticalPoint>& maxima() const { return maxima_; }
+
+  /// The medial axis (empty unless GvdOptions::medial_axis): every primary Voronoi edge in
+  /// free space, the GVD's and those between two sites of one obstacle.
+  const std::vector<MedialVertex>& medial_vertices() const { return medial_vertices_; }
+  const std::vector<MedialEdge>& medial_edges() const { return medial_edges_; }
+  /// The nearest point of a site (of the snapped environment) to p.
+  Point nearest_on_site(const GvdSite& s, const Point& p) const;
 
   /// Obstacles are the rings joined by contacts (the connected components of the
   /// obstacle region, the text's QO_i): without contacts, the outer ring (obstacle 0) and
@@ -113,6 +149,9 @@ class GeneralizedVoronoiDiagram {
   std::vector<GvdVertex> vertices_;
   std::vector<GvdEdge> edges_;
   std::vector<GvdCriticalPoint> saddles_, maxima_;
+  std::vector<MedialVertex> medial_vertices_;
+  std::vector<MedialEdge> medial_edges_;
+  std::vector<std::uint32_t> next_;       // env.next(e)
   std::vector<std::uint32_t> ring_obstacle_;
   std::vector<std::vector<std::uint32_t>> obstacle_rings_;
   std::vector<Point> snapped_;
