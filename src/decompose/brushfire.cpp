@@ -26,8 +26,10 @@ namespace {
 constexpr std::uint32_t kNoId = UINT32_MAX;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-geometry::GvdOptions with_medial_axis(geometry::GvdOptions o) {
+geometry::GvdOptions with_medial_axis(geometry::GvdOptions o, const Environment& env) {
   o.medial_axis = true;
+  // the axis bounds the bands drawn and the laps' turns: finer than the GVD's default
+  if (o.max_deviation == 0) o.max_deviation = 1e-5 * std::max(env.bbox().xmax() - env.bbox().xmin(), env.bbox().ymax() - env.bbox().ymin());
   return o;
 }
 
@@ -67,7 +69,7 @@ std::uint32_t BrushfireDecomposition::band_at(std::uint32_t s, double level) con
 }
 
 BrushfireDecomposition::BrushfireDecomposition(const Environment& env, const geometry::GvdOptions& options)
-    : env_(&env), gvd_(geometry::GeneralizedVoronoiDiagram::build(env, with_medial_axis(options))) {
+    : env_(&env), gvd_(geometry::GeneralizedVoronoiDiagram::build(env, with_medial_axis(options, env))) {
   const auto& V = gvd_.medial_vertices();
   const auto& E = gvd_.medial_edges();
   const std::size_t nv = V.size(), ne = E.size(), ns = 2 * ne;
@@ -232,7 +234,7 @@ BrushfireDecomposition::BrushfireDecomposition(const Environment& env, const geo
       }
     }
   }
-  const double sag = 1e-4 * std::max(env.bbox().xmax() - env.bbox().xmin(), env.bbox().ymax() - env.bbox().ymin());
+  const double sag = 1e-5 * std::max(env.bbox().xmax() - env.bbox().xmin(), env.bbox().ymax() - env.bbox().ymin());
   for (std::uint32_t b = 0; b < nb; ++b) {
     const auto poly = band_polygon(b, sag);
     double a = 0;
@@ -262,6 +264,29 @@ std::vector<std::vector<std::uint32_t>> BrushfireDecomposition::adjacency() cons
   return adj;
 }
 
+// The point of segment qp (a piece of the axis edge e) where D = level, D going from dq to
+// dp: on a circle around a vertex site when the edge has one (D is not linear along a
+// bisector of points), else linear (D is linear along a line between two segments).
+Point BrushfireDecomposition::crossing(std::uint32_t e, const Point& q, const Point& p, double dq, double dp, double level) const {
+  const auto& me = gvd_.medial_edges()[e];
+  for (const auto& site : me.sites) {
+    if (site.kind != geometry::GvdSite::Kind::Vertex) continue;
+    const Point c = gvd_.nearest_on_site(site, q);
+    const double ux = p.x() - q.x(), uy = p.y() - q.y(), wx = q.x() - c.x(), wy = q.y() - c.y();
+    const double A = ux * ux + uy * uy, B = 2 * (ux * wx + uy * wy), C = wx * wx + wy * wy - level * level;
+    if (!(A > 0)) return q;
+    const double disc = std::max(0.0, B * B - 4 * A * C), sq = std::sqrt(disc);
+    // the root in [0, 1] nearer the linear guess
+    const double guess = dp != dq ? std::clamp((level - dq) / (dp - dq), 0.0, 1.0) : 0.0;
+    double best = guess, gap = kInf;
+    for (const double t : {(-B - sq) / (2 * A), (-B + sq) / (2 * A)})
+      if (t >= -1e-9 && t <= 1 + 1e-9 && std::fabs(t - guess) < gap) best = std::clamp(t, 0.0, 1.0), gap = std::fabs(t - guess);
+    return {q.x() + best * ux, q.y() + best * uy};
+  }
+  const double t = dp != dq ? std::clamp((level - dq) / (dp - dq), 0.0, 1.0) : 0.0;
+  return {q.x() + t * (p.x() - q.x()), q.y() + t * (p.y() - q.y())};
+}
+
 void BrushfireDecomposition::sheet_run(std::uint32_t s, double level, std::vector<Point>& m, std::vector<double>& d) const {
   m.clear(), d.clear();
   const auto& e = gvd_.medial_edges()[s / 2];
@@ -283,9 +308,7 @@ void BrushfireDecomposition::sheet_run(std::uint32_t s, double level, std::vecto
     if (k > 0) dd = a <= z ? std::max(dd, prev_d) : std::min(dd, prev_d);
     const Point& p = e.polyline[at(k)];
     if (k > 0 && (prev_d < level) != (dd < level)) {
-      const Point& q = e.polyline[at(k - 1)];
-      const double t = dd != prev_d ? std::clamp((level - prev_d) / (dd - prev_d), 0.0, 1.0) : 0.0;
-      m.emplace_back(q.x() + t * (p.x() - q.x()), q.y() + t * (p.y() - q.y()));
+      m.push_back(crossing(s / 2, e.polyline[at(k - 1)], p, prev_d, dd, level));
       d.push_back(level);
     }
     if (dd >= level) m.push_back(p), d.push_back(dd);
@@ -320,7 +343,8 @@ void BrushfireDecomposition::offset_run(std::uint32_t s, const std::vector<Point
       double da = a1 - a0;
       while (da > std::numbers::pi) da -= 2 * std::numbers::pi;
       while (da < -std::numbers::pi) da += 2 * std::numbers::pi;
-      const double step = 2 * std::acos(std::max(-1.0, 1 - sag / l));
+      // never coarser than pi/32 (a chord then misses 0.2% of its sector)
+      const double step = std::min(std::numbers::pi / 32, 2 * std::acos(std::max(-1.0, 1 - sag / l)));
       const auto pieces = static_cast<std::size_t>(std::min(4096.0, std::ceil(std::fabs(da) / std::max(step, 1e-6))));
       for (std::size_t i = 1; i < pieces; ++i) {
         const double t = a0 + da * static_cast<double>(i) / static_cast<double>(pieces);
@@ -344,8 +368,7 @@ std::vector<Point> BrushfireDecomposition::band_polygon(std::uint32_t b, double 
     std::vector<double> d2;
     for (std::size_t k = 0; k < m.size(); ++k) {
       if (k > 0 && (d[k - 1] < hi) != (d[k] < hi)) {
-        const double t = std::clamp((hi - d[k - 1]) / (d[k] - d[k - 1]), 0.0, 1.0);
-        m2.emplace_back(m[k - 1].x() + t * (m[k].x() - m[k - 1].x()), m[k - 1].y() + t * (m[k].y() - m[k - 1].y()));
+        m2.push_back(crossing(s / 2, m[k - 1], m[k], d[k - 1], d[k], hi));
         d2.push_back(hi);
       }
       m2.push_back(m[k]), d2.push_back(d[k]);
@@ -415,8 +438,7 @@ std::vector<BrushfireDecomposition::AxisPiece> BrushfireDecomposition::axis_piec
       // keep the part with D <= z (D is monotone along the run)
       for (std::size_t k = 0; k < m.size(); ++k) {
         if (k > 0 && (d[k - 1] <= z) != (d[k] <= z)) {
-          const double t = std::clamp((z - d[k - 1]) / (d[k] - d[k - 1]), 0.0, 1.0);
-          p.points.emplace_back(m[k - 1].x() + t * (m[k].x() - m[k - 1].x()), m[k - 1].y() + t * (m[k].y() - m[k - 1].y()));
+          p.points.push_back(crossing(e, m[k - 1], m[k], d[k - 1], d[k], z));
           p.clearance.push_back(z);
         }
         if (d[k] <= z) p.points.push_back(m[k]), p.clearance.push_back(d[k]);

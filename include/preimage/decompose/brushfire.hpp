@@ -124,6 +124,7 @@ class BrushfireDecomposition {
   std::uint32_t band_at(std::uint32_t sheet, double level) const;
   // Points of the sheet's edge, in the sheet's direction, where D >= level, with D.
   void sheet_run(std::uint32_t sheet, double level, std::vector<Point>& m, std::vector<double>& d) const;
+  Point crossing(std::uint32_t edge, const Point& q, const Point& p, double dq, double dp, double level) const;
   // p on the flow line from the site's nearest point to m, at distance lambda.
   Point on_flow_line(std::uint32_t sheet, const Point& m, double dm, double lambda) const;
   // Appends points at distance lambda over m's (arcs around vertex sites subdivided).
