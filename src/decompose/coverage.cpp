@@ -300,7 +300,9 @@ CoverageReport plan_coverage(const Environment& env, const CoverageOptions& o) {
   const VisibilityGraph graph(index);
   const Planning P{env, cs, E, index, graph, o, w, entry};
 
-  CoverageReport rep = o.pattern == Pattern::Boustrophedon ? plan_boustrophedon(P) : detail::plan_pattern(P);
+  CoverageReport rep = o.pattern == Pattern::Boustrophedon ? plan_boustrophedon(P)
+                       : o.pattern == Pattern::Brushfire   ? detail::plan_brushfire(P)
+                                                           : detail::plan_pattern(P);
   rep.width = w, rep.robot_radius = r;
   rep.target_area = E.area();
   for (std::size_t k = 0; k < cs.components().size(); ++k)

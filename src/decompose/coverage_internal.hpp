@@ -27,6 +27,15 @@ struct Planning {
 /// transit length, rotation and turns.
 void finish_path(const Planning& P, Polyline path, CoverageReport& rep);
 
+/// A path grown point by point: a straight move where it is certified (inside E, r from
+/// every obstacle), else the shortest path there (counted in `detours`).
+struct PathBuilder {
+  const Planning& P;
+  Polyline path;
+  std::size_t detours = 0;
+  void go(const Point& z, Move move);
+};
+
 /// 6.2.1's exhaustive walk: cells in depth-first order of the adjacency graph from `first`
 /// (neighbours in their listed order), then any cell the walk did not reach, the same way.
 std::vector<std::uint32_t> depth_first_order(const std::vector<std::vector<std::uint32_t>>& adj, std::uint32_t first);
@@ -34,5 +43,9 @@ std::vector<std::uint32_t> depth_first_order(const std::vector<std::vector<std::
 /// The variable-slice patterns of 6.2.3 (spiral, concentric, spike, squarel) on the Morse
 /// decomposition of E (morse_coverage.cpp).
 CoverageReport plan_pattern(const Planning& P);
+
+/// The brushfire pattern of 6.2.3 (Fig. 6.17): offset curves w apart from the obstacles,
+/// and the medial axis between them, cell by cell (brushfire_coverage.cpp).
+CoverageReport plan_brushfire(const Planning& P);
 
 }  // namespace preimage::decompose::detail

@@ -33,12 +33,13 @@ std::string_view to_string(Pattern p) {
     case Pattern::Concentric: return "concentric";
     case Pattern::Spike: return "spike";
     case Pattern::Squarel: return "squarel";
+    case Pattern::Brushfire: return "brushfire";
   }
   return "?";
 }
 
 std::optional<Pattern> parse_pattern(std::string_view s) {
-  for (const Pattern p : {Pattern::Boustrophedon, Pattern::Spiral, Pattern::Concentric, Pattern::Spike, Pattern::Squarel})
+  for (const Pattern p : {Pattern::Boustrophedon, Pattern::Spiral, Pattern::Concentric, Pattern::Spike, Pattern::Squarel, Pattern::Brushfire})
     if (to_string(p) == s) return p;
   return std::nullopt;
 }
@@ -163,6 +164,23 @@ void sample(const Slices& S, double lam, double a, double b, double sag, std::ve
 
 }  // namespace
 
+void PathBuilder::go(const Point& z, Move move) {
+  if (path.points.empty()) {
+    path.append(z, move);
+    return;
+  }
+  const Point a = path.points.back();
+  if (a == z) return;
+  if (P.index.visible(a, z) && (P.cs.radius() == 0 || P.cs.admits(a, z))) {
+    path.append(z, move);
+    return;
+  }
+  const auto sp = P.graph.shortest_path(a, z);
+  if (!sp.found) throw std::logic_error("coverage: no path between two points of one component");
+  ++detours;
+  for (std::size_t i = 1; i < sp.points.size(); ++i) path.append(sp.points[i], move == Move::Lap ? Move::Follow : move);
+}
+
 CoverageReport plan_pattern(const Planning& P) {
   const Pattern pattern = P.o.pattern;
   const SliceFamily family = pattern == Pattern::Spike ? SliceFamily::Spike : pattern == Pattern::Squarel ? SliceFamily::Squarel : SliceFamily::Circular;
@@ -249,23 +267,10 @@ CoverageReport plan_pattern(const Planning& P) {
   Polyline path;
   if (P.o.start) path.append(*P.o.start, Move::Transit);
   if (P.start && (path.points.empty() || *P.start != path.points.back())) path.append(*P.start, Move::Transit);
-  std::size_t lap_count = 0, detours = 0;
-  auto go = [&](const Point& z, Move move) {
-    if (path.points.empty()) {
-      path.append(z, move);
-      return;
-    }
-    const Point a = path.points.back();
-    if (a == z) return;
-    if (P.index.visible(a, z) && (P.cs.radius() == 0 || P.cs.admits(a, z))) {
-      path.append(z, move);
-      return;
-    }
-    const auto sp = P.graph.shortest_path(a, z);
-    if (!sp.found) throw std::logic_error("coverage: no path between two points of one component");
-    ++detours;
-    for (std::size_t i = 1; i < sp.points.size(); ++i) path.append(sp.points[i], move == Move::Lap ? Move::Follow : move);
-  };
+  std::size_t lap_count = 0;
+  PathBuilder builder{P, std::move(path), 0};
+  Polyline& built = builder.path;
+  auto go = [&](const Point& z, Move move) { builder.go(z, move); };
   auto free_point = [&](const Point& p) { return P.index.in_free_space(p); };
   // From a to z along the cell's boundary (6.2.3: "motion along the boundary of the cell"),
   // the shorter way round the ring nearest to both: it sweeps the corners that the laps'
@@ -318,14 +323,14 @@ CoverageReport plan_pattern(const Planning& P) {
     auto& cl = laps[k];
     if (cl.empty()) continue;
     // Run the levels upwards or downwards, whichever starts nearer.
-    if (!path.points.empty()) {
-      const Point& here = path.points.back();
+    if (!built.points.empty()) {
+      const Point& here = built.points.back();
       const auto d = [&](const Point& p) { return std::hypot(p.x() - here.x(), p.y() - here.y()); };
       if (d(cl.back().pts.back()) + 1e-12 < std::min(d(cl.front().pts.front()), d(cl.front().pts.back()))) std::reverse(cl.begin(), cl.end());
     }
     bool forward = true;
-    if (!path.points.empty()) {
-      const Point& here = path.points.back();
+    if (!built.points.empty()) {
+      const Point& here = built.points.back();
       const auto d = [&](const Point& p) { return std::hypot(p.x() - here.x(), p.y() - here.y()); };
       forward = d(cl.front().pts.front()) <= d(cl.front().pts.back());
     }
@@ -337,10 +342,10 @@ CoverageReport plan_pattern(const Planning& P) {
         if (!free_point(p)) continue;
         if (first_point && entered && !lap.loop) {
           // Follow the cell's boundary to the next lap unless that wanders far (then step).
-          const auto walk = along_boundary(cell_rings[k], path.points.back(), p);
+          const auto walk = along_boundary(cell_rings[k], built.points.back(), p);
           double l = 0;
           for (std::size_t i = 0; i + 1 < walk.size(); ++i) l += std::hypot(walk[i + 1].x() - walk[i].x(), walk[i + 1].y() - walk[i].y());
-          if (l <= 20 * w + 4 * std::hypot(p.x() - path.points.back().x(), p.y() - path.points.back().y()))
+          if (l <= 20 * w + 4 * std::hypot(p.x() - built.points.back().x(), p.y() - built.points.back().y()))
             for (const Point& b : walk)
               if (free_point(b)) go(b, Move::Follow);
         }
@@ -351,11 +356,11 @@ CoverageReport plan_pattern(const Planning& P) {
       if (!lap.loop) forward = !forward;  // boustrophedon in the level; loops keep their sense
     }
   }
-  if (path.points.empty()) throw InputError("coverage: no lap fits in the free space at this width");
+  if (built.points.empty()) throw InputError("coverage: no lap fits in the free space at this width");
 
   CoverageReport rep;
-  finish_path(P, std::move(path), rep);
-  rep.rounding_detours = detours;
+  finish_path(P, std::move(built), rep);
+  rep.rounding_detours = builder.detours;
   rep.laps = lap_count;
   rep.cells = n;
   rep.critical_points = m.num_nodes();

@@ -33,7 +33,9 @@ enum class Transit { Shortest, Decomposition };  // visibility-graph shortest pa
 /// or laps along the slices of a Morse decomposition around a centre — circles (concentric,
 /// or a spiral in annular cells), rays from the centre (spike: denser near it), or diamonds
 /// (squarel, a spiral in annular cells).
-enum class Pattern : std::uint8_t { Boustrophedon, Spiral, Concentric, Spike, Squarel };
+/// Or the distance-function patterns: offset curves from the obstacles and the medial axis
+/// between them (brushfire).
+enum class Pattern : std::uint8_t { Boustrophedon, Spiral, Concentric, Spike, Squarel, Brushfire };
 std::string_view to_string(Pattern p);
 std::optional<Pattern> parse_pattern(std::string_view s);
 

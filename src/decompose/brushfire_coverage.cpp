@@ -1,0 +1,163 @@
+// SPDX-License-Identifier: Apache-2.0
+// The brushfire coverage pattern (6.2.3, Fig. 6.17): the robot keeps a fixed distance from
+// the obstacle boundary (a slice of D, an offset curve) and steps inwards by the tool width,
+// then follows the generalized Voronoi diagram where the fronts meet.
+//
+// On the configuration space E: laps are the slices D = w/2 + k w of E's distance
+// function, so that every flow line of D (from the boundary to the medial axis) is crossed
+// by a lap every w below its top; the part of a flow line above its last lap is shorter
+// than w, and within w/2 of the axis where it is longer than w/2 — there the robot follows
+// the axis. Cells (the brushfire decomposition of E) are visited in 6.2.1's depth-first
+// order over their adjacency graph; inside a cell the laps run outwards-in (ascending D),
+// then the axis pieces, nearest first.
+#include "coverage_internal.hpp"
+
+#include <preimage/decompose/brushfire.hpp>
+#include <preimage/error.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace preimage::decompose::detail {
+
+namespace {
+
+double gap_between(const Point& a, const Point& b) { return std::hypot(a.x() - b.x(), a.y() - b.y()); }
+
+}  // namespace
+
+CoverageReport plan_brushfire(const Planning& P) {
+  const BrushfireDecomposition bd(P.E);
+  const double w = P.w;
+  const auto box = P.E.bbox();
+  const double scale = std::max(box.xmax() - box.xmin(), box.ymax() - box.ymin());
+  const double sag = std::min(w / 20, 1e-3 * scale);
+  double top = 0;
+  for (const auto& v : bd.gvd().medial_vertices()) top = std::max(top, v.clearance);
+
+  struct Lap {
+    std::vector<Point> pts;
+    bool loop;
+  };
+  const std::size_t n = bd.cells().size();
+  std::vector<std::vector<Lap>> laps(n);
+  for (double lam = w / 2; lam < top; lam += w)
+    for (auto& c : bd.level_curves(lam, sag)) laps[c.cell].push_back({std::move(c.points), true});
+  // The axis where the flow line's part above its last lap is longer than w/2 (or no lap
+  // crosses it), from D = w/8 up: runs of such points.
+  auto needs_axis = [&](double d) {
+    if (d < w / 8) return false;
+    if (d <= w / 2) return true;
+    return std::fmod(d - w / 2, w) > w / 2;
+  };
+  std::vector<std::vector<Lap>> axis(n);
+  for (const auto& piece : bd.axis_pieces()) {
+    Lap run{{}, false};
+    for (std::size_t k = 0; k < piece.points.size(); ++k) {
+      const bool want = needs_axis(piece.clearance[k]) || (k > 0 && needs_axis(piece.clearance[k - 1])) ||
+                        (k + 1 < piece.points.size() && needs_axis(piece.clearance[k + 1]));
+      if (want) {
+        run.pts.push_back(piece.points[k]);
+      } else if (!run.pts.empty()) {
+        if (run.pts.size() >= 2) axis[piece.cell].push_back(std::move(run));
+        run = {{}, false};
+      }
+    }
+    if (run.pts.size() >= 2) axis[piece.cell].push_back(std::move(run));
+  }
+
+  // Runs that meet end to end (at an axis vertex of degree 2) become one.
+  for (auto& runs : axis) {
+    for (bool merged = true; merged;) {
+      merged = false;
+      for (std::size_t i = 0; i < runs.size() && !merged; ++i)
+        for (std::size_t j = 0; j < runs.size() && !merged; ++j) {
+          if (i == j) continue;
+          auto& a = runs[i].pts;
+          auto& b = runs[j].pts;
+          if (a.back() == b.back()) std::reverse(b.begin(), b.end());
+          else if (a.front() == b.front()) std::reverse(a.begin(), a.end());
+          else if (a.front() == b.back()) std::swap(a, b);
+          if (a.back() != b.front()) continue;
+          a.insert(a.end(), b.begin() + 1, b.end());
+          runs.erase(runs.begin() + static_cast<std::ptrdiff_t>(j));
+          merged = true;
+        }
+    }
+  }
+
+  // Cell order: the exhaustive walk of the adjacency graph from the cell of the lap nearest
+  // the start (the first cell with laps otherwise).
+  std::uint32_t first = 0;
+  {
+    double best = std::numeric_limits<double>::infinity();
+    for (std::uint32_t k = 0; k < n; ++k)
+      for (const Lap& l : laps[k])
+        for (const Point& p : l.pts) {
+          const double d = P.start ? gap_between(p, *P.start) : 0;
+          if (d < best) best = d, first = k;
+          if (!P.start) break;
+        }
+  }
+  const std::vector<std::uint32_t> order = depth_first_order(bd.adjacency(), first);
+
+  Polyline start_path;
+  if (P.o.start) start_path.append(*P.o.start, Move::Transit);
+  if (P.start && (start_path.points.empty() || *P.start != start_path.points.back())) start_path.append(*P.start, Move::Transit);
+  PathBuilder builder{P, std::move(start_path), 0};
+  Polyline& path = builder.path;
+  auto free_point = [&](const Point& p) { return P.index.in_free_space(p); };
+  std::size_t lap_count = 0;
+  auto run_lap = [&](std::vector<Point> pts, bool loop) {
+    // Closed laps start at the point nearest the robot; open ones at their nearer end.
+    if (!path.points.empty() && !pts.empty()) {
+      const Point here = path.points.back();
+      if (loop) {
+        std::size_t best = 0;
+        double bd2 = std::numeric_limits<double>::infinity();
+        for (std::size_t i = 0; i < pts.size(); ++i)
+          if (const double d = gap_between(pts[i], here); d < bd2) bd2 = d, best = i;
+        std::rotate(pts.begin(), pts.begin() + static_cast<std::ptrdiff_t>(best), pts.end());
+      } else if (gap_between(pts.back(), here) < gap_between(pts.front(), here)) {
+        std::reverse(pts.begin(), pts.end());
+      }
+    }
+    if (loop && !pts.empty()) pts.push_back(pts.front());
+    bool first_point = true;
+    for (const Point& p : pts) {
+      if (!free_point(p)) continue;
+      builder.go(p, first_point ? Move::Transit : Move::Lap);
+      first_point = false;
+    }
+    if (!first_point) ++lap_count;
+  };
+  for (const std::uint32_t k : order) {
+    for (Lap& lap : laps[k]) run_lap(std::move(lap.pts), true);
+    // axis pieces, nearest first
+    auto& rest = axis[k];
+    while (!rest.empty()) {
+      std::size_t best = 0;
+      double bd2 = std::numeric_limits<double>::infinity();
+      const Point here = path.points.empty() ? rest.front().pts.front() : path.points.back();
+      for (std::size_t i = 0; i < rest.size(); ++i)
+        for (const Point* q : {&rest[i].pts.front(), &rest[i].pts.back()})
+          if (const double d = gap_between(*q, here); d < bd2) bd2 = d, best = i;
+      run_lap(std::move(rest[best].pts), false);
+      rest.erase(rest.begin() + static_cast<std::ptrdiff_t>(best));
+    }
+  }
+  if (path.points.empty()) throw InputError("coverage: no lap fits in the free space at this width");
+
+  CoverageReport rep;
+  finish_path(P, std::move(path), rep);
+  rep.rounding_detours = builder.detours;
+  rep.laps = lap_count;
+  rep.cells = n;
+  rep.critical_points = bd.num_nodes();
+  rep.cell_order = order;
+  rep.sweeps.assign(order.size(), 0);
+  return rep;
+}
+
+}  // namespace preimage::decompose::detail
