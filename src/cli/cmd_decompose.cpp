@@ -137,6 +137,52 @@ void run_morse(const scene::Scene& s, decompose::SliceFamily family, const std::
   if (!geojson.empty()) std::cout << "wrote " << geojson << "\n";
 }
 
+void run_brushfire(const scene::Scene& s, bool as_json, const std::string& svg, const std::string& geojson) {
+  const auto& env = s.require_environment();
+  const decompose::BrushfireDecomposition b(env);
+  const auto box = env.bbox();
+  const double sag = 1e-4 * std::max(box.xmax() - box.xmin(), box.ymax() - box.ymin());
+  if (!svg.empty()) {
+    render::SvgCanvas c(render::scene_box(s));
+    render::draw_scene(c, s);
+    decompose::draw_brushfire(c, b);
+    c.save(svg);
+  }
+  if (!geojson.empty()) {
+    scene::GeoJsonWriter w;
+    w.environment(env, {{"kind", "environment"}});
+    for (std::uint32_t k = 0; k < b.num_bands(); ++k) w.polygon({b.band_polygon(k, sag)}, {{"kind", "band"}, {"method", "brushfire"}, {"cell", b.band_cell(k)}});
+    w.save(geojson);
+  }
+  const auto adj = b.adjacency();
+  std::size_t saddles = 0;
+  for (const auto& k : b.critical_points()) saddles += k.kind == decompose::BrushfireCriticalPoint::Kind::Saddle;
+  if (as_json) {
+    json cells = json::array(), crit = json::array(), nodes = json::array();
+    auto node_json = [](std::uint32_t n) { return n == decompose::BrushfireCell::kNone ? json(nullptr) : json(n); };
+    for (std::size_t i = 0; i < b.cells().size(); ++i) {
+      const auto& c = b.cells()[i];
+      json cell{{"id", i}, {"area", c.area}, {"lo", c.lo}, {"hi", c.hi}, {"lower", node_json(c.lower)}, {"upper", node_json(c.upper)}, {"adjacent", adj[i]}};
+      if (c.obstacle != decompose::BrushfireCell::kNone) cell["obstacle"] = c.obstacle;
+      cells.push_back(cell);
+    }
+    for (const auto& k : b.critical_points())
+      crit.push_back({{"point", {k.p.x(), k.p.y()}}, {"kind", k.kind == decompose::BrushfireCriticalPoint::Kind::Saddle ? "saddle" : "maximum"},
+                      {"level", k.level}, {"rising", k.rising}, {"node", k.node}});
+    for (const auto& n : b.nodes()) nodes.push_back({{"level", n.level}, {"critical_points", n.critical_points}});
+    print_json({{"method", "brushfire"}, {"resolution", b.gvd().resolution()}, {"free_area", b.free_area()}, {"cells", cells},
+                {"critical_points", crit}, {"critical_slices", nodes}, {"medial_axis_edges", b.gvd().medial_edges().size()},
+                {"gvd_edges", b.gvd().edges().size()}, {"reeb_graph", {{"nodes", b.num_nodes()}, {"edges", b.cells().size()}}}});
+    return;
+  }
+  std::cout << "brushfire decomposition: " << b.cells().size() << " cells, " << saddles << " saddles and " << b.critical_points().size() - saddles
+            << " maxima of D in " << b.num_nodes() << " critical slices (Reeb graph nodes); medial axis of " << b.gvd().medial_edges().size()
+            << " edges (" << b.gvd().edges().size() << " of them the GVD between obstacles), grid " << geometry::format_number(b.gvd().resolution())
+            << "\n";
+  if (!svg.empty()) std::cout << "wrote " << svg << "\n";
+  if (!geojson.empty()) std::cout << "wrote " << geojson << "\n";
+}
+
 // Wave-front decomposition (6.2.3, Fig. 6.18), its base so far: the shortest path map from
 // --start. Vertex distances, roots and the tangency extensions are computed (see
 // geometry/shortest_path_map.hpp); the SVG's region colours and wave fronts are sampled on a
@@ -268,6 +314,10 @@ void run_decompose(const std::string& path, const std::string& method, double an
     return run_morse(s, *family, centre, as_json, svg, geojson);
   }
   if (!centre.empty()) throw InputError("--center: only the circular, spike and squarel decompositions have a centre");
+  if (method == "brushfire") {
+    if (angle != 0) throw InputError("--angle: the brushfire decomposition has no sweep direction");
+    return run_brushfire(s, as_json, svg, geojson);
+  }
   if (method == "boustrophedon") return run_boustrophedon(s, angle, as_json, svg, geojson);
   if (angle != 0) throw InputError("--angle: the trapezoidal decomposition sweeps along x (use --method boustrophedon)");
   const auto& env = s.require_environment();
@@ -482,6 +532,7 @@ void add_decompose_commands(CLI::App& app) {
     auto* cmd = app.add_subcommand("decompose", "Exact cell decomposition of the free space, with its adjacency graph");
     set_examples(cmd, {"preimage decompose examples/gallery.json --svg cells.svg", "preimage decompose examples/gallery.json --method boustrophedon --angle 30 --json",
                        "preimage decompose examples/gallery.json --method circular --center 6.1,4.05 --svg circular.svg",
+                       "preimage decompose examples/gallery.json --method brushfire --svg brushfire.svg",
                        "preimage decompose examples/gallery.json --method wavefront --start 0.5,7.5 --svg wavefront.svg"});
     auto path = std::make_shared<std::string>();
     auto method = std::make_shared<std::string>("trapezoidal");
@@ -490,8 +541,8 @@ void add_decompose_commands(CLI::App& app) {
     auto svg = std::make_shared<std::string>();
     cmd->add_option("scene", *path, "Scene JSON file")->required();
     auto centre = std::make_shared<std::string>();
-    cmd->add_option("--method", *method, "Decomposition method: trapezoidal, boustrophedon, a variable slice of 6.2.3 (circular, spike, squarel), or wavefront (shortest path map from --start)")
-        ->check(CLI::IsMember({"trapezoidal", "boustrophedon", "circular", "spike", "squarel", "wavefront"}))
+    cmd->add_option("--method", *method, "Decomposition method: trapezoidal, boustrophedon, a variable slice of 6.2.3 (circular, spike, squarel), brushfire (distance to the obstacles), or wavefront (shortest path map from --start)")
+        ->check(CLI::IsMember({"trapezoidal", "boustrophedon", "circular", "spike", "squarel", "brushfire", "wavefront"}))
         ->capture_default_str();
     cmd->add_option("--angle", *angle, "Sweep direction in degrees, counter-clockwise from +x (boustrophedon)");
     cmd->add_option("--center", *centre, "Centre X,Y of the circles, rays or diamonds (circular, spike, squarel; default: the middle of the bounding box)");

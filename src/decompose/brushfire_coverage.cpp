@@ -49,7 +49,11 @@ CoverageReport plan_brushfire(const Planning& P) {
   auto needs_axis = [&](double d) {
     if (d < w / 8) return false;
     if (d <= w / 2) return true;
-    return std::fmod(d - w / 2, w) > w / 2;
+    // height of the flow line above its last lap; a lap exactly at D(m) does not exist (the
+    // slice at the axis' own level is the axis), so a remainder of 0 is a whole w. The
+    // margins keep rasterised coverage from missing the laps' outer edges.
+    const double rem = std::fmod(d - w / 2, w);
+    return rem < w / 20 || rem > 0.4 * w;
   };
   std::vector<std::vector<Lap>> axis(n);
   for (const auto& piece : bd.axis_pieces()) {

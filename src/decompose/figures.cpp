@@ -42,6 +42,29 @@ void draw_morse(render::SvgCanvas& c, const MorseDecomposition& m) {
   c.legend(std::string("centre of the ") + std::string(to_string(m.family())) + " slices", centre);
 }
 
+void draw_brushfire(render::SvgCanvas& c, const BrushfireDecomposition& b) {
+  const auto box = b.environment().bbox();
+  const double sag = 1e-3 * std::max(box.xmax() - box.xmin(), box.ymax() - box.ymin());
+  for (std::uint32_t k = 0; k < b.num_bands(); ++k) {
+    const std::uint32_t cell = b.band_cell(k);
+    c.polygon(b.band_polygon(k, sag), render::Style{kCellFills[cell % 5], kCellFills[cell % 5], 0.3, 0.85, ""},
+              "cell " + std::to_string(cell) + " (D from " + geometry::format_number(b.cells()[cell].lo) + " to " +
+                  geometry::format_number(b.cells()[cell].hi) + ")");
+  }
+  const render::Style axis{"none", "#9aa0a6", 0.6, 1.0, ""}, gvd{"none", "#1a73e8", 1.4, 0.9, ""};
+  for (const auto& e : b.gvd().medial_edges()) c.polyline(e.polyline, axis, "medial axis");
+  for (const auto& e : b.gvd().edges()) c.polyline(e.polyline, gvd, "GVD");
+  c.legend("medial axis (fronts of one obstacle meet)", axis);
+  c.legend("generalized Voronoi diagram (fronts of two obstacles meet)", gvd);
+  const render::Style saddle{"#d93025", "#d93025", 1, 1, ""}, maximum{"white", "#d93025", 1.5, 1, ""};
+  for (const auto& k : b.critical_points())
+    c.point(k.p, 3, k.kind == BrushfireCriticalPoint::Kind::Saddle ? saddle : maximum,
+            std::string(k.kind == BrushfireCriticalPoint::Kind::Saddle ? "saddle" : "maximum") + " of D = " + geometry::format_number(k.level) +
+                ", node " + std::to_string(k.node));
+  c.legend("saddles of D (fronts collide)", saddle);
+  c.legend("maxima of D (a front vanishes)", maximum);
+}
+
 void draw_decomposition(render::SvgCanvas& c, const TrapezoidalDecomposition& d, const TrapezoidalPlanner* graph) {
   for (std::size_t i = 0; i < d.cells().size(); ++i) {
     std::vector<Point> pts;

@@ -218,5 +218,18 @@ cli_test(cover_squarel_houseexpo 0 "covered (99\\.[0-9]+|100)% of the configurat
 cli_test(decompose_circular_houseexpo 0 "circular decomposition around" - decompose ${OUT}/house0000.json --method circular)
 set_tests_properties(cli.cover_squarel_houseexpo PROPERTIES DEPENDS cli.import_houseexpo_1451)
 set_tests_properties(cli.decompose_circular_houseexpo PROPERTIES DEPENDS cli.import_houseexpo_0000)
+# Brushfire (6.2.3): the distance to the obstacles, its cells and the offset pattern.
+cli_test(decompose_brushfire 0 "brushfire decomposition: 15 cells, 8 saddles and 6 maxima of D in 12 critical slices" ${OUT}/brushfire.svg
+         decompose ${EXAMPLES}/gallery.json --method brushfire --svg ${OUT}/brushfire.svg)
+cli_test(decompose_brushfire_json 0 "\"method\":\"brushfire\".*\"reeb_graph\"" - decompose ${EXAMPLES}/gallery.json --method brushfire --json)
+cli_test(decompose_brushfire_no_angle fail "--angle: the brushfire decomposition has no sweep direction" - decompose ${EXAMPLES}/gallery.json --method brushfire --angle 30)
+cli_test(decompose_brushfire_houseexpo 0 "brushfire decomposition: 19 cells" ${OUT}/brushfire1451.geojson
+         decompose ${OUT}/house1451.json --method brushfire --geojson ${OUT}/brushfire1451.geojson)
+cli_test(cover_brushfire_houseexpo 0 "covered (99\\.[0-9]+|100)% of the configuration space" - cover ${OUT}/house0000.json --pattern brushfire --width 0.3 --radius 0.15)
+cli_test(cover_brushfire_contacts 0 "covered (99\\.[0-9]+|100)% of the configuration space" - cover ${FIX}/contacts/checkerboard.json --pattern brushfire --width 0.2 --radius 0)
+cli_test(cover_brushfire_no_centre fail "--center: the brushfire pattern grows from the obstacles, it has no centre" -
+         cover ${EXAMPLES}/gallery.json --pattern brushfire --radius 0.2 --center 1,1)
+set_tests_properties(cli.decompose_brushfire_houseexpo PROPERTIES DEPENDS cli.import_houseexpo_1451)
+set_tests_properties(cli.cover_brushfire_houseexpo PROPERTIES DEPENDS cli.import_houseexpo_0000)
 cli_test(decompose_circular_contacts 0 "circular decomposition around \\(2.5, 0.5\\): 19 cells" - decompose ${FIX}/contacts/checkerboard.json --method circular --center 2.5,0.5)
 cli_test(cover_spiral_contacts 0 "covered (99\\.[0-9]+|100)% of the configuration space" - cover ${FIX}/contacts/checkerboard.json --pattern spiral --width 0.2 --radius 0 --center 2.5,0.5)

@@ -2,6 +2,7 @@
 // Figures of the decompose module, on the shared SVG canvas.
 #pragma once
 #include <preimage/decompose/boustrophedon.hpp>
+#include <preimage/decompose/brushfire.hpp>
 #include <preimage/decompose/coverage.hpp>
 #include <preimage/decompose/morse.hpp>
 #include <preimage/decompose/planner.hpp>
@@ -21,6 +22,10 @@ void draw_boustrophedon(render::SvgCanvas& canvas, const BoustrophedonDecomposit
 /// Morse cells (light fills), the critical slice intervals as true circle arcs, rays or
 /// diamond pieces, critical points (filled: split/merge, open: birth/death) and the centre.
 void draw_morse(render::SvgCanvas& canvas, const MorseDecomposition& m);
+
+/// Brushfire cells (each band filled with its cell's colour), the medial axis (grey), the
+/// GVD between different obstacles (blue), saddles (filled) and maxima (open) of D.
+void draw_brushfire(render::SvgCanvas& canvas, const BrushfireDecomposition& b);
 
 /// A coverage path: laps, boundary following and transits in three styles, arrows along
 /// it, start and end markers.
