@@ -453,6 +453,7 @@ void run_cover(const CoverArgs& a) {
       throw InputError("--order/--transit: the " + a.pattern + " pattern walks its cells depth-first with shortest transits");
     if (!a.centre.empty()) {
       if (o.pattern == decompose::Pattern::Brushfire) throw InputError("--center: the brushfire pattern grows from the obstacles, it has no centre");
+      if (o.pattern == decompose::Pattern::Wavefront) throw InputError("--center: the wavefront pattern grows from --start (the tether's anchor)");
       o.centre = parse_point(a.centre, "--center");
     }
   } else if (!a.centre.empty()) {
@@ -591,8 +592,8 @@ void add_decompose_commands(CLI::App& app) {
         ->check(CLI::IsMember({"optimised", "dfs"}))->capture_default_str();
     cmd->add_option("--transit", a->transit, "shortest (visibility graph) or decomposition (trapezoid midpoints and centroids)")
         ->check(CLI::IsMember({"shortest", "decomposition"}))->capture_default_str();
-    cmd->add_option("--pattern", a->pattern, "Laps along straight slices (boustrophedon), around --center (6.2.3: spiral, concentric, spike, squarel), or at fixed distances from the obstacles (brushfire)")
-        ->check(CLI::IsMember({"boustrophedon", "spiral", "concentric", "spike", "squarel", "brushfire"}))->capture_default_str();
+    cmd->add_option("--pattern", a->pattern, "Laps along straight slices (boustrophedon), around --center (6.2.3: spiral, concentric, spike, squarel), at fixed distances from the obstacles (brushfire), or at fixed tether lengths from --start (wavefront)")
+        ->check(CLI::IsMember({"boustrophedon", "spiral", "concentric", "spike", "squarel", "brushfire", "wavefront"}))->capture_default_str();
     cmd->add_option("--center", a->centre, "Centre X,Y of the spiral, concentric, spike or squarel pattern (default: the middle of the bounding box)");
     add_json_flag(cmd, a->json, "Machine-readable output on stdout");
     cmd->add_option("--svg", a->svg, "Draw the configuration space and the coverage path to this SVG file");

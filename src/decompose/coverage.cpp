@@ -302,6 +302,7 @@ CoverageReport plan_coverage(const Environment& env, const CoverageOptions& o) {
 
   CoverageReport rep = o.pattern == Pattern::Boustrophedon ? plan_boustrophedon(P)
                        : o.pattern == Pattern::Brushfire   ? detail::plan_brushfire(P)
+                       : o.pattern == Pattern::Wavefront   ? detail::plan_wavefront(P)
                                                            : detail::plan_pattern(P);
   rep.width = w, rep.robot_radius = r;
   rep.target_area = E.area();

@@ -48,4 +48,8 @@ CoverageReport plan_pattern(const Planning& P);
 /// and the medial axis between them, cell by cell (brushfire_coverage.cpp).
 CoverageReport plan_brushfire(const Planning& P);
 
+/// The tethered robot's pattern of 6.2.3 (Fig. 6.18): fronts of the geodesic distance from
+/// the start, w apart (wavefront_coverage.cpp).
+CoverageReport plan_wavefront(const Planning& P);
+
 }  // namespace preimage::decompose::detail

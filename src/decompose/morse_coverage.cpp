@@ -34,12 +34,13 @@ std::string_view to_string(Pattern p) {
     case Pattern::Spike: return "spike";
     case Pattern::Squarel: return "squarel";
     case Pattern::Brushfire: return "brushfire";
+    case Pattern::Wavefront: return "wavefront";
   }
   return "?";
 }
 
 std::optional<Pattern> parse_pattern(std::string_view s) {
-  for (const Pattern p : {Pattern::Boustrophedon, Pattern::Spiral, Pattern::Concentric, Pattern::Spike, Pattern::Squarel, Pattern::Brushfire})
+  for (const Pattern p : {Pattern::Boustrophedon, Pattern::Spiral, Pattern::Concentric, Pattern::Spike, Pattern::Squarel, Pattern::Brushfire, Pattern::Wavefront})
     if (to_string(p) == s) return p;
   return std::nullopt;
 }

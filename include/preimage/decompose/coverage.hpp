@@ -34,8 +34,9 @@ enum class Transit { Shortest, Decomposition };  // visibility-graph shortest pa
 /// or a spiral in annular cells), rays from the centre (spike: denser near it), or diamonds
 /// (squarel, a spiral in annular cells).
 /// Or the distance-function patterns: offset curves from the obstacles and the medial axis
-/// between them (brushfire).
-enum class Pattern : std::uint8_t { Boustrophedon, Spiral, Concentric, Spike, Squarel, Brushfire };
+/// between them (brushfire), or fronts of the geodesic distance from the start for a
+/// tethered robot (wavefront).
+enum class Pattern : std::uint8_t { Boustrophedon, Spiral, Concentric, Spike, Squarel, Brushfire, Wavefront };
 std::string_view to_string(Pattern p);
 std::optional<Pattern> parse_pattern(std::string_view s);
 

@@ -1,0 +1,157 @@
+// SPDX-License-Identifier: Apache-2.0
+// Coverage for a tethered robot (6.2.3, Fig. 6.18): the tether is fed out by the tool width
+// and the robot sweeps each curve of constant tether length — a wave front h = λ of the
+// geodesic distance from the anchor (geometry::ShortestPathMap on the configuration space).
+//
+// Fronts at λ = w/2 + k w are traced by marching squares over exact-root samples of h
+// (spacing w/4; a drawing of where to drive, decided by nothing); the levels run outwards
+// (the tether only lengthens), each level's arcs nearest first, and every segment is
+// certified like every other pattern's (a straight move where it is free and r from the
+// walls, else the shortest path there).
+#include "coverage_internal.hpp"
+
+#include <preimage/error.hpp>
+#include <preimage/geometry/shortest_path_map.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace preimage::decompose::detail {
+
+namespace {
+
+double tether_gap(const Point& a, const Point& b) { return std::hypot(a.x() - b.x(), a.y() - b.y()); }
+
+// Contours of h = lam on the sample grid, as polylines (marching squares; the ambiguous
+// saddle cells split by the cell's mean).
+std::vector<std::vector<Point>> front_polylines(const geometry::ShortestPathMap::Samples& S, double lam) {
+  const std::size_t C = S.columns, R = S.rows;
+  auto value = [&](std::size_t i, std::size_t j) { return S.at(i, j).distance; };
+  // crossing ids: horizontal edge (i, j)-(i+1, j) -> 2 (j C + i), vertical (i, j)-(i, j+1) -> 2 (j C + i) + 1
+  std::map<std::size_t, Point> at;
+  std::map<std::size_t, std::vector<std::size_t>> links;
+  auto crossing = [&](std::size_t i0, std::size_t j0, std::size_t i1, std::size_t j1) {
+    const std::size_t id = 2 * (j0 * C + i0) + (j1 != j0 ? 1 : 0);
+    if (!at.count(id)) {
+      const double a = value(i0, j0), b = value(i1, j1), t = std::clamp((lam - a) / (b - a), 0.0, 1.0);
+      const Point p = S.point(i0, j0), q = S.point(i1, j1);
+      at.emplace(id, Point(p.x() + t * (q.x() - p.x()), p.y() + t * (q.y() - p.y())));
+    }
+    return id;
+  };
+  for (std::size_t j = 0; j + 1 < R; ++j)
+    for (std::size_t i = 0; i + 1 < C; ++i) {
+      const double v[4] = {value(i, j), value(i + 1, j), value(i + 1, j + 1), value(i, j + 1)};
+      if (!(std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]) && std::isfinite(v[3]))) continue;
+      // corners counter-clockwise from (i, j); edges 0: bottom, 1: right, 2: top, 3: left
+      const int mask = (v[0] >= lam) | (v[1] >= lam) << 1 | (v[2] >= lam) << 2 | (v[3] >= lam) << 3;
+      if (mask == 0 || mask == 15) continue;
+      auto edge = [&](int e) {
+        switch (e) {
+          case 0: return crossing(i, j, i + 1, j);
+          case 1: return crossing(i + 1, j, i + 1, j + 1);
+          case 2: return crossing(i, j + 1, i + 1, j + 1);
+          default: return crossing(i, j, i, j + 1);
+        }
+      };
+      auto link = [&](int e0, int e1) {
+        const std::size_t a = edge(e0), b = edge(e1);
+        links[a].push_back(b), links[b].push_back(a);
+      };
+      // edges crossed: between corners k and k+1 (edge k) where the sides differ
+      std::vector<int> crossed;
+      for (int k = 0; k < 4; ++k)
+        if (((mask >> k) & 1) != ((mask >> ((k + 1) % 4)) & 1)) crossed.push_back(k);
+      if (crossed.size() == 2) {
+        link(crossed[0], crossed[1]);
+      } else {
+        // a saddle cell: pair each high corner with its neighbours unless the mean is high
+        const bool high_centre = (v[0] + v[1] + v[2] + v[3]) / 4 >= lam;
+        const bool c0_high = mask & 1;
+        if (c0_high != high_centre) link(3, 0), link(1, 2);
+        else link(0, 1), link(2, 3);
+      }
+    }
+  std::vector<std::vector<Point>> out;
+  std::map<std::size_t, char> used;
+  auto walk = [&](std::size_t start) {
+    std::vector<Point> line{at.at(start)};
+    used[start] = 1;
+    std::size_t cur = start;
+    for (;;) {
+      std::size_t next = SIZE_MAX;
+      for (const std::size_t n : links[cur])
+        if (!used[n]) next = n;
+      if (next == SIZE_MAX) break;
+      used[next] = 1;
+      line.push_back(at.at(next));
+      cur = next;
+    }
+    return line;
+  };
+  for (const auto& [id, nb] : links)  // open lines first, from an end
+    if (nb.size() == 1 && !used[id]) out.push_back(walk(id));
+  for (const auto& [id, nb] : links)  // then loops
+    if (!used[id]) {
+      auto line = walk(id);
+      line.push_back(line.front());
+      out.push_back(std::move(line));
+    }
+  return out;
+}
+
+}  // namespace
+
+CoverageReport plan_wavefront(const Planning& P) {
+  if (!P.start) throw InputError("coverage: the wavefront pattern needs a start (the tether's anchor): --start X,Y");
+  const geometry::ShortestPathMap spm(P.graph, *P.start);
+  const double w = P.w;
+  const auto box = P.E.bbox();
+  const auto columns = static_cast<std::size_t>(std::ceil((box.xmax() - box.xmin()) / (w / 4))) + 1;
+  if (columns > 4000) throw InputError("coverage: the wavefront pattern samples h every w/4; this width needs more than 4000 columns");
+  const auto S = spm.sample(columns);
+  double top = 0;
+  for (const auto& q : S.values)
+    if (std::isfinite(q.distance)) top = std::max(top, q.distance);
+
+  Polyline start_path;
+  if (P.o.start) start_path.append(*P.o.start, Move::Transit);
+  if (start_path.points.empty() || *P.start != start_path.points.back()) start_path.append(*P.start, Move::Transit);
+  PathBuilder builder{P, std::move(start_path), 0};
+  Polyline& path = builder.path;
+  std::size_t laps = 0;
+  for (double lam = w / 2; lam < top; lam += w) {
+    auto arcs = front_polylines(S, lam);
+    while (!arcs.empty()) {
+      const Point here = path.points.back();
+      std::size_t best = 0;
+      double bd = std::numeric_limits<double>::infinity();
+      for (std::size_t i = 0; i < arcs.size(); ++i)
+        for (const Point* q : {&arcs[i].front(), &arcs[i].back()})
+          if (const double d = tether_gap(*q, here); d < bd) bd = d, best = i;
+      auto arc = std::move(arcs[best]);
+      arcs.erase(arcs.begin() + static_cast<std::ptrdiff_t>(best));
+      if (tether_gap(arc.back(), here) < tether_gap(arc.front(), here)) std::reverse(arc.begin(), arc.end());
+      bool first = true;
+      for (const Point& p : arc) {
+        if (!P.index.in_free_space(p)) continue;
+        builder.go(p, first ? Move::Transit : Move::Lap);
+        first = false;
+      }
+      laps += !first;
+    }
+  }
+  if (laps == 0) throw InputError("coverage: no wave front fits in the free space at this width");
+
+  CoverageReport rep;
+  finish_path(P, std::move(path), rep);
+  rep.rounding_detours = builder.detours;
+  rep.laps = laps;
+  rep.cells = spm.num_reached() + 1;  // the regions of the shortest path map (roots)
+  rep.critical_points = spm.extensions().size() + spm.collisions().size();
+  return rep;
+}
+
+}  // namespace preimage::decompose::detail
