@@ -11,8 +11,6 @@
 #include "online_robot.hpp"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -136,10 +134,6 @@ class OnlinePlanner {
   // is sensed: the sign of the normal estimate across the sweep flips.
   FollowResult follow(Side s, int delta, double stop_x, const Point* hint, bool from_critical = false) {
     FollowResult out = follow_(s, delta, stop_x, hint, from_critical);
-    if (std::getenv("ONLINE_DEBUG"))
-      std::fprintf(stderr, "follow %s d=%d stop=%g from %s -> %s status %d kind %s matched %d\n", s == Side::Floor ? "floor" : "ceil", delta, stop_x,
-                   geometry::format_point(out.stands.front().p).c_str(), geometry::format_point(out.stands.back().p).c_str(), int(out.status),
-                   out.cp ? std::string(to_string(out.cp->kind)).c_str() : "-", int(out.matched));
     return out;
   }
   // From a critical point (`from_critical`) the first reading is ignored: the normal is
@@ -226,9 +220,7 @@ class OnlinePlanner {
 
   bool lap(bool up) {
     tick();
-    const Point a = R_.odometry();
     if (!R_.lap(up)) return false;
-    if (std::getenv("ONLINE_DEBUG")) std::fprintf(stderr, "lap %s -> %s\n", geometry::format_point(a).c_str(), geometry::format_point(R_.odometry()).c_str());
     ++laps_;
     return true;
   }
@@ -456,7 +448,6 @@ class OnlinePlanner {
       transit(pred, (ps == PortSide::Up || ps == PortSide::Both) ? anchors_[bn].second.p : anchors_[bn].first.p);
       const std::size_t begin = R_.path().size() - 1;
       const std::size_t laps0 = laps_;
-      if (std::getenv("ONLINE_DEBUG")) std::fprintf(stderr, "cover from node %u (%s) port %d\n", bn, std::string(to_string(nodes_[bn].kind)).c_str(), bp);
       const Closing c = cover_cell(bn, bp);
       const std::uint32_t to = node_for(c.cp);
       const int tp = port_index(nodes_[to].kind, !right, c.ps);
@@ -584,13 +575,6 @@ OnlineReport plan_online_coverage(const Environment& env, const OnlineOptions& o
   std::optional<geometry::VisibilityIndex> sweep_index;
   if (std::fmod(o.angle_deg, 90.0) != 0) sweep_index.emplace(Q);
   const auto& sp = robot.path();
-  if (std::getenv("ONLINE_DEBUG"))
-    for (std::size_t i = 0; i + 1 < sp.size(); ++i)
-      if (!geometry::visible(Q, sp[i].p, sp[i + 1].p)) {
-        std::fprintf(stderr, "bad segment %zu/%zu move %d: %s v%u e%u -> %s v%u e%u\n", i, sp.size(), int(sp[i + 1].move), geometry::format_point(sp[i].p).c_str(), sp[i].vertex, sp[i].edge, geometry::format_point(sp[i + 1].p).c_str(), sp[i+1].vertex, sp[i+1].edge);
-        for (std::size_t k = i > 3 ? i - 3 : 0; k < std::min(sp.size(), i + 3); ++k) std::fprintf(stderr, "  %zu %s move %d v%u e%u\n", k, geometry::format_point(sp[k].p).c_str(), int(sp[k].move), sp[k].vertex, sp[k].edge);
-        break;
-      }
   std::vector<std::size_t> where(sp.size(), 0);
   detail::Polyline path;
   for (std::size_t i = 0; i < sp.size(); ++i) {
