@@ -393,7 +393,7 @@ void run_cover_online(const CoverArgs& a, const scene::Scene& s, double radius, 
   const double tol = decompose::online_tolerance(rep);
   const auto cmp = decompose::compare_with_offline(env, rep, tol);
   decompose::CoverageReport cr;
-  cr.path = rep.path, cr.moves = rep.moves, cr.width = rep.width, cr.robot_radius = rep.robot_radius;
+  cr.path = rep.path, cr.moves = rep.moves, cr.width = rep.width, cr.robot_radius = rep.robot_radius, cr.length = rep.length;
   const auto m = decompose::measure_coverage(env, cr);
   if (!a.svg.empty()) {
     render::SvgCanvas c(render::scene_box(s));

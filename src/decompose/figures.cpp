@@ -138,7 +138,7 @@ void draw_online_coverage(render::SvgCanvas& c, const OnlineReport& rep, std::si
     if (e.path_end >= upto) continue;
     // Through the middle of the cell's sweep.
     const Point mid = rep.path[(e.path_begin + e.path_end) / 2];
-    c.path({rep.nodes[e.from].at, mid, rep.nodes[e.to].at}, edge, "cell " + std::to_string(e.from) + " - " + std::to_string(e.to), 0);
+    c.polyline({rep.nodes[e.from].at, mid, rep.nodes[e.to].at}, edge, "cell " + std::to_string(e.from) + " - " + std::to_string(e.to));
   }
   const double len = 2.5 * rep.width;
   for (std::size_t i = 0; i < rep.nodes.size(); ++i) {
