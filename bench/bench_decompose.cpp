@@ -6,12 +6,14 @@
 #include <preimage/geometry/random_point.hpp>
 #include <preimage/decompose/coverage.hpp>
 #include <preimage/decompose/morse.hpp>
+#include <preimage/decompose/online_coverage.hpp>
 #include <preimage/geometry/generators.hpp>
 
 #include "ratio_reporter.hpp"
 #include "support/cgal_oracle.hpp"
 
 
+#include <chrono>
 #include <map>
 #include <memory>
 #include <random>
@@ -166,5 +168,44 @@ BENCHMARK(decomposition_reference)->Name("cgal-vertical-decomposition/reference/
 BENCHMARK(trapezoidal_preimage)->Name("trapezoidal/preimage")->Arg(10000)->Arg(100000)->ArgName("n")->Unit(benchmark::kMillisecond);
 BENCHMARK(trapezoidal_reference)->Name("trapezoidal/reference")->Arg(10000)->Arg(100000)->ArgName("n")->Unit(benchmark::kMillisecond);
 BENCHMARK(point_location)->Name("cell-location")->Arg(100000)->ArgName("n");
+
+// Online coverage (6.2.4): the robot that does not know the map beside the offline
+// boustrophedon coverage of the same configuration space at the same angle, in the same run.
+// Counters: the price of not knowing the map (path length ratio online / offline), whether
+// the robot finished, and the critical points it sensed against the offline count. Two
+// environments: the gallery (robot radius 0.2, 17 degrees) and a 10^3-vertex random
+// environment with 20 holes (radius 1/200 of its size).
+void online_coverage(benchmark::State& state, int which) {
+  static const geometry::Environment random_env = geometry::generators::random_environment(1000, 20, 1);
+  static const geometry::Environment gallery = geometry::Environment::make(
+      {{0, 0}, {6, 0}, {12, 0}, {12, 4}, {12, 8}, {6, 8}, {0, 8}, {0, 4}},
+      {{{2, 2}, {3, 2}, {3, 3}, {2, 3}}, {{8, 5}, {9.5, 5}, {9.5, 6.5}, {8, 6.5}}, {{5.8, 2.5}, {6.2, 2.5}, {6.2, 7}, {5.8, 7}}});
+  const geometry::Environment& env = which == 0 ? gallery : random_env;
+  const auto b = env.bbox();
+  const double r = which == 0 ? 0.2 : std::max(b.xmax() - b.xmin(), b.ymax() - b.ymin()) / 200, angle = which == 0 ? 17.0 : 0.0;
+  decompose::OnlineReport rep;
+  for (auto _ : state) {
+    decompose::OnlineOptions o;
+    o.robot_radius = r, o.angle_deg = angle;
+    rep = decompose::plan_online_coverage(env, o);
+    benchmark::DoNotOptimize(rep);
+  }
+  decompose::CoverageOptions co;
+  co.robot_radius = r, co.angle_deg = angle;
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto off = decompose::plan_coverage(env, co);
+  const double offline_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  const auto cmp = decompose::compare_with_offline(env, rep, decompose::online_tolerance(rep));
+  state.counters["complete"] = rep.complete ? 1 : 0;
+  state.counters["isomorphic"] = cmp.isomorphic ? 1 : 0;
+  state.counters["sensed"] = static_cast<double>(rep.nodes.size());
+  state.counters["offline_cps"] = static_cast<double>(cmp.offline_nodes);
+  state.counters["length"] = rep.length;
+  state.counters["offline_length"] = off.length;
+  state.counters["length_ratio"] = rep.length / off.length;
+  state.counters["offline_ms"] = offline_ms;
+}
+BENCHMARK_CAPTURE(online_coverage, gallery, 0)->Name("online-coverage/preimage/gallery")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(online_coverage, random1000, 1)->Name("online-coverage/preimage/random-1000-20holes")->Unit(benchmark::kMillisecond);
 
 int main(int argc, char** argv) { return preimage::bench::run_with_ratios(argc, argv); }

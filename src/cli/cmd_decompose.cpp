@@ -5,6 +5,7 @@
 #include <preimage/scene/geojson.hpp>
 
 #include <preimage/decompose/coverage.hpp>
+#include <preimage/decompose/online_coverage.hpp>
 #include <preimage/decompose/planner.hpp>
 #include <preimage/geometry/configuration_space.hpp>
 #include <preimage/geometry/coordinates.hpp>
@@ -420,7 +421,78 @@ struct CoverArgs {
   std::string path, start, angle = "auto", order = "optimised", transit = "shortest", svg, geojson, pattern = "boustrophedon", centre;
   std::optional<double> width, radius;
   bool json = false;
+  bool online = false, raster = false;
+  std::size_t sensors = 32;
+  double range = 0, noise = 0;
+  std::uint64_t seed = 1;
 };
+
+// cover --online: the robot does not know the map (6.2.4).
+void run_cover_online(const CoverArgs& a, const scene::Scene& s, double radius, double angle) {
+  if (a.pattern != "boustrophedon" || a.order != "optimised" || a.transit != "shortest" || !a.centre.empty())
+    throw InputError("--online: the robot sweeps boustrophedon cells as it finds them; --pattern, --order, --transit and --center do not apply");
+  if (!a.geojson.empty()) throw InputError("--online: --geojson is not supported; use --json or --svg");
+  const auto& env = s.require_environment();
+  decompose::OnlineOptions o;
+  o.robot_radius = radius;
+  o.width = a.width.value_or(0.0);
+  o.angle_deg = angle;
+  o.sensors = a.sensors, o.range = a.range, o.noise = a.noise, o.seed = a.seed, o.cycle = !a.raster;
+  o.start = s.start;
+  const auto rep = decompose::plan_online_coverage(env, o);
+  const double tol = decompose::online_tolerance(rep);
+  const auto cmp = decompose::compare_with_offline(env, rep, tol);
+  decompose::CoverageReport cr;
+  cr.path = rep.path, cr.moves = rep.moves, cr.width = rep.width, cr.robot_radius = rep.robot_radius, cr.length = rep.length;
+  const auto m = decompose::measure_coverage(env, cr);
+  if (!a.svg.empty()) {
+    render::SvgCanvas c(render::scene_box(s));
+    render::draw_scene(c, s);
+    render::draw_configuration_space(c, geometry::ConfigurationSpace(env, rep.robot_radius));
+    decompose::draw_online_coverage(c, rep, rep.path.size());
+    c.save(a.svg);
+  }
+  if (a.json) {
+    json moves = json::array(), nodes = json::array(), edges = json::array();
+    for (auto mv : rep.moves) moves.push_back(mv == decompose::Move::Lap ? "lap" : mv == decompose::Move::Follow ? "follow" : "transit");
+    for (std::size_t i = 0; i < rep.nodes.size(); ++i) {
+      const auto& n = rep.nodes[i];
+      nodes.push_back({{"id", i}, {"kind", std::string(decompose::to_string(n.kind))}, {"at", {n.at.x(), n.at.y()}},
+                       {"sweep_x", n.x}, {"sweep_y", {n.y_low, n.y_high}}, {"sensed_at", n.sensed_at}, {"ports", n.ports},
+                       {"offline_slice", cmp.offline_of.empty() ? -1 : cmp.offline_of[i]}});
+    }
+    for (const auto& e : rep.edges)
+      edges.push_back({{"from", e.from}, {"to", e.to}, {"laps", e.laps}, {"path", {e.path_begin, e.path_end}}});
+    print_json({{"online", true}, {"cycle", !a.raster}, {"complete", rep.complete}, {"inconsistency", rep.inconsistency},
+                {"width", rep.width}, {"robot_radius", rep.robot_radius}, {"angle", rep.angle},
+                {"sensors", rep.sensors}, {"range", rep.range}, {"noise", rep.noise}, {"resolution_rad", rep.resolution},
+                {"tolerance", tol}, {"length", rep.length}, {"transit_length", rep.transit_length}, {"laps", rep.laps},
+                {"readings", rep.readings}, {"steps", rep.steps},
+                {"reeb_graph", {{"nodes", nodes}, {"edges", edges}, {"sensing_order", rep.sensing_order}}},
+                {"offline", {{"isomorphic", cmp.isomorphic}, {"critical_slices", cmp.offline_nodes}, {"cells", cmp.offline_edges},
+                             {"max_offset", cmp.max_offset}, {"detail", cmp.detail}}},
+                {"metrics", {{"covered_fraction", m.covered_fraction}, {"overlap", m.overlap}, {"efficiency", m.efficiency}, {"samples", m.samples}}},
+                {"target_area", rep.target_area}, {"path", points_json(rep.path)}, {"moves", moves}});
+    return;
+  }
+  std::cout << "online coverage (" << (a.raster ? "plain raster scan" : "cycle algorithm") << ") with width " << geometry::format_number(rep.width)
+            << ", robot radius " << geometry::format_number(rep.robot_radius) << ", sweep at " << geometry::format_number(rep.angle) << " degrees, "
+            << rep.sensors << " sensors (normal resolution " << geometry::format_number(rep.resolution * 180 / 3.141592653589793) << " degrees)";
+  if (rep.noise > 0) std::cout << ", noise " << geometry::format_number(rep.noise);
+  std::cout << "\n";
+  std::cout << (rep.complete ? "complete: every critical point has all its edges explored" : "NOT complete: " + rep.inconsistency) << "\n";
+  std::cout << "Reeb graph as built: " << rep.nodes.size() << " critical points, " << rep.edges.size() << " cells; sensed in the order";
+  for (auto k : rep.sensing_order) std::cout << " " << k;
+  std::cout << "\n";
+  for (std::size_t i = 0; i < rep.nodes.size(); ++i)
+    std::cout << "  " << i << ": " << decompose::to_string(rep.nodes[i].kind) << " at " << geometry::format_point(rep.nodes[i].at) << "\n";
+  for (const auto& e : rep.edges) std::cout << "  cell " << e.from << " - " << e.to << " (" << e.laps << " laps)\n";
+  std::cout << "offline boustrophedon Reeb graph: " << cmp.offline_nodes << " critical slices, " << cmp.offline_edges << " cells: "
+            << (cmp.isomorphic ? "isomorphic, critical points within " + geometry::format_number(cmp.max_offset) : "differs: " + cmp.detail) << "\n";
+  std::cout << "length " << geometry::format_number(rep.length) << " (transits " << geometry::format_number(rep.transit_length) << "), "
+            << rep.laps << " laps; covered " << geometry::format_number(std::round(m.covered_fraction * 10000) / 100) << "% of the configuration space\n";
+  if (!a.svg.empty()) std::cout << "wrote " << a.svg << "\n";
+}
 
 void run_cover(const CoverArgs& a) {
   scene::Scene s = scene::load_scene(a.path);
@@ -432,6 +504,7 @@ void run_cover(const CoverArgs& a) {
     throw InputError("--width: not given, and without a robot radius (--radius or the scene's robot.radius) it has no default of 2r");
   if (!a.start.empty()) s.start = parse_point(a.start, "--start");
   o.start = s.start;
+  if (a.online && a.angle == "auto") return run_cover_online(a, s, o.robot_radius, 0);
   if (a.angle != "auto") {
     std::size_t used = 0;
     double deg = 0;
@@ -444,6 +517,9 @@ void run_cover(const CoverArgs& a) {
       throw InputError("--angle: expected degrees or 'auto', got '" + a.angle + "'");
     o.angle_deg = deg;
   }
+  if (a.online) return run_cover_online(a, s, o.robot_radius, *o.angle_deg);
+  if (a.raster || a.sensors != 32 || a.range != 0 || a.noise != 0)
+    throw InputError("--sensors/--range/--noise/--raster: only with --online");
   o.order = a.order == "dfs" ? decompose::CellOrder::DepthFirst : decompose::CellOrder::Optimised;
   o.transit = a.transit == "decomposition" ? decompose::Transit::Decomposition : decompose::Transit::Shortest;
   o.pattern = *decompose::parse_pattern(a.pattern);
@@ -598,6 +674,12 @@ void add_decompose_commands(CLI::App& app) {
     add_json_flag(cmd, a->json, "Machine-readable output on stdout");
     cmd->add_option("--svg", a->svg, "Draw the configuration space and the coverage path to this SVG file");
     cmd->add_option("--geojson", a->geojson, "Also write the environment and the path (a LineString per run of laps, follows or transits) as GeoJSON");
+    cmd->add_flag("--online", a->online, "The robot does not know the map: it senses critical points with a range ring and builds the Reeb graph as it covers (6.2.4; --angle auto means 0)");
+    cmd->add_option("--sensors", a->sensors, "--online: range sensors on the ring (a multiple of 4)")->capture_default_str();
+    cmd->add_option("--range", a->range, "--online: the sensors' maximum range (default 10 r)");
+    cmd->add_option("--noise", a->noise, "--online: standard deviation of the Gaussian noise on each reading");
+    cmd->add_option("--seed", a->seed, "--online: seed of the noise")->capture_default_str();
+    cmd->add_flag("--raster", a->raster, "--online: a plain raster scan instead of the cycle algorithm (misses ceiling critical points, Fig. 6.22)");
     cmd->callback([a] { run_cover(*a); });
   }
 }

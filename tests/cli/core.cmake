@@ -233,3 +233,12 @@ set_tests_properties(cli.decompose_brushfire_houseexpo PROPERTIES DEPENDS cli.im
 set_tests_properties(cli.cover_brushfire_houseexpo PROPERTIES DEPENDS cli.import_houseexpo_0000)
 cli_test(decompose_circular_contacts 0 "circular decomposition around \\(2.5, 0.5\\): 19 cells" - decompose ${FIX}/contacts/checkerboard.json --method circular --center 2.5,0.5)
 cli_test(cover_spiral_contacts 0 "covered (99\\.[0-9]+|100)% of the configuration space" - cover ${FIX}/contacts/checkerboard.json --pattern spiral --width 0.2 --radius 0 --center 2.5,0.5)
+# cover --online (6.2.4): the robot builds the Reeb graph as it covers; compared with the offline graph.
+cli_test(cover_online_gallery 0 "complete: every critical point has all its edges explored" - cover ${EXAMPLES}/gallery.json --radius 0.2 --online --angle 17)
+cli_test(cover_online_isomorphic 0 "offline boustrophedon Reeb graph: 8 critical slices, 10 cells: isomorphic" - cover ${EXAMPLES}/gallery.json --radius 0.2 --online --angle 17)
+cli_test(cover_online_json_svg 0 "\"isomorphic\":true" ${OUT}/cover_online.svg cover ${EXAMPLES}/gallery.json --radius 0.2 --online --angle 17 --json --svg ${OUT}/cover_online.svg)
+cli_test(cover_online_raster_misses_ceiling_cp 0 "differs: offline critical slice 1 .* was never sensed" - cover ${FIX}/online/ceiling_critical_point.json --online --raster --angle 13)
+cli_test(cover_online_cycle_finds_ceiling_cp 0 "4 critical slices, 4 cells: isomorphic" - cover ${FIX}/online/ceiling_critical_point.json --online --angle 13)
+cli_test(cover_online_wide_tool fail "^preimage: --width 0.5: online coverage needs 0 < w <= 2r = 0.4" - cover ${EXAMPLES}/gallery.json --radius 0.2 --width 0.5 --online)
+cli_test(cover_online_bad_sensors fail "^preimage: --sensors 10: the ring needs a multiple of 4 sensors" - cover ${EXAMPLES}/gallery.json --radius 0.2 --online --sensors 10)
+cli_test(cover_online_flags_need_online fail "^preimage: --sensors/--range/--noise/--raster: only with --online" - cover ${EXAMPLES}/gallery.json --radius 0.2 --noise 0.1)

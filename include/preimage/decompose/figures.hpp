@@ -5,6 +5,7 @@
 #include <preimage/decompose/brushfire.hpp>
 #include <preimage/decompose/coverage.hpp>
 #include <preimage/decompose/morse.hpp>
+#include <preimage/decompose/online_coverage.hpp>
 #include <preimage/decompose/planner.hpp>
 #include <preimage/render/svg.hpp>
 
@@ -30,5 +31,10 @@ void draw_brushfire(render::SvgCanvas& canvas, const BrushfireDecomposition& b);
 /// A coverage path: laps, boundary following and transits in three styles, arrows along
 /// it, start and end markers.
 void draw_coverage(render::SvgCanvas& canvas, const CoverageReport& report);
+
+/// Online coverage as it stood after the first `upto` path points (Fig. 6.21): the path so
+/// far, the critical points sensed by then (numbered in order) and the Reeb graph edges of
+/// the cells covered by then; ports still unexplored drawn as short stubs.
+void draw_online_coverage(render::SvgCanvas& canvas, const OnlineReport& report, std::size_t upto);
 
 }  // namespace preimage::decompose

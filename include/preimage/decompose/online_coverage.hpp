@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: Apache-2.0
+// Sensor-based coverage of an unknown environment (Choset et al., 6.2.4; Acar and Choset's
+// cycle algorithm): a disc robot that does not know the map covers it while it builds the
+// boustrophedon Reeb graph incrementally, and knows when it is done.
+//
+// Model. The robot's centre moves in the configuration space (the free space eroded by its
+// radius r, geometry::ConfigurationSpace), in the sweep frame (x along the sweep direction,
+// slices vertical). A simulator owns the map and offers the primitives of the text: a lap
+// along the slice until contact (exact ray shooting in the configuration space polygon: the
+// centre's first contact), boundary following forward or reverse with the lateral
+// displacement tracked by odometry (edge by edge along the contact boundary, stopping
+// exactly on a given slice), and retracing a stretch the robot has driven. After every
+// step of boundary following the robot reads a ring of N range sensors from its centre
+// against the workspace (ray casting in double: a measurement, plus Gaussian noise). The
+// planner sees only those readings and its odometry, never the map.
+//
+// Critical point sensing. The direction of the ring's minimum reading estimates the surface
+// normal n (towards the obstacle), quantised to the sensor spacing 2 pi / N. At a critical
+// point n is parallel to the sweep direction (Lemma 5.5.2): while following, a critical point
+// is sensed where the sign of n's component across the sweep flips (a sensor pointing
+// exactly along the sweep reads "parallel" and does not flip), i.e. where the followed
+// boundary turns back; which way n points along the sweep tells death/merge (an extreme in
+// +x) and split/birth (in -x) apart. The critical point is placed at the extreme abscissa
+// the robot's odometry recorded during that follow (a vertical run: its two ends). Sensor
+// resolution: the quantised normal is within pi / N of the true one.
+//
+// The cycle algorithm (Fig. 6.23), per strip between two laps w apart: forward phase: follow
+// the side the last lap ended on forward until the lateral displacement is w or a critical
+// point is sensed; reverse phase: lap across, then follow the other side in reverse back to
+// the last lap's slice (a critical point sensed there is the cell's closing one); closing
+// phase: if the reverse follow reaches that slice somewhere other than the last lap's end,
+// an obstacle sits between: lap towards the strip and follow it forward to its extreme, the
+// closing critical point. Both sides of every strip are followed, so ceiling critical points
+// (Fig. 6.22) are found. With `cycle = false` the same simulator runs a plain raster scan
+// (follow one side, lap, follow the other side), which misses them.
+//
+// Completeness relies on w <= 2r: every obstacle of the configuration space is at least 2r
+// wide, so none hides between two laps. Larger widths are refused.
+//
+// The incremental Reeb graph (Figs. 6.20, 6.21): a node per sensed critical point with its
+// ports (birth and death one, split and merge three), an edge when a cell is covered from a
+// node to its closing critical point; the robot travels (retracing its own path, shortest
+// over what it has driven) to the nearest node with an unexplored port, and stops when every
+// port is explored. Anything the graph cannot explain (a closing point whose port is already
+// explored, a lap that cannot start, a boundary that turns back without a sensed critical
+// point, a retrace that senses one) is reported as an inconsistency and the robot does not
+// claim completion.
+//
+// Output: the path in input coordinates, certified segment by segment (inside the
+// configuration space polygon exactly and r from every obstacle) like plan_coverage's.
+#pragma once
+#include <preimage/decompose/boustrophedon.hpp>
+#include <preimage/decompose/coverage.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace preimage::decompose {
+
+struct OnlineOptions {
+  double robot_radius = 0;          // r > 0
+  double width = 0;                 // tool width w, 0 < w <= 2r; 0 means 2r
+  double angle_deg = 0;             // sweep direction
+  std::size_t sensors = 32;         // range sensors on the ring (a multiple of 4, >= 8)
+  double range = 0;                 // their maximum range; 0 means 10 r
+  double noise = 0;                 // standard deviation of the Gaussian noise on each reading
+  std::uint64_t seed = 1;           // of the noise
+  bool cycle = true;                // false: plain raster scan (misses ceiling critical points)
+  std::optional<Point> start;       // default: the middle of the configuration space's largest lap
+  std::size_t max_steps = 0;        // primitive budget (0: automatic); running out is an inconsistency
+};
+
+enum class OnlineKind : std::uint8_t { Birth, Death, Split, Merge };
+std::string_view to_string(OnlineKind k);
+
+/// A sensed critical point, in the order sensed.
+struct OnlineNode {
+  OnlineKind kind;
+  double x = 0, y_low = 0, y_high = 0;  // sweep frame (y_low < y_high on a vertical wall)
+  Point at;                             // input frame (the middle of the run)
+  std::size_t sensed_at = 0;            // path index where it was sensed
+  /// Per port, the edge explored through it or -1. Birth: {right}; death: {left};
+  /// split: {left, right-up, right-down}; merge: {left-up, left-down, right}.
+  std::vector<int> ports;
+};
+
+/// A covered cell: an edge of the Reeb graph.
+struct OnlineEdge {
+  std::uint32_t from, to;      // opening node and closing node
+  std::size_t laps = 0;
+  std::size_t path_begin = 0, path_end = 0;  // path indices of its sweep
+};
+
+struct OnlineReport {
+  std::vector<Point> path;   // input frame, certified
+  std::vector<Move> moves;   // per segment
+  std::vector<OnlineNode> nodes;
+  std::vector<OnlineEdge> edges;
+  std::vector<std::uint32_t> sensing_order;  // node ids in the order they were (re)visited as closing or found
+  bool complete = false;       // every port explored and nothing inconsistent
+  std::string inconsistency;   // empty unless something did not add up
+  double angle = 0, width = 0, robot_radius = 0, range = 0, noise = 0;
+  std::size_t sensors = 0, laps = 0, readings = 0, steps = 0;
+  double resolution = 0;       // angular resolution of the normal estimate (pi / N), radians
+  double length = 0, transit_length = 0;
+  double target_area = 0;      // area of the configuration space component covered
+};
+
+/// Throws InputError for a radius or width out of range, a ring of fewer than 8 sensors or
+/// not a multiple of 4, a range not above r, negative noise, a start the robot does not fit
+/// at. Throws std::logic_error if a path segment fails certification (a bug).
+OnlineReport plan_online_coverage(const Environment& env, const OnlineOptions& options);
+
+/// The online graph against the offline boustrophedon Reeb graph of the same configuration
+/// space component and angle: nodes matched by position (the offline critical slice within
+/// `tolerance` of the sensed one), then edges compared as multisets under the matching.
+struct OnlineComparison {
+  bool isomorphic = false;
+  std::size_t offline_nodes = 0, offline_edges = 0;
+  double max_offset = 0;           // largest distance between matched critical points
+  std::vector<int> offline_of;     // per online node, the offline critical slice (-1: none)
+  std::string detail;              // why not, when not
+};
+OnlineComparison compare_with_offline(const Environment& env, const OnlineReport& report, double tolerance);
+
+/// The same for a decomposition the caller already has (of the component the report covered).
+OnlineComparison compare_with_offline(const BoustrophedonDecomposition& offline, const OnlineReport& report, double tolerance);
+
+/// Default matching tolerance: how far a sensed critical point may sit from the true one.
+double online_tolerance(const OnlineReport& report);
+
+}  // namespace preimage::decompose
