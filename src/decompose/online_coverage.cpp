@@ -36,7 +36,6 @@ using detail::OnlineRobot;
 using detail::SweepPoint;
 
 enum class Side : std::uint8_t { Floor, Ceiling };
-Side other(Side s) { return s == Side::Floor ? Side::Ceiling : Side::Floor; }
 
 // A boundary point the robot stood at.
 struct Stand {
@@ -44,26 +43,34 @@ struct Stand {
   Contact c;
 };
 
-// A sensed critical point: its kind and the run of extreme abscissa (lo..hi) the robot's
-// odometry recorded while following.
+// A sensed critical point: its kind and the run of extreme abscissa the robot drove through
+// (one point, or a vertical wall), bottom to top.
 struct Sensed {
   OnlineKind kind;
-  Stand lo, hi;
-  std::size_t path_index;
+  std::vector<Stand> run;
+  std::size_t path_index = 0;
+  double x() const { return run.front().p.x(); }
+  const Stand& lo() const { return run.front(); }
+  const Stand& hi() const { return run.back(); }
 };
 
-struct FollowResult {
-  enum Status : std::uint8_t { Reached, Critical, Lost } status = Lost;
+// A boundary follow: every point driven (the start first), and the critical point where the
+// lateral displacement turned back, if it did before the stop slice.
+struct Follow {
+  std::vector<Stand> stands;
   std::optional<Sensed> cp;
-  bool matched = false;          // Reached: ended at the hint
-  std::vector<Stand> stands;     // every point of the follow, the start first
-};
-
-// A lap of the cell being covered: its slice and its two ends.
-struct LapEnds {
-  double x;
-  Stand lo, hi;
-  const Stand& end(Side s) const { return s == Side::Floor ? lo : hi; }
+  // The chain's ordinate at abscissa x (x between the start and the end), by interpolation
+  // of the odometry: the planner's own estimate, compared with a stated tolerance.
+  double y_at(double x) const {
+    for (std::size_t i = 1; i < stands.size(); ++i) {
+      const Point &a = stands[i - 1].p, &b = stands[i].p;
+      if ((a.x() <= x && x <= b.x()) || (b.x() <= x && x <= a.x())) {
+        if (a.x() == b.x()) return a.y();
+        return a.y() + (x - a.x()) * (b.y() - a.y()) / (b.x() - a.x());
+      }
+    }
+    return NAN;
+  }
 };
 
 // Which port of a node a cell uses.
@@ -96,10 +103,12 @@ struct Failure {
   std::string what;
 };
 
+std::string at_text(const Point& p) { return geometry::format_point(p); }
+
 class OnlinePlanner {
  public:
   OnlinePlanner(OnlineRobot& robot, const OnlineOptions& o, double w, std::size_t budget)
-      : R_(robot), o_(o), w_(w), budget_(budget), same_(w / 4) {}
+      : R_(robot), o_(o), w_(w), budget_(budget), tol_(1e-6 * w) {}
 
   void run(OnlineReport& rep) {
     try {
@@ -116,106 +125,79 @@ class OnlinePlanner {
   }
 
  private:
-  // --- sensing --------------------------------------------------------------------------
-  // Sign of the ring's normal estimate across the sweep: +1 up, -1 down, 0 along the sweep.
-  int across(const detail::RingReading& r) const {
-    const std::size_t n = R_.sensors(), i = r.argmin;
-    if (i == 0 || 2 * i == n) return 0;
-    return 2 * i < n ? 1 : -1;
-  }
-  double along(const detail::RingReading& r) const { return std::cos(R_.sensor_angle(r.argmin)); }
-
   void tick() {
-    if (++steps_ > budget_) throw Failure{"step budget of " + std::to_string(budget_) + " primitives exhausted"};
+    if (++steps_ > budget_) throw Failure{std::string("step budget of ").append(std::to_string(budget_)).append(" primitives exhausted")};
   }
+  Stand here() const { return {R_.odometry(), R_.contact()}; }
 
-  // Boundary following along side s towards delta (+1: +x), stopping on the slice x = stop_x
-  // (at the hint when the slice holds a vertical run through it) or where a critical point
-  // is sensed: the sign of the normal estimate across the sweep flips.
-  FollowResult follow(Side s, int delta, double stop_x, const Point* hint, bool from_critical = false) {
-    FollowResult out = follow_(s, delta, stop_x, hint, from_critical);
-    return out;
-  }
-  // From a critical point (`from_critical`) the first reading is ignored: the normal is
-  // parallel to the sweep there, either way within the resolution.
-  FollowResult follow_(Side s, int delta, double stop_x, const Point* hint, bool from_critical) {
-    FollowResult out;
-    const int dir = s == Side::Floor ? delta : -delta;
-    auto ring = R_.read_ring();
-    out.stands.push_back({R_.odometry(), R_.contact()});
-    std::vector<int> signs{from_critical ? 0 : across(ring)};
-    std::vector<double> alongs{along(ring)};
+  // --- sensing --------------------------------------------------------------------------
+  // Boundary following along side s (the floor has free space above it) towards delta (+1:
+  // +x), stopping on the slice x = stop_x or where a critical point is sensed: the lateral
+  // displacement turns back. The boundary is followed vertex to vertex, so the extreme is a
+  // vertex or a vertical run, the place where the boundary's normal cone holds the sweep
+  // direction (Lemma 5.5.2); the robot then stands on the run's last point. Its kind: the
+  // turn the boundary makes there (odometry: is the free wedge convex, so free space ends,
+  // or reflex, so an obstacle ends), which the ring must confirm: the direction of the
+  // ring's minimum (the surface normal) points along the sweep towards the obstacle side.
+  Follow follow(Side s, int delta, double stop_x) {
+    Follow out;
+    const int dir = s == Side::Floor ? delta : -delta;  // +1: the ring order, free space on the left
+    out.stands.push_back(here());
+    std::vector<double> along{0};
     double best = delta * R_.odometry().x();
     for (;;) {
       tick();
       bool on_slice = false;
-      if (!R_.follow_step(dir, stop_x, on_slice)) throw Failure{"boundary following started away from the boundary"};
-      out.stands.push_back({R_.odometry(), R_.contact()});
-      if (on_slice) {
-        // A vertical run on the slice: drive along it to the hint.
-        while (hint && R_.odometry() != *hint && R_.contact().vertex != Contact::kNone) {
-          const std::uint32_t v = R_.contact().vertex;
-          (void)v;
-          const Point before = R_.odometry();
-          const Contact cbefore = R_.contact();
-          bool dummy = false;
-          tick();
-          R_.follow_step(dir, NAN, dummy);
-          if (R_.odometry().x() != stop_x) {
-            R_.retrace_to(before, cbefore, Move::Follow);
-            break;
-          }
-          out.stands.push_back({R_.odometry(), R_.contact()});
-        }
-        out.status = FollowResult::Reached;
-        out.matched = hint && std::fabs(R_.odometry().y() - hint->y()) <= 1e-9 * (1 + std::fabs(hint->y()));
-        return out;
+      if (!R_.follow_step(dir, stop_x, on_slice)) throw Failure{"boundary following started away from the boundary at " + at_text(R_.odometry())};
+      out.stands.push_back(here());
+      if (on_slice) return out;
+      const auto ring = R_.read_ring();
+      along.push_back(std::cos(R_.sensor_angle(ring.argmin)));
+      const double x = delta * R_.odometry().x();
+      if (x >= best) {
+        best = x;
+        continue;
       }
-      ring = R_.read_ring();
-      const int sg = across(ring);
-      signs.push_back(sg), alongs.push_back(along(ring));
-      best = std::max(best, delta * R_.odometry().x());
-      int last = 0;
-      std::size_t last_at = 0;
-      for (std::size_t i = signs.size() - 1; i-- > 0;)
-        if (signs[i] != 0) {
-          last = signs[i], last_at = i;
-          break;
-        }
-      if (sg != 0 && last != 0 && sg != last) {
-        // Sensed: the normal turned through the sweep direction. Which way it pointed along
-        // the sweep while turning tells the kind; the extreme abscissa driven is the place.
-        double a = 0;
-        for (std::size_t i = last_at; i < alongs.size(); ++i) a += alongs[i];
-        Sensed cp;
-        if (delta > 0) cp.kind = a > 0 ? OnlineKind::Death : OnlineKind::Merge;
-        else cp.kind = a > 0 ? OnlineKind::Split : OnlineKind::Birth;
-        bool first = true;
-        for (const Stand& st : out.stands)
-          if (delta * st.p.x() == best) {
-            if (first || st.p.y() < cp.lo.p.y()) cp.lo = st;
-            if (first || st.p.y() > cp.hi.p.y()) cp.hi = st;
-            first = false;
-          }
-        cp.path_index = R_.path().size() - 1;
-        out.cp = cp;
-        out.status = FollowResult::Critical;
-        return out;
-      }
-      if (delta * R_.odometry().x() < best - 2 * w_)
-        throw Failure{"the boundary near " + geometry::format_point(R_.odometry()) +
-                      " turned back but the ring sensed no critical point"};
+      // Turned back: the run of extreme abscissa ends at the previous point.
+      const std::size_t last = out.stands.size() - 2;
+      std::size_t first = last;
+      while (first > 0 && out.stands[first - 1].p.x() == out.stands[last].p.x()) --first;
+      if (first == 0) throw Failure{"the boundary turns back at once from " + at_text(out.stands[0].p)};
+      Sensed cp;
+      cp.run.assign(out.stands.begin() + static_cast<std::ptrdiff_t>(first), out.stands.begin() + static_cast<std::ptrdiff_t>(last) + 1);
+      const int turn = geometry::orientation(out.stands[first - 1].p, out.stands[first].p,
+                                             first != last ? out.stands[last].p : out.stands[last + 1].p);
+      const bool convex = turn * dir > 0;  // free space on the inside of the turn
+      if (delta > 0) cp.kind = convex ? OnlineKind::Death : OnlineKind::Merge;
+      else cp.kind = convex ? OnlineKind::Birth : OnlineKind::Split;
+      double a = 0;
+      for (std::size_t i = first; i <= last; ++i) a += along[i];
+      // Convex: the obstacle lies ahead (along +delta); reflex: behind.
+      const bool ring_ahead = delta * a > 0;
+      if (ring_check_ && ring_ahead != convex)
+        throw Failure{std::string("the ring's normal at the ").append(to_string(cp.kind)).append(" critical point near ").append(at_text(cp.run.front().p)).append(" points the wrong way along the sweep")};
+      std::sort(cp.run.begin(), cp.run.end(), [](const Stand& u, const Stand& v) { return u.p.y() < v.p.y(); });
+      R_.retrace_to(out.stands[last].p, out.stands[last].c, Move::Follow);
+      out.stands.pop_back();
+      cp.path_index = R_.path().size() - 1;
+      out.cp = std::move(cp);
+      return out;
     }
   }
 
-  // Drive back along a follow's stands to stand k.
-  void back_to(const FollowResult& f, std::size_t k) {
-    for (std::size_t i = f.stands.size() - 1; i-- > k;) R_.retrace_to(f.stands[i].p, f.stands[i].c, Move::Transit);
+  // Drive back along stands from the last to stand k.
+  void back_along(const std::vector<Stand>& st, std::size_t k) {
+    for (std::size_t i = st.size() - 1; i-- > k;) R_.retrace_to(st[i].p, st[i].c, Move::Transit);
   }
-  std::size_t stand_of(const FollowResult& f, const Point& p) const {
-    for (std::size_t i = f.stands.size(); i-- > 0;)
-      if (f.stands[i].p == p) return i;
-    throw Failure{"a critical point is not on the follow that sensed it"};
+  // Drive along a run (bottom to top, or the reverse) from where the robot is on it.
+  void along_run(const std::vector<Stand>& run, bool to_top) {
+    std::size_t k = 0;
+    while (k < run.size() && run[k].p != R_.odometry()) ++k;
+    if (k == run.size()) throw Failure{"the robot is not on the critical point's run"};
+    if (to_top)
+      for (std::size_t i = k + 1; i < run.size(); ++i) R_.retrace_to(run[i].p, run[i].c, Move::Transit);
+    else
+      for (std::size_t i = k; i-- > 0;) R_.retrace_to(run[i].p, run[i].c, Move::Transit);
   }
 
   bool lap(bool up) {
@@ -227,22 +209,22 @@ class OnlinePlanner {
 
   // --- the incremental Reeb graph ---------------------------------------------------------
   std::uint32_t node_for(const Sensed& s) {
+    const double y0 = s.lo().p.y(), y1 = s.hi().p.y();
     for (std::uint32_t i = 0; i < nodes_.size(); ++i) {
       const OnlineNode& n = nodes_[i];
-      if (n.kind != s.kind || std::fabs(n.x - s.lo.p.x()) > same_) continue;
-      const double gap = std::max({0.0, s.lo.p.y() - n.y_high, n.y_low - s.hi.p.y()});
-      if (gap <= same_) {
+      if (n.kind != s.kind || n.x != s.x()) continue;
+      if (y0 <= n.y_high + tol_ && n.y_low <= y1 + tol_) {
         order_.push_back(i);
         return i;
       }
     }
     OnlineNode n;
     n.kind = s.kind;
-    n.x = s.lo.p.x(), n.y_low = s.lo.p.y(), n.y_high = s.hi.p.y();
+    n.x = s.x(), n.y_low = y0, n.y_high = y1;
     n.sensed_at = s.path_index;
     n.ports.assign(s.kind == OnlineKind::Birth || s.kind == OnlineKind::Death ? 1 : 3, -1);
     nodes_.push_back(n);
-    anchors_.push_back({s.lo, s.hi});
+    runs_.push_back(s.run);
     order_.push_back(static_cast<std::uint32_t>(nodes_.size() - 1));
     return static_cast<std::uint32_t>(nodes_.size() - 1);
   }
@@ -290,134 +272,200 @@ class OnlinePlanner {
   }
   void transit(const std::vector<std::uint32_t>& pred, const Point& p) {
     const auto it = ids_.find({p.x(), p.y()});
-    if (it == ids_.end()) throw Failure{"no driven path to " + geometry::format_point(p)};
+    if (it == ids_.end()) throw Failure{"no driven path to " + at_text(p)};
     std::vector<std::uint32_t> chain;
     for (std::uint32_t v = it->second; v != UINT32_MAX; v = pred[v]) chain.push_back(v);
     for (auto k = chain.rbegin(); k != chain.rend(); ++k) R_.retrace_to(gpts_[*k].p, gpts_[*k].c, Move::Transit);
   }
 
-  // --- the cycle algorithm ----------------------------------------------------------------
+  // --- covering a cell --------------------------------------------------------------------
   struct Closing {
     Sensed cp;
     PortSide ps = PortSide::Point;
   };
 
-  // Cover the cell leaving node `from` through `port`; returns its closing critical point.
+  // Cover the cell leaving node `from` through `port` (the robot stands at the port's
+  // anchor); returns its closing critical point.
+  //
+  // The cell is swept strip by strip. The strip from the last lap (slice x0, floor point F0,
+  // ceiling point C0, the bridge between them driven) towards x0 + d w is explored so that
+  // the *first* critical point along the sweep is the one that closes the cell, however
+  // many the strip holds:
+  //  1. forward phase on the floor: follow it from F0 to the target slice; a critical point
+  //     sensed there moves the target to its slice;
+  //  2. back to F0, across the bridge to C0, and the same on the ceiling (the reverse
+  //     phase's boundary following, driven forward): its critical point moves the target
+  //     again if it comes first;
+  //  3. closing phase on the target slice: lap from the ceiling towards the floor. Arriving
+  //     where the floor crosses the slice (odometry) proves the strip clear: the chains are
+  //     monotone and an obstacle starting inside the strip would still cross the target
+  //     slice (every obstacle of the configuration space is wider than 2r >= w). Hitting an
+  //     obstacle instead: follow it back against the sweep to its first point, a critical
+  //     point nearer than the target, which becomes the target; then lap from there both
+  //     ways, again until both laps arrive on the chains.
+  // Each step moves the target strictly back, so this ends; the target's critical point
+  // (if any) closes the cell. Otherwise the lap across the target slice is the next lap.
   Closing cover_cell(std::uint32_t from, int port) {
     bool right = false;
     PortSide ps = PortSide::Point;
     port_of(nodes_[from].kind, port, right, ps);
     const int d = right ? 1 : -1;
-    const Stand lo = anchors_[from].first, hi = anchors_[from].second;
-    LapEnds L{lo.p.x(), lo, hi};
-    Side s = Side::Floor;
-    auto here = [&]() { return Stand{R_.odometry(), R_.contact()}; };
+    const std::vector<Stand> run = runs_[from];
     auto blocked = [&](const char* what) {
-      return Failure{std::string("a lap ").append(what).append(" from ").append(geometry::format_point(R_.odometry())).append(" is blocked")};
+      return Failure{std::string("a lap ").append(what).append(" from ").append(at_text(R_.odometry())).append(" is blocked")};
     };
+    // The first lap: the bridge from the floor's start to the ceiling's, as driven.
+    std::vector<Stand> bridge;
     switch (ps) {
-      case PortSide::Point: L = {lo.p.x(), lo, hi}, s = Side::Floor; break;
-      case PortSide::Up:
+      case PortSide::Point: bridge = run; break;
+      case PortSide::Up: {
+        const Stand h = R_.odometry() == run.back().p ? run.back() : run.front();
         if (!lap(true)) throw blocked("up from a critical point");
-        L = {hi.p.x(), hi, here()}, s = Side::Ceiling;
+        bridge = {h, here()};
         break;
-      case PortSide::Down:
+      }
+      case PortSide::Down: {
+        const Stand l = R_.odometry() == run.front().p ? run.front() : run.back();
         if (!lap(false)) throw blocked("down from a critical point");
-        L = {lo.p.x(), here(), lo}, s = Side::Floor;
+        bridge = {here(), l};
         break;
+      }
       case PortSide::Both: {
+        along_run(run, true);
         if (!lap(true)) throw blocked("up through a critical point");
         const Stand top = here();
-        R_.retrace_to(hi.p, hi.c, Move::Transit);
-        if (lo.p != hi.p) R_.retrace_to(lo.p, lo.c, Move::Transit);
+        R_.retrace_to(run.back().p, run.back().c, Move::Transit);
+        along_run(run, false);
         if (!lap(false)) throw blocked("down through a critical point");
-        L = {lo.p.x(), here(), top}, s = Side::Floor;
+        bridge.push_back(here());
+        bridge.insert(bridge.end(), run.begin(), run.end());
+        bridge.push_back(top);
         break;
       }
     }
-    // Passed critical points sensed on the way, registered when the cell closes elsewhere.
-    auto also = [&](const std::optional<Sensed>& cp) {
-      if (cp) node_for(*cp);
-    };
-    const OnlineKind end_kind = d > 0 ? OnlineKind::Death : OnlineKind::Birth;   // free space ends ahead
-    const OnlineKind pass_kind = d > 0 ? OnlineKind::Merge : OnlineKind::Split;  // an obstacle ends
-    const OnlineKind hole_kind = d > 0 ? OnlineKind::Split : OnlineKind::Merge;  // an obstacle starts
+    // To the floor's start.
+    if (R_.odometry() != bridge.front().p) {
+      std::size_t k = 0;
+      while (k < bridge.size() && bridge[k].p != R_.odometry()) ++k;
+      if (k == bridge.size()) throw Failure{"the robot lost the first lap of a cell"};
+      for (std::size_t i = k; i-- > 0;) R_.retrace_to(bridge[i].p, bridge[i].c, Move::Transit);
+    }
+    const OnlineKind between_kind = d > 0 ? OnlineKind::Split : OnlineKind::Merge;  // an obstacle starts
+    if (!o_.cycle) return raster(bridge, d);
     for (;;) {
-      const Side s2 = other(s);
-      double xt = L.x + d * w_;
-      // Forward phase: follow the side the last lap ended on.
-      FollowResult A = follow(s, d, xt, nullptr, L.lo.p == L.hi.p);
-      std::optional<Sensed> evA;
-      if (A.status == FollowResult::Critical) {
-        evA = A.cp;
-        if (evA->kind == end_kind) {
-          if (!o_.cycle) return {*evA, PortSide::Point};
-          // The boundary goes on back as the other side: reverse phase along it, from the
-          // turn (the ring may have sensed it an edge later).
-          back_to(A, stand_of(A, s == Side::Floor ? evA->hi.p : evA->lo.p));
-          FollowResult B = follow(s2, -d, L.x, &L.end(s2).p, true);
-          if (B.status == FollowResult::Critical) {
-            if (B.cp->kind != hole_kind) throw Failure{"a reverse follow sensed a " + std::string(to_string(B.cp->kind)) + " inside a cell"};
-            also(evA);
-            return {*B.cp, PortSide::Both};
-          }
-          if (B.matched) return {*evA, PortSide::Point};
-          also(evA);
-          return closing_phase(s2, d, L);
+      const double x0 = bridge.front().p.x();
+      double xt = x0 + d * w_;
+      std::optional<Sensed> target;  // the critical point on the target slice
+      PortSide tps = PortSide::Point;
+      auto sooner = [&](const Sensed& cp, PortSide side) {
+        if (target) node_for(*target);  // passed over: a critical point of another cell
+        xt = cp.x(), target = cp;
+        tps = (cp.kind == OnlineKind::Birth || cp.kind == OnlineKind::Death) ? PortSide::Point : side;
+      };
+      // 1. The floor.
+      Follow F = follow(Side::Floor, d, xt);
+      if (F.cp) sooner(*F.cp, PortSide::Up);
+      // 2. Back, across, the ceiling.
+      back_along(F.stands, 0);
+      if (F.cp) R_.retrace_to(F.stands.front().p, F.stands.front().c, Move::Transit);
+      for (std::size_t i = 1; i < bridge.size(); ++i) R_.retrace_to(bridge[i].p, bridge[i].c, Move::Transit);
+      Follow C = follow(Side::Ceiling, d, xt);
+      if (C.cp) {
+        if (target && C.cp->x() == xt) {
+          // The same slice: the death where floor and ceiling meet, or a degenerate pair.
+          if (target->kind != C.cp->kind || C.cp->lo().p.y() > target->hi().p.y() + tol_)
+            throw Failure{"two critical points on one slice at x = " + geometry::format_number(xt) + " in one cell"};
+        } else {
+          if (target && d * C.cp->x() > d * xt) throw Failure{"the ceiling turned back beyond the target slice"};
+          sooner(*C.cp, PortSide::Down);
         }
-        if (evA->kind != pass_kind) throw Failure{"a forward follow sensed a " + std::string(to_string(evA->kind))};
-        // An obstacle of this side ends: back to its extreme, and lap across from there.
-        back_to(A, stand_of(A, s == Side::Floor ? evA->hi.p : evA->lo.p));
-        xt = R_.odometry().x();
       }
-      // Reverse phase: lap across, follow the other side back to the last lap's slice.
-      const Stand before = here();
-      if (!lap(s == Side::Floor)) throw blocked("across the cell");
-      const LapEnds N = s == Side::Floor ? LapEnds{xt, before, here()} : LapEnds{xt, here(), before};
-      if (!o_.cycle) {
-        if (evA) return {*evA, s == Side::Floor ? PortSide::Up : PortSide::Down};
-        L = N, s = s2;
+      // 3. Across the target slice, towards the side the target's critical point is on (from
+      // the ceiling when it is on the floor or there is none).
+      const bool from_floor = target && C.cp && target->x() == C.cp->x();
+      const bool point_kind = target && (target->kind == OnlineKind::Birth || target->kind == OnlineKind::Death);
+      if (from_floor) {
+        // Back to the floor, and along it to the target slice again.
+        back_along(C.stands, 0);
+        for (std::size_t i = bridge.size() - 1; i-- > 0;) R_.retrace_to(bridge[i].p, bridge[i].c, Move::Transit);
+        const Follow F2 = follow(Side::Floor, d, xt);
+        if (F2.cp) throw Failure{"the floor turned back where it did not before"};
+      }
+      const Stand lap_from = here();
+      const double expect = !target ? F.y_at(xt) : from_floor ? target->lo().p.y() : target->hi().p.y();
+      if (!lap(from_floor)) {
+        // Against a point where floor and ceiling meet: the strip closes there.
+        bool on_run = false;
+        if (point_kind)
+          for (const Stand& st : target->run) on_run = on_run || st.p == lap_from.p;
+        if (on_run) return {*target, PortSide::Point};
+        throw blocked("across the cell");
+      }
+      const Stand lap_to = here();
+      if (std::fabs(lap_to.p.y() - expect) <= tol_) {
+        if (target) return {*target, tps};
+        // The strip is clear: the lap across the target slice is the next lap.
+        bridge = {lap_to, lap_from};
         continue;
       }
-      FollowResult B = follow(s2, -d, L.x, &L.end(s2).p);
-      if (B.status == FollowResult::Critical) {
-        if (B.cp->kind != hole_kind) throw Failure{"a reverse follow sensed a " + std::string(to_string(B.cp->kind)) + " inside a cell"};
-        also(evA);
-        return {*B.cp, PortSide::Both};
+      if (from_floor ? !(lap_to.p.y() < expect) : !(lap_to.p.y() > expect))
+        throw Failure{"a lap across the cell from " + at_text(lap_from.p) + " went through the other side"};
+      const Stand floor_pt = lap_to;
+      // An obstacle between: back against the sweep along its top to where it starts, then
+      // lap from there both ways until both laps arrive on the chains.
+      Stand from_pt = floor_pt;
+      bool towards_floor = !from_floor;  // the lap that hit the obstacle went down
+      for (;;) {
+        const Follow O = follow(towards_floor ? Side::Floor : Side::Ceiling, -d, x0);
+        if (!O.cp) throw Failure{"an obstacle met in a strip at " + at_text(from_pt.p) + " does not start inside the strip"};
+        if (O.cp->kind != between_kind)
+          throw Failure{std::string("an obstacle met in a strip starts at a ").append(to_string(O.cp->kind)).append(" critical point")};
+        sooner(*O.cp, PortSide::Both);
+        tps = PortSide::Both;
+        // Down from its bottom to the floor.
+        along_run(target->run, false);
+        if (!lap(false)) throw blocked("down from an obstacle's first point");
+        if (std::fabs(R_.odometry().y() - F.y_at(xt)) > tol_) {
+          if (!(R_.odometry().y() > F.y_at(xt))) throw Failure{"a lap down at " + at_text(R_.odometry()) + " went below the floor"};
+          from_pt = here(), towards_floor = true;
+          continue;
+        }
+        R_.retrace_to(target->lo().p, target->lo().c, Move::Transit);
+        along_run(target->run, true);
+        if (!lap(true)) throw blocked("up from an obstacle's first point");
+        if (std::fabs(R_.odometry().y() - C.y_at(xt)) > tol_) {
+          if (!(R_.odometry().y() < C.y_at(xt))) throw Failure{"a lap up at " + at_text(R_.odometry()) + " went above the ceiling"};
+          from_pt = here(), towards_floor = false;
+          continue;
+        }
+        return {*target, PortSide::Both};
       }
-      if (!B.matched) {
-        also(evA);
-        return closing_phase(s2, d, L);
-      }
-      if (evA) return {*evA, s == Side::Floor ? PortSide::Up : PortSide::Down};
-      // The strip is clean: back along the other side to the new lap, and on.
-      back_to(B, 0);
-      L = N, s = s2;
     }
   }
 
-  // Closing phase: the reverse follow met the last lap's slice beyond the lap's end, so an
-  // obstacle lies between: lap towards it and follow it forward to its extreme.
-  Closing closing_phase(Side s2, int d, const LapEnds& L) {
-    const double y = R_.odometry().y(), yend = L.end(s2).p.y();
-    if (s2 == Side::Floor ? y >= yend : y <= yend)
-      throw Failure{"a reverse follow came back to the last lap's slice at " + geometry::format_point(R_.odometry()) + ", inside the lap"};
-    if (!lap(s2 == Side::Floor)) throw Failure{"the closing phase cannot lap from " + geometry::format_point(R_.odometry())};
-    FollowResult C = follow(s2 == Side::Floor ? Side::Ceiling : Side::Floor, d, L.x + d * 2 * w_, nullptr);
-    const OnlineKind pass_kind = d > 0 ? OnlineKind::Merge : OnlineKind::Split;
-    if (C.status != FollowResult::Critical || C.cp->kind != pass_kind)
-      throw Failure{"the closing phase found no closing critical point near " + geometry::format_point(R_.odometry())};
-    // The cell lies on the far side of the obstacle from the robot.
-    return {*C.cp, s2 == Side::Floor ? PortSide::Up : PortSide::Down};
+  // Without the cycle algorithm: a plain raster scan. Follow the side the last lap ended on
+  // forward one lap width, lap across, and on; a critical point on the followed side closes
+  // the cell. The other side is never followed, so its critical points go unseen (Fig. 6.22).
+  Closing raster(std::vector<Stand> bridge, int d) {
+    Side s = Side::Floor;
+    for (;;) {
+      const Follow f = follow(s, d, bridge.front().p.x() + d * w_);
+      if (f.cp) return {*f.cp, (f.cp->kind == OnlineKind::Birth || f.cp->kind == OnlineKind::Death) ? PortSide::Point
+                                : s == Side::Floor                                                  ? PortSide::Up
+                                                                                                    : PortSide::Down};
+      if (!lap(s == Side::Floor)) throw Failure{"a lap across the cell from " + at_text(R_.odometry()) + " is blocked"};
+      bridge = {here()};
+      s = s == Side::Floor ? Side::Ceiling : Side::Floor;
+    }
   }
 
   // --- the exploration --------------------------------------------------------------------
   void explore() {
     // Find a first critical point: down to the floor, then follow it backwards (-x) to the
-    // boundary's leftmost turn.
+    // boundary's first turn.
     if (!lap(false)) throw Failure{"the robot cannot lap down from its start"};
-    FollowResult f = follow(Side::Floor, -1, -INFINITY, nullptr);
-    if (f.status != FollowResult::Critical) throw Failure{"no critical point found from the start"};
+    const Follow f = follow(Side::Floor, -1, -INFINITY);
+    if (!f.cp) throw Failure{"no critical point found from the start"};
     node_for(*f.cp);
     for (;;) {
       std::vector<double> dist;
@@ -429,11 +477,7 @@ class OnlinePlanner {
       for (std::uint32_t i = 0; i < nodes_.size(); ++i)
         for (int p = 0; p < static_cast<int>(nodes_[i].ports.size()); ++p) {
           if (nodes_[i].ports[p] >= 0) continue;
-          bool right = false;
-          PortSide ps = PortSide::Point;
-          port_of(nodes_[i].kind, p, right, ps);
-          const Point& a = (ps == PortSide::Up || ps == PortSide::Both) ? anchors_[i].second.p : anchors_[i].first.p;
-          const double dd = distance_to(dist, a);
+          const double dd = distance_to(dist, anchor(i, p).p);
           if (dd < best) best = dd, bn = i, bp = p;
         }
       if (bp < 0) {
@@ -445,7 +489,7 @@ class OnlinePlanner {
       bool right = false;
       PortSide ps = PortSide::Point;
       port_of(nodes_[bn].kind, bp, right, ps);
-      transit(pred, (ps == PortSide::Up || ps == PortSide::Both) ? anchors_[bn].second.p : anchors_[bn].first.p);
+      transit(pred, anchor(bn, bp).p);
       const std::size_t begin = R_.path().size() - 1;
       const std::size_t laps0 = laps_;
       const Closing c = cover_cell(bn, bp);
@@ -461,14 +505,22 @@ class OnlinePlanner {
       nodes_[bn].ports[bp] = e, nodes_[to].ports[tp] = e;
     }
   }
+  // Where a cell through a port starts: the run's top for the upper cells, else its bottom.
+  const Stand& anchor(std::uint32_t node, int port) const {
+    bool right = false;
+    PortSide ps = PortSide::Point;
+    port_of(nodes_[node].kind, port, right, ps);
+    return ps == PortSide::Up ? runs_[node].back() : runs_[node].front();
+  }
 
   OnlineRobot& R_;
   const OnlineOptions& o_;
   double w_;
   std::size_t budget_, steps_ = 0, laps_ = 0;
-  double same_;
+  bool ring_check_ = false;
+  double tol_;  // odometry comparisons: a lap arrives on a chain it was estimated to reach
   std::vector<OnlineNode> nodes_;
-  std::vector<std::pair<Stand, Stand>> anchors_;
+  std::vector<std::vector<Stand>> runs_;
   std::vector<OnlineEdge> edges_;
   std::vector<std::uint32_t> order_;
   // the driven graph
