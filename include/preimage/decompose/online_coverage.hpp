@@ -103,6 +103,9 @@ struct OnlineReport {
   std::string inconsistency;   // empty unless something did not add up
   double angle = 0, width = 0, robot_radius = 0, range = 0, noise = 0;
   std::size_t sensors = 0, laps = 0, readings = 0, steps = 0;
+  /// Reflex critical points (an obstacle ends) where the ring's minimum did not point back at
+  /// the obstacle: the ring's own critical point sensing would have misread them.
+  std::size_t ring_disagreements = 0;
   double resolution = 0;       // angular resolution of the normal estimate (pi / N), radians
   double length = 0, transit_length = 0;
   double target_area = 0;      // area of the configuration space component covered
