@@ -46,10 +46,15 @@ Outcome run(const Environment& env, double r, double angle, bool cycle = true, d
 void expect_no_collision(const Environment& env, const std::vector<Point>& path, double r) {
   using Seg = geometry::ExactKernel::Segment_2;
   const ExactFT r2 = ExactFT(r) * r;
+  const double m = 2 * r + 1e-6;  // boxes further apart than this cannot be within r
   for (std::size_t i = 0; i + 1 < path.size(); ++i) {
     const Seg s(geometry::to_exact(path[i]), geometry::to_exact(path[i + 1]));
-    for (std::size_t e = 0; e < env.num_vertices(); ++e)
+    const CGAL::Bbox_2 sb = path[i].bbox() + path[i + 1].bbox();
+    for (std::size_t e = 0; e < env.num_vertices(); ++e) {
+      const CGAL::Bbox_2 eb = env.vertex(e).bbox() + env.vertex(env.next(e)).bbox();
+      if (eb.xmin() > sb.xmax() + m || eb.xmax() < sb.xmin() - m || eb.ymin() > sb.ymax() + m || eb.ymax() < sb.ymin() - m) continue;
       ASSERT_GE(CGAL::squared_distance(s, Seg(env.exact_vertex(e), env.exact_vertex(env.next(e)))), r2) << "segment " << i;
+    }
   }
   ASSERT_TRUE(geometry::locate(env, path.front()).in_free_space());
 }
@@ -75,36 +80,34 @@ scene::Scene fixture(const std::string& name) { return scene::load_scene(std::st
 
 }  // namespace
 
-// Random environments: on the ones the robot finishes, the graph it built is the offline
-// one and the space is covered; it finishes most of them; it never claims a wrong graph.
+// Random environments at several angles: the robot finishes every one, its graph is the
+// offline one and the space is covered.
 TEST(OnlineCoverage, RandomEnvironmentsMatchTheOfflineReebGraph) {
-  int finished = 0, runs = 0;
   for (std::uint64_t seed = 1; seed <= 6; ++seed) {
     const Environment env = geometry::generators::random_environment(30, 3, seed);
     const double r = radius_for(env);
-    for (double angle : {33.0}) {
-      const Outcome o = run(env, r, angle);
-      ++runs;
-      if (o.rep.complete) {
-        ++finished;
-        expect_done(env, o, r);
-      } else {
-        EXPECT_FALSE(o.rep.inconsistency.empty());
-      }
+    for (double angle : {0.0, 33.0, 131.0}) {
+      SCOPED_TRACE("seed " + std::to_string(seed) + " at " + std::to_string(angle));
+      expect_done(env, run(env, r, angle), r);
     }
   }
-  EXPECT_GE(finished, 3) << "of " << runs;
 }
 
-TEST(OnlineCoverage, FinishesKnownRandomEnvironments) {
-  for (std::uint64_t seed : {1, 3, 5}) {
-    const Environment env = geometry::generators::random_environment(30, 3, seed);
-    const double r = radius_for(env);
-    SCOPED_TRACE("seed " + std::to_string(seed));
-    expect_done(env, run(env, r, 33), r);
+// The environments that broke the first planner, each at the angles it broke at.
+TEST(OnlineCoverage, FixturesThatBrokeTheFirstPlanner) {
+  const std::vector<std::pair<std::string, std::vector<double>>> cases{
+      {"several_critical_points_in_one_strip.json", {17, 33}},
+      {"turn_missed_by_the_ring_minimum.json", {0, 131}},
+      {"lap_blocked_at_a_critical_point.json", {0, 17}},
+  };
+  for (const auto& [name, angles] : cases) {
+    const auto s = fixture(name);
+    const Environment& env = s.require_environment();
+    for (double angle : angles) {
+      SCOPED_TRACE(name + " at " + std::to_string(angle));
+      expect_done(env, run(env, *s.robot_radius, angle), *s.robot_radius);
+    }
   }
-  const Environment env = geometry::generators::random_environment(30, 3, 4);
-  expect_done(env, run(env, radius_for(env), 0), radius_for(env));
 }
 
 TEST(OnlineCoverage, Gallery) {
@@ -115,6 +118,21 @@ TEST(OnlineCoverage, Gallery) {
   // cells close at critical points already known (Fig. 6.21: 1, 2, 3, 4, 3, 2).
   EXPECT_GT(o.rep.sensing_order.size(), o.rep.nodes.size());
   EXPECT_EQ(o.rep.sensing_order.front(), 0u);
+  // Other angles, 0 and 90 with the pillars' walls on slices (critical points that are
+  // whole walls) among them; 0 broke the first planner (a lap along the last wall).
+  for (double angle : {0.0, 45.0, 90.0, 123.0}) {
+    SCOPED_TRACE(angle);
+    expect_done(s.require_environment(), run(s.require_environment(), 0.2, angle), 0.2);
+  }
+}
+
+// The office generator: rooms, doors and corridors.
+TEST(OnlineCoverage, Office) {
+  const Environment env = geometry::generators::office(2, 3);
+  for (double angle : {7.0, 33.0}) {
+    SCOPED_TRACE(angle);
+    expect_done(env, run(env, 0.2, angle), 0.2);
+  }
 }
 
 // Fig. 6.22: the critical point a plain raster scan misses, found by the cycle algorithm.
@@ -135,40 +153,41 @@ TEST(OnlineCoverage, CeilingCriticalPointMissedByRasterFoundByCycle) {
   }
 }
 
-// With sensor noise the robot may fail, but it never claims completion with a wrong graph.
-TEST(OnlineCoverage, NoiseFailsGracefully) {
+// Sensor noise: the ring's readings are noisy but the planner senses critical points by its
+// odometry (the turn of the lateral displacement), so it still finishes with the offline
+// graph; the ring's minimum is only compared with the reflex critical points.
+TEST(OnlineCoverage, NoiseOnTheRingDoesNotBreakTheGraph) {
   const auto s = scene::load_scene(std::string(PREIMAGE_EXAMPLES) + "/gallery.json");
   const Environment& env = s.require_environment();
-  int complete = 0, failed = 0;
-  for (double noise : {0.002, 0.01, 0.05})
-    for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+  for (double noise : {0.002, 0.05})
+    for (std::uint64_t seed = 1; seed <= 2; ++seed) {
+      SCOPED_TRACE("noise " + std::to_string(noise) + " seed " + std::to_string(seed));
       const Outcome o = run(env, 0.2, 17, true, noise, seed);
-      if (o.rep.complete) {
-        ++complete;
-        EXPECT_TRUE(o.cmp.isomorphic) << "noise " << noise << " seed " << seed << ": " << o.cmp.detail;
-        EXPECT_GE(o.covered, 0.99);
-      } else {
-        ++failed;
-        EXPECT_FALSE(o.rep.inconsistency.empty());
-      }
-      expect_no_collision(env, o.rep.path, 0.2);
+      expect_done(env, o, 0.2);
+      EXPECT_GT(o.rep.readings, 0u);
     }
-  EXPECT_GT(complete, 0);  // small noise is tolerated
-  EXPECT_GT(failed, 0);    // large noise is reported, not hidden
 }
 
-// The floor plans: whatever happens, the robot never claims a graph that is not the offline one.
-TEST(OnlineCoverage, FloorPlansNeverClaimAWrongGraph) {
+// Both floor plans at angles off their walls: finished, isomorphic, covered. At 0 and 90
+// degrees several walls share a slice (a critical slice with more than three cells, which
+// the robot's nodes do not represent): there it stops with an inconsistency, never a wrong
+// graph.
+TEST(OnlineCoverage, FloorPlans) {
   for (const char* name : {"house_expo_room_0000.json", "house_expo_room_1451.json"}) {
     const auto sc = scene::import_houseexpo(std::string(PREIMAGE_FLOORPLANS) + "/" + name);
     const Environment& env = *sc.environment;
-    for (double angle : {0.0, 23.0}) {
-      const Outcome o = run(env, 0.2, angle);
+    for (double angle : {23.0, 60.0}) {
       SCOPED_TRACE(std::string(name) + " at " + std::to_string(angle));
-      if (o.rep.complete) EXPECT_TRUE(o.cmp.isomorphic) << o.cmp.detail;
-      else EXPECT_FALSE(o.rep.inconsistency.empty());
-      expect_no_collision(env, o.rep.path, 0.2);
+      expect_done(env, run(env, 0.2, angle), 0.2);
     }
+    const Outcome o = run(env, 0.2, 0);
+    SCOPED_TRACE(std::string(name) + " at 0");
+    if (o.rep.complete) {
+      EXPECT_TRUE(o.cmp.isomorphic) << o.cmp.detail;
+    } else {
+      EXPECT_FALSE(o.rep.inconsistency.empty());
+    }
+    expect_no_collision(env, o.rep.path, 0.2);
   }
 }
 
