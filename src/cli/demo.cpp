@@ -20,7 +20,7 @@ void DemoContext::figure(const std::string& file, const std::string& svg, const 
 namespace {
 // One entry per module, in architecture order; later modules append theirs.
 using Section = void (*)(DemoContext&);
-constexpr Section kSections[] = {demo_geometry, demo_beams, demo_beams_homotopy, demo_decompose, demo_coverage, demo_morse, demo_brushfire, demo_wallfollow, demo_wallfollow_pursuit, demo_landmarks, demo_tracking, demo_pursuit};
+constexpr Section kSections[] = {demo_geometry, demo_beams, demo_beams_homotopy, demo_decompose, demo_coverage, demo_morse, demo_brushfire, demo_online, demo_wallfollow, demo_wallfollow_pursuit, demo_landmarks, demo_tracking, demo_pursuit};
 
 void run_demo(const std::string& out) {
   make_dirs(out);

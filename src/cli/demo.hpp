@@ -19,6 +19,7 @@ void demo_decompose(DemoContext& ctx);
 void demo_coverage(DemoContext& ctx);
 void demo_morse(DemoContext& ctx);
 void demo_brushfire(DemoContext& ctx);
+void demo_online(DemoContext& ctx);
 void demo_beams(DemoContext& ctx);
 void demo_beams_homotopy(DemoContext& ctx);
 void demo_wallfollow(DemoContext& ctx);
