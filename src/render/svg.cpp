@@ -127,6 +127,7 @@ void SvgCanvas::label(const Point& p, const std::string& text, double size, cons
 }
 
 void SvgCanvas::arrows(const std::vector<Point>& pts, const std::string& colour, double spacing, double size) {
+  if (!(spacing > 0) || !std::isfinite(spacing)) return;  // no arrows (spacing 0 would never advance)
   double carry = spacing / 2;
   for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
     const double x0 = margin_ + (pts[i].x() - world_.xmin()) * scale_, y0 = margin_ + (world_.ymax() - pts[i].y()) * scale_;

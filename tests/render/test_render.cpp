@@ -3,6 +3,7 @@
 #include <preimage/render/figures.hpp>
 #include <preimage/render/html.hpp>
 
+#include <cmath>
 #include <cstdio>
 
 using namespace preimage;
@@ -43,6 +44,18 @@ TEST(Svg, ArrowsPointTheWayThePathRuns) {
     at = svg.find("<polygon points=\"", at + 1);
   }
   EXPECT_EQ(arrows, 3u);  // 100 px of line: at 15, 45 and 75 px
+}
+
+// Arrow spacing 0 (or negative, or NaN) once never advanced along the segment and hung the
+// drawing; it draws no arrowheads and the polyline of path() is still there.
+TEST(Svg, ArrowSpacingZeroDrawsNoArrows) {
+  for (double spacing : {0.0, -5.0, std::nan("")}) {
+    render::SvgCanvas c(CGAL::Bbox_2(0, 0, 10, 5), 120, 10);
+    c.path({geometry::Point(0, 1), geometry::Point(10, 1), geometry::Point(10, 4)}, render::Style{"none", "#000", 1, 1, ""}, "p", spacing);
+    const std::string svg = c.str();
+    EXPECT_EQ(svg.find("<polygon points=\""), std::string::npos) << spacing;
+    EXPECT_NE(svg.find("<polyline"), std::string::npos) << spacing;
+  }
 }
 
 TEST(Svg, EscapesTextAndDeduplicatesLegend) {

@@ -48,7 +48,7 @@ class SvgCanvas {
   void point(const Point& p, double radius_px, const Style& style, const std::string& title = "");
   void label(const Point& p, const std::string& text, double size_px = 12, const std::string& colour = "#222");
   /// Small arrowheads along a polyline, one every `spacing_px` of drawn length, pointing the
-  /// way it runs.
+  /// way it runs. A spacing that is not a positive finite number draws none.
   void arrows(const std::vector<Point>& pts, const std::string& colour, double spacing_px = 70, double size_px = 5);
   /// A path something follows (a robot, a pursuer, a sample path of a body): the polyline
   /// with arrowheads in its stroke colour, tagged `data-path` so the interactive report
