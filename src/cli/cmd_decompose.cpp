@@ -467,7 +467,7 @@ void run_cover_online(const CoverArgs& a, const scene::Scene& s, double radius, 
                 {"width", rep.width}, {"robot_radius", rep.robot_radius}, {"angle", rep.angle},
                 {"sensors", rep.sensors}, {"range", rep.range}, {"noise", rep.noise}, {"resolution_rad", rep.resolution},
                 {"tolerance", tol}, {"length", rep.length}, {"transit_length", rep.transit_length}, {"laps", rep.laps},
-                {"readings", rep.readings}, {"steps", rep.steps},
+                {"readings", rep.readings}, {"steps", rep.steps}, {"ring_disagreements", rep.ring_disagreements},
                 {"reeb_graph", {{"nodes", nodes}, {"edges", edges}, {"sensing_order", rep.sensing_order}}},
                 {"offline", {{"isomorphic", cmp.isomorphic}, {"critical_slices", cmp.offline_nodes}, {"cells", cmp.offline_edges},
                              {"max_offset", cmp.max_offset}, {"detail", cmp.detail}}},
@@ -477,7 +477,8 @@ void run_cover_online(const CoverArgs& a, const scene::Scene& s, double radius, 
   }
   std::cout << "online coverage (" << (a.raster ? "plain raster scan" : "cycle algorithm") << ") with width " << geometry::format_number(rep.width)
             << ", robot radius " << geometry::format_number(rep.robot_radius) << ", sweep at " << geometry::format_number(rep.angle) << " degrees, "
-            << rep.sensors << " sensors (normal resolution " << geometry::format_number(rep.resolution * 180 / 3.141592653589793) << " degrees)";
+            << rep.sensors << " sensors (normal resolution " << geometry::format_number(rep.resolution * 180 / 3.141592653589793)
+            << " degrees; the ring's minimum missed " << rep.ring_disagreements << " of the reflex critical points the robot's odometry sensed)";
   if (rep.noise > 0) std::cout << ", noise " << geometry::format_number(rep.noise);
   std::cout << "\n";
   std::cout << (rep.complete ? "complete: every critical point has all its edges explored" : "NOT complete: " + rep.inconsistency) << "\n";
