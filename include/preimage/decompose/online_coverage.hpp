@@ -14,25 +14,29 @@
 // against the workspace (ray casting in double: a measurement, plus Gaussian noise). The
 // planner sees only those readings and its odometry, never the map.
 //
-// Critical point sensing. The direction of the ring's minimum reading estimates the surface
-// normal n (towards the obstacle), quantised to the sensor spacing 2 pi / N. At a critical
-// point n is parallel to the sweep direction (Lemma 5.5.2): while following, a critical point
-// is sensed where the sign of n's component across the sweep flips (a sensor pointing
-// exactly along the sweep reads "parallel" and does not flip), i.e. where the followed
-// boundary turns back; which way n points along the sweep tells death/merge (an extreme in
-// +x) and split/birth (in -x) apart. The critical point is placed at the extreme abscissa
-// the robot's odometry recorded during that follow (a vertical run: its two ends). Sensor
-// resolution: the quantised normal is within pi / N of the true one.
+// Critical point sensing. The robot follows the boundary vertex to vertex; a critical point,
+// where the boundary's normal is parallel to the sweep direction (Lemma 5.5.2), is an
+// extreme of h = x along the boundary, so it is sensed where the lateral displacement
+// (odometry) turns back: a vertex, or a vertical run, placed exactly on its slice. The turn
+// the boundary makes there gives the kind: a convex free corner ends free space (death
+// ahead, birth behind), a reflex one ends an obstacle (merge, split). The ring's minimum (the
+// text's method) is only compared at reflex critical points, where it should point back at
+// the obstacle; at a concave corner it points at either of two walls r away, in a passage
+// barely 2r wide at the far side, so it is not trusted. Sensor noise therefore changes no
+// decision; `ring_disagreements` counts where the ring would have misread.
 //
-// The cycle algorithm (Fig. 6.23), per strip between two laps w apart: forward phase: follow
-// the side the last lap ended on forward until the lateral displacement is w or a critical
-// point is sensed; reverse phase: lap across, then follow the other side in reverse back to
-// the last lap's slice (a critical point sensed there is the cell's closing one); closing
-// phase: if the reverse follow reaches that slice somewhere other than the last lap's end,
-// an obstacle sits between: lap towards the strip and follow it forward to its extreme, the
-// closing critical point. Both sides of every strip are followed, so ceiling critical points
-// (Fig. 6.22) are found. With `cycle = false` the same simulator runs a plain raster scan
-// (follow one side, lap, follow the other side), which misses them.
+// The cycle algorithm (Fig. 6.23) made exact, per strip from the last lap (slice x0, floor
+// point F0, ceiling point C0) towards the target slice x0 + d w: follow the floor forward to
+// the target (forward phase); back across the last lap, follow the ceiling forward (the
+// ceiling's boundary following of the reverse phase); a critical point sensed on either
+// moves the target back to its slice. Closing phase: a lap across the target slice from the
+// side without the target's critical point; arriving where odometry says the other chain
+// crosses proves the strip clear. Hitting an obstacle instead, follow it back against the
+// sweep to where it starts (a nearer critical point, the new target) and lap from there both
+// ways until both laps arrive on the chains. The target only moves back, so the cell closes
+// at its first critical point along the sweep however many the strip holds. With
+// `cycle = false` the same simulator runs a plain raster scan (follow one side per strip,
+// alternating, lap across), which misses ceiling critical points.
 //
 // Completeness relies on w <= 2r: every obstacle of the configuration space is at least 2r
 // wide, so none hides between two laps. Larger widths are refused.
@@ -42,9 +46,9 @@
 // node to its closing critical point; the robot travels (retracing its own path, shortest
 // over what it has driven) to the nearest node with an unexplored port, and stops when every
 // port is explored. Anything the graph cannot explain (a closing point whose port is already
-// explored, a lap that cannot start, a boundary that turns back without a sensed critical
-// point, a retrace that senses one) is reported as an inconsistency and the robot does not
-// claim completion.
+// explored, a lap that cannot start or arrives past a chain, a boundary that turns back at
+// once, as where several critical points share a slice) is reported as an inconsistency and
+// the robot does not claim completion.
 //
 // Output: the path in input coordinates, certified segment by segment (inside the
 // configuration space polygon exactly and r from every obstacle) like plan_coverage's.
