@@ -129,7 +129,6 @@ class VisibilityIndex {
   };
   template <class Q, class Count = NoCount>
   Located locate_triangle(const Q& q, const Point& approx, bool name_outside = true, Count count = {}) const;
-  bool build_slab(const std::vector<std::uint32_t>& list, double x0, double y0, double x1, double y1);
   static constexpr std::size_t kSlabMinTriangles = 12;  // a cell listing more gets a slab
   template <class Q>
   void compute_at(const Q& q, const Point& approx, VisibilityPolygon& out, bool coordinates,
