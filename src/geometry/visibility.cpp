@@ -297,35 +297,53 @@ VisibilityIndex::VisibilityIndex(const Environment& env) : env_(&env), tri_(env)
   for (std::size_t c = 0; c < ncells; ++c)
     if (slab_ids_fit && count[c] > kSlabMinTriangles) heavy[c] = 1, any_heavy = true;
 
-  // 3. A light cell's entries, with their overlap areas (to sort by). A heavy cell's
-  // triangles are met again in the row sweeps below (runs sorted by row and first cell).
+  // 3. A light cell's entries, in place (the counts give each cell its slice), with their
+  // overlap areas to sort by. Only a cell met by a single triangle can lie inside it (a
+  // second closed triangle meeting a box inside an open triangle would overlap it), so only
+  // those get the inside test, and only the others need areas. A heavy cell's triangles are
+  // met again in the row sweeps below (runs sorted by row and first cell).
   struct Entry {
-    std::uint32_t cell, tri;
-    double area;
+    std::uint32_t tri;
+    float area;
   };
-  std::vector<Entry> entries;
-  for (const Run& r : runs) {
-    const Point* const V[3] = {&P[T[r.tri].v[0]], &P[T[r.tri].v[1]], &P[T[r.tri].v[2]]};
-    const std::uint32_t j = r.row, len = r.last - r.first + 1;
-    // Long runs (thin triangles across many cells): one clipped area for the run, shared
-    // out, instead of one per cell (the area only orders the lists).
-    double shared = -1;
-    for (std::uint32_t i = r.first; i <= r.last; ++i) {
-      const std::size_t c = std::size_t(j) * gx_ + i;
-      if (heavy[c]) continue;
-      const bool inside = vis_box_inside_triangle(V, xs[i], ys[j], xs[i + 1], ys[j + 1]);
-      double area = std::numeric_limits<double>::infinity();
-      if (!inside && len > 4) {
-        if (shared < 0) shared = vis_clipped_area(V, xs[r.first], ys[j], xs[r.last + 1], ys[j + 1]) / len;
-        area = shared;
-      } else if (!inside) {
-        area = vis_clipped_area(V, xs[i], ys[j], xs[i + 1], ys[j + 1]);
+  std::vector<std::uint32_t> light_off(ncells + 1, 0);
+  for (std::size_t c = 0; c < ncells; ++c) light_off[c + 1] = light_off[c] + (heavy[c] ? 0 : count[c]);
+  std::vector<Entry> entries(light_off[ncells]);
+  {
+    std::vector<std::uint32_t> fill(light_off.begin(), light_off.end() - 1);
+    for (const Run& r : runs) {
+      const Point* const V[3] = {&P[T[r.tri].v[0]], &P[T[r.tri].v[1]], &P[T[r.tri].v[2]]};
+      const std::uint32_t j = r.row, len = r.last - r.first + 1;
+      // Long runs (thin triangles across many cells): one clipped area for the run, shared
+      // out, instead of one per cell (the area only orders the lists).
+      double shared = -1;
+      for (std::uint32_t i = r.first; i <= r.last; ++i) {
+        const std::size_t c = std::size_t(j) * gx_ + i;
+        if (heavy[c]) continue;
+        Entry& e = entries[fill[c]++];
+        e.tri = r.tri, e.area = 0;
+        if (count[c] == 1) {
+          if (vis_box_inside_triangle(V, xs[i], ys[j], xs[i + 1], ys[j + 1])) e.tri |= kInsideCell;
+        } else if (len > 4) {
+          if (shared < 0) shared = vis_clipped_area(V, xs[r.first], ys[j], xs[r.last + 1], ys[j + 1]) / len;
+          e.area = static_cast<float>(shared);
+        } else {
+          e.area = static_cast<float>(vis_clipped_area(V, xs[i], ys[j], xs[i + 1], ys[j + 1]));
+        }
       }
-      entries.push_back({static_cast<std::uint32_t>(c), inside ? r.tri | kInsideCell : r.tri, area});
     }
   }
-  if (any_heavy)
-    std::sort(runs.begin(), runs.end(), [](const Run& a, const Run& b) { return a.row != b.row ? a.row < b.row : a.first < b.first; });
+  if (any_heavy) {  // by row, then first cell: two stable counting passes
+    std::vector<Run> sorted(runs.size());
+    auto pass = [&](std::vector<Run>& from, std::vector<Run>& to, std::uint32_t n, auto key) {
+      std::vector<std::uint32_t> at(n + 1, 0);
+      for (const Run& r : from) ++at[key(r) + 1];
+      for (std::uint32_t k = 1; k <= n; ++k) at[k] += at[k - 1];
+      for (const Run& r : from) to[at[key(r)]++] = r;
+    };
+    pass(runs, sorted, gx_, [](const Run& r) { return r.first; });
+    pass(sorted, runs, gy_, [](const Run& r) { return r.row; });
+  }
 
   // For the expansion: the slot of each triangle edge in the neighbour across it.
   back_.assign(T.size(), {0, 0, 0, 0});
@@ -618,16 +636,10 @@ VisibilityIndex::VisibilityIndex(const Environment& env) : env_(&env), tri_(env)
 
   // 5. Cell lists in cell order: a slab entry, or the triangles sorted by overlap area
   // (largest first; a heavy cell without a slab gets its areas here).
-  std::vector<std::uint32_t> cell_start(ncells + 1, 0), by_cell(entries.size());
-  for (const Entry& e : entries) ++cell_start[e.cell + 1];
-  for (std::size_t c = 1; c <= ncells; ++c) cell_start[c] += cell_start[c - 1];
-  {
-    std::vector<std::uint32_t> pos(cell_start.begin(), cell_start.end() - 1);
-    for (std::size_t k = 0; k < entries.size(); ++k) by_cell[pos[entries[k].cell]++] = static_cast<std::uint32_t>(k);
-  }
   cell_off_.assign(ncells + 1, 0);
   cell_tris_.clear();
   cell_tris_.reserve(entries.size() + slabs_.size());
+  auto by_area = [](const Entry& a, const Entry& b) { return a.area != b.area ? a.area > b.area : a.tri < b.tri; };
   std::vector<Entry> own;
   for (std::size_t cell = 0; cell < ncells; ++cell) {
     if (slab_of[cell] >= 0) {
@@ -638,22 +650,15 @@ VisibilityIndex::VisibilityIndex(const Environment& env) : env_(&env), tri_(env)
       for (std::uint32_t k = stash_at[cell]; k < stash_at[cell] + count[cell]; ++k) {
         const std::uint32_t t = stash[k];
         const Point* const V[3] = {&P[T[t].v[0]], &P[T[t].v[1]], &P[T[t].v[2]]};
-        const bool inside = vis_box_inside_triangle(V, xs[i], ys[j], xs[i + 1], ys[j + 1]);
-        own.push_back({static_cast<std::uint32_t>(cell), inside ? t | kInsideCell : t,
-                       inside ? std::numeric_limits<double>::infinity() : vis_clipped_area(V, xs[i], ys[j], xs[i + 1], ys[j + 1])});
+        own.push_back({t, static_cast<float>(vis_clipped_area(V, xs[i], ys[j], xs[i + 1], ys[j + 1]))});
       }
-      std::sort(own.begin(), own.end(), [](const Entry& a, const Entry& b) {
-        return a.area != b.area ? a.area > b.area : (a.tri & ~kInsideCell) < (b.tri & ~kInsideCell);
-      });
+      std::sort(own.begin(), own.end(), by_area);
       for (const Entry& e : own) cell_tris_.push_back(e.tri);
     } else {
-      std::uint32_t* const first = by_cell.data() + cell_start[cell];
-      std::uint32_t* const last = by_cell.data() + cell_start[cell + 1];
-      std::sort(first, last, [&](std::uint32_t a, std::uint32_t b) {
-        if (entries[a].area != entries[b].area) return entries[a].area > entries[b].area;
-        return entries[a].tri < entries[b].tri;
-      });
-      for (const std::uint32_t* k = first; k != last; ++k) cell_tris_.push_back(entries[*k].tri);
+      Entry* const first = entries.data() + light_off[cell];
+      Entry* const last = entries.data() + light_off[cell + 1];
+      if (last - first > 1) std::sort(first, last, by_area);
+      for (const Entry* e = first; e != last; ++e) cell_tris_.push_back(e->tri);
     }
     cell_off_[cell + 1] = static_cast<std::uint32_t>(cell_tris_.size());
   }
