@@ -172,7 +172,9 @@ class VisibilityIndex {
     std::uint32_t edges, edge_end;    // slab_edges_[edges, edge_end), sorted
     std::uint32_t others, others_end; // slab_others_[others, others_end)
     bool vertical;                    // edges cross from bottom to top (else left to right)
-    double lo, hi, mid;               // the cell's extent along the edges (x, or y if vertical)
+    double lo, hi;                    // the cell's extent along the edges (x, or y if vertical)
+    double mid;                       // where the edges' w_mid are taken: the first cell of the
+                                      // block of cells sharing this run of edges (<= 32 cells away)
   };
   double x0_, y0_, cw_, ch_;
   std::uint32_t gx_, gy_;
