@@ -167,15 +167,7 @@ CoverageReport plan_brushfire(const Planning& P) {
   }
   if (path.points.empty()) throw InputError("coverage: no lap fits in the free space at this width");
 
-  CoverageReport rep;
-  finish_path(P, std::move(path), rep);
-  rep.rounding_detours = builder.detours;
-  rep.laps = lap_count;
-  rep.cells = n;
-  rep.critical_points = bd.num_nodes();
-  rep.cell_order = order;
-  rep.sweeps.assign(order.size(), 0);
-  return rep;
+  return pattern_report(P, std::move(path), builder.detours, lap_count, n, bd.num_nodes(), order);
 }
 
 }  // namespace preimage::decompose::detail
