@@ -100,7 +100,10 @@ CoverageReport plan_brushfire(const Planning& P) {
         }
         std::reverse(chain.begin(), chain.end());
       }
-      chains.push_back({std::move(chain), false});
+      // a stub shorter than w/4 (into a corner the first lap cuts) is within the laps' reach
+      double len = 0;
+      for (std::size_t k = 0; k + 1 < chain.size(); ++k) len += gap_between(chain[k], chain[k + 1]);
+      if (len >= w / 4) chains.push_back({std::move(chain), false});
     }
     runs = std::move(chains);
   }
