@@ -5,6 +5,7 @@
 #include <preimage/decompose/cell_locator.hpp>
 #include <preimage/geometry/random_point.hpp>
 #include <preimage/decompose/coverage.hpp>
+#include <preimage/decompose/brushfire.hpp>
 #include <preimage/decompose/morse.hpp>
 #include <preimage/decompose/online_coverage.hpp>
 #include <preimage/geometry/generators.hpp>
@@ -134,6 +135,18 @@ void boustrophedon_decomposition(benchmark::State& state) {
   state.counters["cells"] = static_cast<double>(cells);
 }
 
+void brushfire_decomposition(benchmark::State& state) {
+  std::size_t cells = 0, critical = 0, axis = 0;
+  for (auto _ : state) {
+    const decompose::BrushfireDecomposition b(field());
+    cells = b.cells().size(), critical = b.critical_points().size(), axis = b.gvd().medial_edges().size();
+    benchmark::DoNotOptimize(cells);
+  }
+  state.counters["cells"] = static_cast<double>(cells);
+  state.counters["critical_points"] = static_cast<double>(critical);
+  state.counters["axis_edges"] = static_cast<double>(axis);
+}
+
 void pattern_coverage(benchmark::State& state, decompose::Pattern p) {
   decompose::CoverageReport rep;
   for (auto _ : state) {
@@ -156,6 +169,8 @@ BENCHMARK_CAPTURE(morse_decomposition, spike, decompose::SliceFamily::Spike)->Na
 BENCHMARK_CAPTURE(morse_decomposition, squarel, decompose::SliceFamily::Squarel)->Name("morse/preimage/squarel")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(morse_decomposition, linear, decompose::SliceFamily::Linear)->Name("morse/preimage/linear-generic")->Unit(benchmark::kMillisecond);
 BENCHMARK(boustrophedon_decomposition)->Name("morse/reference/linear-generic")->Unit(benchmark::kMillisecond);
+BENCHMARK(brushfire_decomposition)->Name("morse/preimage/brushfire")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(pattern_coverage, brushfire, decompose::Pattern::Brushfire)->Name("pattern-coverage/preimage/brushfire")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(pattern_coverage, spiral, decompose::Pattern::Spiral)->Name("pattern-coverage/preimage/spiral")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(pattern_coverage, spike, decompose::Pattern::Spike)->Name("pattern-coverage/preimage/spike")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(pattern_coverage, squarel, decompose::Pattern::Squarel)->Name("pattern-coverage/preimage/squarel")->Unit(benchmark::kMillisecond);

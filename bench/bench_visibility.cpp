@@ -4,6 +4,7 @@
 // and combs from about 10^2 to 3 * 10^4 vertices, random environments with holes.
 //
 // Per map:
+//   preprocess/<map>                building the VisibilityIndex (triangulation, grid, slabs)
 //   locate/<map>                    point location alone (counter tests_per_locate)
 //   abstract/preimage/<map>         compute_abstract into a reused polygon: ids only
 //   compute/preimage/<map>          compute(q, out) into a reused polygon, with coordinates
@@ -69,7 +70,8 @@ struct Case {
   bool identical = true;
 };
 
-std::string floorplan(const char* name) { return std::string("/work/shared/data/floorplans/").append(name); }
+// The repository's copies (examples/floorplans), so a clean clone runs the bench.
+std::string floorplan(const char* name) { return std::string(PREIMAGE_BENCH_EXAMPLES).append("/floorplans/").append(name); }
 
 const std::map<std::string, std::function<Environment()>>& maps() {
   static const std::map<std::string, std::function<Environment()>> m = {
@@ -104,6 +106,18 @@ Case& get_case(const std::string& name) {
     if (canonical_cycle(c.ours->compute(q.p).points()) != canonical_cycle(c.cgal->compute(q.p, q.loc))) c.identical = false;
   }
   return cache.emplace(name, std::move(c)).first->second;
+}
+
+// Building the index alone, repeatedly (the environment built once, outside the loop).
+void bm_preprocess(benchmark::State& state, const std::string& name) {
+  static std::map<std::string, std::unique_ptr<Environment>> envs;
+  auto& env = envs[name];
+  if (!env) env = std::make_unique<Environment>(maps().at(name)());
+  for (auto _ : state) {
+    VisibilityIndex index(*env);
+    benchmark::DoNotOptimize(&index);
+  }
+  state.counters["vertices"] = static_cast<double>(env->vertices().size());
 }
 
 void common_counters(benchmark::State& state, const Case& c, std::size_t allocs, std::size_t queries) {
@@ -229,6 +243,7 @@ void register_all() {
         ->Unit(benchmark::kMicrosecond);
   };
   for (const auto& [name, make] : maps()) {
+    reg("preprocess/", bm_preprocess, name)->Unit(benchmark::kMillisecond);
     reg("locate/", bm_locate, name);
     reg("abstract/preimage/", bm_compute_reused, name, true);
     reg("abstract/reference/", bm_reference, name);

@@ -146,7 +146,7 @@ void demo_morse(DemoContext& ctx) {
 void demo_brushfire(DemoContext& ctx) {
   using namespace geometry;
   auto& R = ctx.report;
-  R.section("Cell decompositions: brushfire — the distance to the obstacles (6.2.3, Figs. 6.15–6.17)");
+  R.section("Cell decompositions: distance functions — brushfire and the tethered wave front (6.2.3, Figs. 6.15–6.18)");
   scene::Scene field = coverage_field();
   const Environment& env = *field.environment;
   const decompose::BrushfireDecomposition b(env);
@@ -172,6 +172,21 @@ void demo_brushfire(DemoContext& ctx) {
   render::draw_configuration_space(cc, geometry::ConfigurationSpace(env, 0.2));
   decompose::draw_coverage(cc, rep);
   ctx.figure("decompose-brushfire-coverage.svg", cc.str(), "Brushfire coverage pattern (Fig. 6.17)");
+
+  // The tethered robot (Fig. 6.18): fronts of the geodesic distance from its anchor.
+  decompose::CoverageOptions t;
+  t.robot_radius = 0.2, t.pattern = decompose::Pattern::Wavefront, t.start = Point(0.5, 0.5);
+  const auto tether = decompose::plan_coverage(env, t);
+  const auto tq = decompose::measure_coverage(env, tether);
+  R.result("Tethered coverage from the anchor " + format_point(*t.start) + ": laps along the wave fronts of the geodesic distance (constant "
+           "tether length), 0.4 apart, outwards; the fronts' cusps are where the fronts from either side of an obstacle collided. Length " +
+           format_number(std::round(tether.length * 10) / 10) + ", " + std::to_string(tether.laps) + " laps, " +
+           format_number(std::round(tq.covered_fraction * 1000) / 10) + "% covered, every segment certified.");
+  render::SvgCanvas tc(render::scene_box(field));
+  render::draw_scene(tc, field);
+  render::draw_configuration_space(tc, geometry::ConfigurationSpace(env, 0.2));
+  decompose::draw_coverage(tc, tether);
+  ctx.figure("decompose-wavefront-coverage.svg", tc.str(), "Tethered robot: wave fronts of constant tether length (Fig. 6.18)");
 }
 
 // Online coverage (6.2.4): the robot that does not know the field builds its Reeb graph as

@@ -13,6 +13,8 @@
 #include <preimage/error.hpp>
 #include <preimage/union_find.hpp>
 
+#include "cell_graph.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -248,20 +250,12 @@ BrushfireDecomposition::BrushfireDecomposition(const Environment& env, const geo
 }
 
 std::vector<std::vector<std::uint32_t>> BrushfireDecomposition::adjacency() const {
-  std::vector<std::vector<std::uint32_t>> at_node(nodes_.size()), adj(cells_.size());
+  std::vector<std::vector<std::uint32_t>> at_node(nodes_.size());
   for (std::uint32_t c = 0; c < cells_.size(); ++c) {
     if (cells_[c].lower != BrushfireCell::kNone) at_node[cells_[c].lower].push_back(c);
     if (cells_[c].upper != BrushfireCell::kNone) at_node[cells_[c].upper].push_back(c);
   }
-  for (const auto& list : at_node)
-    for (const std::uint32_t a : list)
-      for (const std::uint32_t b : list)
-        if (a != b) adj[a].push_back(b);
-  for (auto& l : adj) {
-    std::sort(l.begin(), l.end());
-    l.erase(std::unique(l.begin(), l.end()), l.end());
-  }
-  return adj;
+  return detail::adjacency_from_groups(at_node, cells_.size());
 }
 
 // The point of segment qp (a piece of the axis edge e) where D = level, D going from dq to

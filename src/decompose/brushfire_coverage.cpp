@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
 namespace preimage::decompose::detail {
 
@@ -45,9 +46,10 @@ CoverageReport plan_brushfire(const Planning& P) {
   for (double lam = w / 2; lam < top; lam += w)
     for (auto& c : bd.level_curves(lam, sag)) laps[c.cell].push_back({std::move(c.points), true});
   // The axis where the flow line's part above its last lap is longer than w/2 (or no lap
-  // crosses it), from D = w/8 up: runs of such points.
+  // crosses it): followed as whole runs of the axis with D >= w/4 (a run's gaps, where the
+  // laps alone would do, cost less to drive along than to transit around), so that a cell's
+  // axis is a few chains rather than many fragments.
   auto needs_axis = [&](double d) {
-    if (d < w / 8) return false;
     if (d <= w / 2) return true;
     // height of the flow line above its last lap; a lap exactly at D(m) does not exist (the
     // slice at the axis' own level is the axis), so a remainder of 0 is a whole w. The
@@ -57,11 +59,12 @@ CoverageReport plan_brushfire(const Planning& P) {
   };
   std::vector<std::vector<Lap>> axis(n);
   for (const auto& piece : bd.axis_pieces()) {
+    bool wanted = false;
+    for (const double d : piece.clearance) wanted = wanted || (d >= w / 4 && needs_axis(d));
+    if (!wanted) continue;
     Lap run{{}, false};
     for (std::size_t k = 0; k < piece.points.size(); ++k) {
-      const bool want = needs_axis(piece.clearance[k]) || (k > 0 && needs_axis(piece.clearance[k - 1])) ||
-                        (k + 1 < piece.points.size() && needs_axis(piece.clearance[k + 1]));
-      if (want) {
+      if (piece.clearance[k] >= w / 4) {
         run.pts.push_back(piece.points[k]);
       } else if (!run.pts.empty()) {
         if (run.pts.size() >= 2) axis[piece.cell].push_back(std::move(run));
@@ -70,25 +73,39 @@ CoverageReport plan_brushfire(const Planning& P) {
     }
     if (run.pts.size() >= 2) axis[piece.cell].push_back(std::move(run));
   }
-
-  // Runs that meet end to end (at an axis vertex of degree 2) become one.
+  // Runs that meet end to end (at an axis vertex) become one chain: greedy, from each run
+  // on through any unused run starting or ending where it ends.
   for (auto& runs : axis) {
-    for (bool merged = true; merged;) {
-      merged = false;
-      for (std::size_t i = 0; i < runs.size() && !merged; ++i)
-        for (std::size_t j = 0; j < runs.size() && !merged; ++j) {
-          if (i == j) continue;
-          auto& a = runs[i].pts;
-          auto& b = runs[j].pts;
-          if (a.back() == b.back()) std::reverse(b.begin(), b.end());
-          else if (a.front() == b.front()) std::reverse(a.begin(), a.end());
-          else if (a.front() == b.back()) std::swap(a, b);
-          if (a.back() != b.front()) continue;
-          a.insert(a.end(), b.begin() + 1, b.end());
-          runs.erase(runs.begin() + static_cast<std::ptrdiff_t>(j));
-          merged = true;
+    if (runs.size() < 2) continue;
+    std::map<std::pair<double, double>, std::vector<std::size_t>> at_end;
+    auto key = [](const Point& p) { return std::make_pair(p.x(), p.y()); };
+    for (std::size_t i = 0; i < runs.size(); ++i) at_end[key(runs[i].pts.front())].push_back(i), at_end[key(runs[i].pts.back())].push_back(i);
+    std::vector<char> used(runs.size(), 0);
+    std::vector<Lap> chains;
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      if (used[i]) continue;
+      used[i] = 1;
+      std::vector<Point> chain = runs[i].pts;
+      for (int side = 0; side < 2; ++side) {
+        for (bool grown = true; grown;) {
+          grown = false;
+          for (const std::size_t j : at_end[key(chain.back())]) {
+            if (used[j]) continue;
+            auto pts = runs[j].pts;
+            if (pts.front() != chain.back()) std::reverse(pts.begin(), pts.end());
+            chain.insert(chain.end(), pts.begin() + 1, pts.end());
+            used[j] = 1, grown = true;
+            break;
+          }
         }
+        std::reverse(chain.begin(), chain.end());
+      }
+      // a stub shorter than w/4 (into a corner the first lap cuts) is within the laps' reach
+      double len = 0;
+      for (std::size_t k = 0; k + 1 < chain.size(); ++k) len += gap_between(chain[k], chain[k + 1]);
+      if (len >= w / 4) chains.push_back({std::move(chain), false});
     }
+    runs = std::move(chains);
   }
 
   // Cell order: the exhaustive walk of the adjacency graph from the cell of the lap nearest
@@ -153,15 +170,7 @@ CoverageReport plan_brushfire(const Planning& P) {
   }
   if (path.points.empty()) throw InputError("coverage: no lap fits in the free space at this width");
 
-  CoverageReport rep;
-  finish_path(P, std::move(path), rep);
-  rep.rounding_detours = builder.detours;
-  rep.laps = lap_count;
-  rep.cells = n;
-  rep.critical_points = bd.num_nodes();
-  rep.cell_order = order;
-  rep.sweeps.assign(order.size(), 0);
-  return rep;
+  return pattern_report(P, std::move(path), builder.detours, lap_count, n, bd.num_nodes(), order);
 }
 
 }  // namespace preimage::decompose::detail

@@ -36,6 +36,10 @@ struct PathBuilder {
   void go(const Point& z, Move move);
 };
 
+/// The report of a cell-by-cell pattern: finish_path, then the counts.
+CoverageReport pattern_report(const Planning& P, Polyline path, std::size_t detours, std::size_t laps, std::size_t cells, std::size_t nodes,
+                              std::vector<std::uint32_t> order);
+
 /// 6.2.1's exhaustive walk: cells in depth-first order of the adjacency graph from `first`
 /// (neighbours in their listed order), then any cell the walk did not reach, the same way.
 std::vector<std::uint32_t> depth_first_order(const std::vector<std::vector<std::uint32_t>>& adj, std::uint32_t first);

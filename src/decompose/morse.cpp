@@ -2,6 +2,8 @@
 // Morse decompositions with variable slices (6.2.3); the method is described in morse.hpp.
 #include <preimage/decompose/morse.hpp>
 
+#include "cell_graph.hpp"
+
 #include <preimage/error.hpp>
 #include <preimage/geometry/queries.hpp>
 
@@ -1132,16 +1134,7 @@ std::vector<std::vector<std::uint32_t>> MorseDecomposition::adjacency() const {
     for (const auto& cyc : cells_[k].cycles)
       for (const MorsePiece& p : cyc)
         if (p.arc >= 0) by_arc[static_cast<std::size_t>(p.arc)].push_back(k);
-  std::vector<std::vector<std::uint32_t>> adj(cells_.size());
-  for (const auto& list : by_arc)
-    for (const std::uint32_t a : list)
-      for (const std::uint32_t b : list)
-        if (a != b) adj[a].push_back(b);
-  for (auto& l : adj) {
-    std::sort(l.begin(), l.end());
-    l.erase(std::unique(l.begin(), l.end()), l.end());
-  }
-  return adj;
+  return detail::adjacency_from_groups(by_arc, cells_.size());
 }
 
 std::vector<std::vector<Point>> MorseDecomposition::cell_rings(std::size_t cell, double max_error) const {

@@ -359,14 +359,19 @@ CoverageReport plan_pattern(const Planning& P) {
   }
   if (built.points.empty()) throw InputError("coverage: no lap fits in the free space at this width");
 
+  return pattern_report(P, std::move(built), builder.detours, lap_count, n, m.num_nodes(), order);
+}
+
+CoverageReport pattern_report(const Planning& P, Polyline path, std::size_t detours, std::size_t laps, std::size_t cells, std::size_t nodes,
+                              std::vector<std::uint32_t> order) {
   CoverageReport rep;
-  finish_path(P, std::move(built), rep);
-  rep.rounding_detours = builder.detours;
-  rep.laps = lap_count;
-  rep.cells = n;
-  rep.critical_points = m.num_nodes();
-  rep.cell_order = order;
+  finish_path(P, std::move(path), rep);
+  rep.rounding_detours = detours;
+  rep.laps = laps;
+  rep.cells = cells;
+  rep.critical_points = nodes;
   rep.sweeps.assign(order.size(), 0);
+  rep.cell_order = std::move(order);
   return rep;
 }
 

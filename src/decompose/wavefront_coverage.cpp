@@ -4,19 +4,22 @@
 // geodesic distance from the anchor (geometry::ShortestPathMap on the configuration space).
 //
 // Fronts at λ = w/2 + k w are traced by marching squares over exact-root samples of h
-// (spacing w/4; a drawing of where to drive, decided by nothing); the levels run outwards
+// (spacing w/8; a drawing of where to drive, decided by nothing); the levels run outwards
 // (the tether only lengthens), each level's arcs nearest first, and every segment is
 // certified like every other pattern's (a straight move where it is free and r from the
 // walls, else the shortest path there).
 #include "coverage_internal.hpp"
 
 #include <preimage/error.hpp>
+#include <preimage/geometry/coordinates.hpp>
+#include <preimage/geometry/queries.hpp>
 #include <preimage/geometry/shortest_path_map.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 
 namespace preimage::decompose::detail {
 
@@ -109,8 +112,8 @@ CoverageReport plan_wavefront(const Planning& P) {
   const geometry::ShortestPathMap spm(P.graph, *P.start);
   const double w = P.w;
   const auto box = P.E.bbox();
-  const auto columns = static_cast<std::size_t>(std::ceil((box.xmax() - box.xmin()) / (w / 4))) + 1;
-  if (columns > 4000) throw InputError("coverage: the wavefront pattern samples h every w/4; this width needs more than 4000 columns");
+  const auto columns = static_cast<std::size_t>(std::ceil((box.xmax() - box.xmin()) / (w / 8))) + 1;
+  if (columns > 4000) throw InputError("coverage: the wavefront pattern samples h every w/8; this width needs more than 4000 columns");
   const auto S = spm.sample(columns);
   double top = 0;
   for (const auto& q : S.values)
@@ -134,6 +137,21 @@ CoverageReport plan_wavefront(const Planning& P) {
       auto arc = std::move(arcs[best]);
       arcs.erase(arcs.begin() + static_cast<std::ptrdiff_t>(best));
       if (tether_gap(arc.back(), here) < tether_gap(arc.front(), here)) std::reverse(arc.begin(), arc.end());
+      // An open front ends within a sample step of the boundary: carry it on to the wall
+      // (at most w/4), or the strip along the wall between fronts stays uncovered.
+      if (arc.size() >= 2 && arc.front() != arc.back()) {
+        auto extend = [&](const Point& a, const Point& b) -> std::optional<Point> {
+          if (!P.index.in_free_space(b) || a == b) return std::nullopt;
+          const auto hit = geometry::shoot_ray(P.E, b, Point(2 * b.x() - a.x(), 2 * b.y() - a.y()));
+          if (!hit) return std::nullopt;
+          const Point h = geometry::to_double(hit->point);
+          const double d = tether_gap(b, h), t = std::min(0.999 * d, w / 4);
+          if (!(t > 0)) return std::nullopt;
+          return Point(b.x() + (h.x() - b.x()) * t / d, b.y() + (h.y() - b.y()) * t / d);
+        };
+        if (const auto e = extend(arc[1], arc[0])) arc.insert(arc.begin(), *e);
+        if (const auto e = extend(arc[arc.size() - 2], arc.back())) arc.push_back(*e);
+      }
       bool first = true;
       for (const Point& p : arc) {
         if (!P.index.in_free_space(p)) continue;

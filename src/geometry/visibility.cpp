@@ -108,6 +108,23 @@ std::vector<ExactPoint> canonical_cycle(std::vector<ExactPoint> pts) {
 
 // ---------------------------------------------------------------- preprocessing
 namespace {
+// Orientation of (p, a, b) with CGAL's own semi-static filter for Orientation_2
+// (Static_filters_predicates/Orientation_2.h: the same differences, the same error bound
+// and under/overflow guards), inlined here because the library call is not; whenever the
+// double sign is not certain, CGAL::orientation decides (exact).
+inline int vis_orient(const Point& p, const Point& a, const Point& b) {
+  const double pax = a.x() - p.x(), pay = a.y() - p.y(), pbx = b.x() - p.x(), pby = b.y() - p.y();
+  double maxx = std::max(std::abs(pax), std::abs(pbx)), maxy = std::max(std::abs(pay), std::abs(pby));
+  if (maxx > maxy) std::swap(maxx, maxy);
+  if (maxx >= 1e-146 && maxy < 1e153) {
+    const double det = pax * pby - pay * pbx, eps = 8.8872057372592798e-16 * maxx * maxy;
+    if (det > eps) return 1;
+    if (det < -eps) return -1;
+  }
+  return orientation(p, a, b);
+}
+inline int vis_orient(const ExactPoint& p, const ExactPoint& a, const ExactPoint& b) { return orientation(p, a, b); }
+
 // Exact: does the closed triangle V meet the closed box [x0, x1] x [y0, y1]? Separating
 // axes of two convex sets: the box's (bounding boxes) and the triangle's edge normals (all
 // four corners strictly right of a counter-clockwise edge). Corners are doubles, so every
@@ -119,7 +136,10 @@ bool vis_triangle_meets_box(const Point* const V[3], double x0, double y0, doubl
   const Point c[4] = {Point(x0, y0), Point(x1, y0), Point(x1, y1), Point(x0, y1)};
   for (int e = 0; e < 3; ++e) {
     int right = 0;
-    for (const Point& p : c) right += orientation(*V[e], *V[(e + 1) % 3], p) < 0;
+    for (const Point& p : c) {
+      if (vis_orient(*V[e], *V[(e + 1) % 3], p) >= 0) break;
+      ++right;
+    }
     if (right == 4) return false;
   }
   return true;
@@ -129,7 +149,7 @@ bool vis_box_inside_triangle(const Point* const V[3], double x0, double y0, doub
   const Point c[4] = {Point(x0, y0), Point(x1, y0), Point(x1, y1), Point(x0, y1)};
   for (int e = 0; e < 3; ++e)
     for (const Point& p : c)
-      if (orientation(*V[e], *V[(e + 1) % 3], p) <= 0) return false;
+      if (vis_orient(*V[e], *V[(e + 1) % 3], p) <= 0) return false;
   return true;
 }
 // Area of the triangle clipped to the box, in doubles (Sutherland-Hodgman): only orders a
@@ -204,13 +224,17 @@ VisibilityIndex::VisibilityIndex(const Environment& env) : env_(&env), tri_(env)
   };
   const std::vector<double> xs = bounds(gx_, box.xmin(), box.xmax(), [this](double x) { return cell_x(x); });
   const std::vector<double> ys = bounds(gy_, box.ymin(), box.ymax(), [this](double y) { return cell_y(y); });
+  const std::size_t ncells = std::size_t(gx_) * gy_;
 
-  struct Entry {
-    std::uint32_t cell, tri;
-    double area;
+  // 1. Runs: the cells of a row that a triangle meets are consecutive (its part in the
+  // row's band is convex), so each (triangle, row) is one run [first, last], its ends found
+  // by exact triangle/box tests. Every cell of the grid is then known by its runs alone:
+  // a long thin triangle costs two exact searches per row, not a test per cell it crosses.
+  struct Run {
+    std::uint32_t tri, row, first, last;
   };
-  std::vector<Entry> entries;
-  entries.reserve(4 * T.size());
+  std::vector<Run> runs;
+  runs.reserve(2 * T.size());
   for (std::uint32_t t = 0; t < T.size(); ++t) {
     const Point* const V[3] = {&P[T[t].v[0]], &P[T[t].v[1]], &P[T[t].v[2]]};
     const double xlo = std::min({V[0]->x(), V[1]->x(), V[2]->x()}), xhi = std::max({V[0]->x(), V[1]->x(), V[2]->x()});
@@ -222,10 +246,9 @@ VisibilityIndex::VisibilityIndex(const Environment& env) : env_(&env), tri_(env)
     while (bj0 > 0 && ys[bj0] >= ylo) --bj0;
     while (bj1 + 1 < gy_ && ys[bj1 + 1] <= yhi) ++bj1;
     for (std::uint32_t j = bj0; j <= bj1; ++j) {
-      // The cells of a row that the triangle meets are consecutive (the triangle's part in
-      // the row's slab is convex). Guess them from the x-extent of that part in doubles,
-      // test exactly, then extend while cells still meet it; scan the whole bounding box
-      // row if the guess held none.
+      // Guess the run from the x-extent of the triangle's part in the row in doubles, test
+      // exactly, then extend while cells still meet it; scan the whole bounding box row if
+      // the guess held none.
       const double sa = std::max(ylo, ys[j]), sb = std::min(yhi, ys[j + 1]);
       double exlo = std::numeric_limits<double>::infinity(), exhi = -exlo;
       for (int e = 0; e < 3; ++e) {
@@ -243,41 +266,85 @@ VisibilityIndex::VisibilityIndex(const Environment& env) : env_(&env), tri_(env)
         g0 = std::clamp(cell_x(exlo), bi0, bi1), g1 = std::clamp(cell_x(exhi), bi0, bi1);
         g0 = g0 > bi0 ? g0 - 1 : g0, g1 = g1 < bi1 ? g1 + 1 : g1;
       }
-      // Find the first and last cells meeting the triangle (exact tests); every cell
-      // between them meets it too (convexity), and only needs its inside test and area.
-      std::uint32_t first = kNone, last = kNone;
+      std::uint32_t first = kNone;
       for (std::uint32_t i = g0; i <= g1 && first == kNone; ++i)
         if (vis_triangle_meets_box(V, xs[i], ys[j], xs[i + 1], ys[j + 1])) first = i;
       for (std::uint32_t i = bi0; i <= bi1 && first == kNone; ++i)  // the guess held none
         if (vis_triangle_meets_box(V, xs[i], ys[j], xs[i + 1], ys[j + 1])) first = i;
       if (first == kNone) continue;
       while (first > bi0 && vis_triangle_meets_box(V, xs[first - 1], ys[j], xs[first], ys[j + 1])) --first;
-      last = std::max(first, g1);
+      std::uint32_t last = std::max(first, g1);
       while (last > first && !vis_triangle_meets_box(V, xs[last], ys[j], xs[last + 1], ys[j + 1])) --last;
       while (last < bi1 && vis_triangle_meets_box(V, xs[last + 1], ys[j], xs[last + 2], ys[j + 1])) ++last;
+      runs.push_back({t, j, first, last});
+    }
+  }
+
+  // 2. Triangles per cell, from the runs (a difference array per row). A heavy cell
+  // (more than kSlabMinTriangles) is a candidate for a slab.
+  const bool slab_ids_fit = T.size() < kSlabCell;
+  std::vector<std::uint32_t> count(ncells, 0);
+  {
+    std::vector<std::int64_t> diff(std::size_t(gx_ + 1) * gy_, 0);
+    for (const Run& r : runs) ++diff[std::size_t(r.row) * (gx_ + 1) + r.first], --diff[std::size_t(r.row) * (gx_ + 1) + r.last + 1];
+    for (std::uint32_t j = 0; j < gy_; ++j) {
+      std::int64_t c = 0;
+      for (std::uint32_t i = 0; i < gx_; ++i) count[std::size_t(j) * gx_ + i] = static_cast<std::uint32_t>(c += diff[std::size_t(j) * (gx_ + 1) + i]);
+    }
+  }
+  std::vector<std::uint8_t> heavy(ncells, 0);
+  bool any_heavy = false;
+  for (std::size_t c = 0; c < ncells; ++c)
+    if (slab_ids_fit && count[c] > kSlabMinTriangles) heavy[c] = 1, any_heavy = true;
+
+  // 3. A light cell's entries, in place (the counts give each cell its slice), with their
+  // overlap areas to sort by. Only a cell met by a single triangle can lie inside it (a
+  // second closed triangle meeting a box inside an open triangle would overlap it), so only
+  // those get the inside test, and only the others need areas. A heavy cell's triangles are
+  // met again in the row sweeps below (runs sorted by row and first cell).
+  struct Entry {
+    std::uint32_t tri;
+    float area;
+  };
+  std::vector<std::uint32_t> light_off(ncells + 1, 0);
+  for (std::size_t c = 0; c < ncells; ++c) light_off[c + 1] = light_off[c] + (heavy[c] ? 0 : count[c]);
+  std::vector<Entry> entries(light_off[ncells]);
+  {
+    std::vector<std::uint32_t> fill(light_off.begin(), light_off.end() - 1);
+    for (const Run& r : runs) {
+      const Point* const V[3] = {&P[T[r.tri].v[0]], &P[T[r.tri].v[1]], &P[T[r.tri].v[2]]};
+      const std::uint32_t j = r.row, len = r.last - r.first + 1;
       // Long runs (thin triangles across many cells): one clipped area for the run, shared
       // out, instead of one per cell (the area only orders the lists).
-      const std::uint32_t run = last - first + 1;
-      const double shared = run > 4 ? vis_clipped_area(V, xs[first], ys[j], xs[last + 1], ys[j + 1]) / run : 0;
-      for (std::uint32_t i = first; i <= last; ++i) {
-        const bool inside = vis_box_inside_triangle(V, xs[i], ys[j], xs[i + 1], ys[j + 1]);
-        const double area = inside ? std::numeric_limits<double>::infinity()
-                            : run > 4 ? shared
-                                      : vis_clipped_area(V, xs[i], ys[j], xs[i + 1], ys[j + 1]);
-        entries.push_back({j * gx_ + i, inside ? t | kInsideCell : t, area});
+      double shared = -1;
+      for (std::uint32_t i = r.first; i <= r.last; ++i) {
+        const std::size_t c = std::size_t(j) * gx_ + i;
+        if (heavy[c]) continue;
+        Entry& e = entries[fill[c]++];
+        e.tri = r.tri, e.area = 0;
+        if (count[c] == 1) {
+          if (vis_box_inside_triangle(V, xs[i], ys[j], xs[i + 1], ys[j + 1])) e.tri |= kInsideCell;
+        } else if (len > 4) {
+          if (shared < 0) shared = vis_clipped_area(V, xs[r.first], ys[j], xs[r.last + 1], ys[j + 1]) / len;
+          e.area = static_cast<float>(shared);
+        } else {
+          e.area = static_cast<float>(vis_clipped_area(V, xs[i], ys[j], xs[i + 1], ys[j + 1]));
+        }
       }
     }
   }
-  // Entries by cell (a counting sort, stable: triangle ids ascending within a cell); a
-  // cell's list is sorted by overlap area only if it stays a list (not a slab).
-  const std::size_t ncells = std::size_t(gx_) * gy_;
-  std::vector<std::uint32_t> cell_start(ncells + 1, 0), by_cell(entries.size());
-  for (const Entry& e : entries) ++cell_start[e.cell + 1];
-  for (std::size_t c = 1; c <= ncells; ++c) cell_start[c] += cell_start[c - 1];
-  {
-    std::vector<std::uint32_t> pos(cell_start.begin(), cell_start.end() - 1);
-    for (std::size_t k = 0; k < entries.size(); ++k) by_cell[pos[entries[k].cell]++] = static_cast<std::uint32_t>(k);
+  if (any_heavy) {  // by row, then first cell: two stable counting passes
+    std::vector<Run> sorted(runs.size());
+    auto pass = [&](std::vector<Run>& from, std::vector<Run>& to, std::uint32_t n, auto key) {
+      std::vector<std::uint32_t> at(n + 1, 0);
+      for (const Run& r : from) ++at[key(r) + 1];
+      for (std::uint32_t k = 1; k <= n; ++k) at[k] += at[k - 1];
+      for (const Run& r : from) to[at[key(r)]++] = r;
+    };
+    pass(runs, sorted, gx_, [](const Run& r) { return r.first; });
+    pass(sorted, runs, gy_, [](const Run& r) { return r.row; });
   }
+
   // For the expansion: the slot of each triangle edge in the neighbour across it.
   back_.assign(T.size(), {0, 0, 0, 0});
   for (std::uint32_t t = 0; t < T.size(); ++t)
@@ -288,107 +355,313 @@ VisibilityIndex::VisibilityIndex(const Environment& env) : env_(&env), tri_(env)
       while (T[u].v[j] != T[t].v[(s + 1) % 3]) ++j;
       back_[t][s] = j;
     }
-  // Cell lists; a heavy cell gets a slab (see kSlabCell) named by an entry in front.
+
+  // 4. Slabs (see kSlabCell) for the heavy cells, by sweeps along the rows (edges crossing
+  // cells from left to right) and the columns (bottom to top). Each triangle edge is one
+  // record per line it crosses: the cells of that line it spans along the line (exact
+  // comparisons of its end coordinates with the cell bounds: the query's shortcut relies
+  // on it) and that it passes through rather than beside (in doubles: a wrong guess only
+  // adds or omits an edge, which costs a fallback at query time, never a wrong answer).
+  // One record per edge, from its left (after-bands) side unless that is not free space.
+  std::vector<std::int32_t> slab_of(ncells, -1);
+  std::vector<std::uint32_t> stash, stash_at(any_heavy ? ncells : 0, 0);  // heavy cells without a slab: their triangles
+  if (any_heavy) {
+    struct Rec {
+      std::uint32_t line, a, b;  // cells a..b of the line
+      std::uint32_t tri;
+      std::uint8_t slot;
+      bool reversed;
+    };
+    std::vector<Rec> recs[2];
+    std::vector<std::uint32_t> crossing[2];  // per cell: edges crossing it, per orientation
+    for (int o = 0; o < 2; ++o) {
+      const bool vertical = o == 1;
+      const std::uint32_t nlines = vertical ? gx_ : gy_, nalong = vertical ? gy_ : gx_;
+      const std::vector<double>& ub = vertical ? ys : xs;  // cell bounds along the line
+      const std::vector<double>& bb = vertical ? xs : ys;  // line bounds across
+      auto cell_of = [&](std::uint32_t L, std::uint32_t i) { return vertical ? std::size_t(i) * gx_ + L : std::size_t(L) * gx_ + i; };
+      // The cells that may take a slab of this orientation: heavy ones; for a vertical slab
+      // only those that a horizontal one would not separate for half (see `want`). By line,
+      // and by position along the lines (sorted lines).
+      std::vector<std::uint8_t> line_heavy(nlines, 0);
+      std::vector<std::uint32_t> at_off(nalong + 1, 0), at_lines;
+      for (std::uint32_t i = 0; i < nalong; ++i) {
+        for (std::uint32_t L = 0; L < nlines; ++L) {
+          const std::size_t c = cell_of(L, i);
+          if (heavy[c] && (!vertical || 2 * std::size_t(crossing[0][c]) < count[c])) line_heavy[L] = 1, at_lines.push_back(L);
+        }
+        at_off[i + 1] = static_cast<std::uint32_t>(at_lines.size());
+      }
+      auto u = [&](const Point& p) { return vertical ? p.y() : p.x(); };
+      auto b = [&](const Point& p) { return vertical ? p.x() : p.y(); };
+      auto cell_u = [&](double v) { return vertical ? cell_y(v) : cell_x(v); };
+      auto cell_b = [&](double v) { return vertical ? cell_x(v) : cell_y(v); };
+      std::vector<std::int64_t> diff(std::size_t(nalong + 1) * nlines, 0);
+      auto record = [&](std::uint32_t L, std::uint32_t ra, std::uint32_t rb, std::uint32_t t, std::uint8_t s, bool reversed) {
+        recs[o].push_back({L, ra, rb, t, s, reversed});
+        ++diff[std::size_t(L) * (nalong + 1) + ra], --diff[std::size_t(L) * (nalong + 1) + rb + 1];
+      };
+      for (std::uint32_t t = 0; t < T.size() && !at_lines.empty(); ++t)
+        for (std::uint8_t s = 0; s < 3; ++s) {
+          const Point &pa = P[T[t].v[s]], &pb = P[T[t].v[(s + 1) % 3]];
+          const bool reversed = u(pa) > u(pb);
+          if (reversed && T[t].nbr[s] != kNone) continue;  // recorded from the other side
+          const double umin = std::min(u(pa), u(pb)), umax = std::max(u(pa), u(pb));
+          if (!(umin < umax)) continue;
+          // Cells spanned along the line (exact): ub[i] >= umin and ub[i + 1] <= umax.
+          std::uint32_t ea = cell_u(umin), eb = cell_u(umax);
+          while (ea > 0 && ub[ea] >= umin) --ea;
+          while (ea < nalong && ub[ea] < umin) ++ea;
+          while (eb + 1 < nalong && ub[eb + 2] <= umax) ++eb;
+          while (eb < nalong && ub[eb + 1] > umax) {
+            if (eb == 0) { eb = kNone; break; }
+            --eb;
+          }
+          if (eb == kNone || ea >= nalong || ea > eb) continue;
+          const double bmin = std::min(b(pa), b(pb)), bmax = std::max(b(pa), b(pb));
+          const std::uint32_t L0 = cell_b(bmin), L1 = cell_b(bmax);
+          if (L1 - L0 <= eb - ea) {
+            // Few lines: per line, the cells whose band the edge passes through (doubles).
+            for (std::uint32_t L = L0; L <= L1; ++L) {
+              if (!line_heavy[L]) continue;
+              const double lo = std::max(bmin, bb[L]), hi = std::min(bmax, bb[L + 1]);
+              if (lo > hi) continue;
+              double ua = umin, ubb = umax;
+              if (b(pa) != b(pb)) {
+                const double k = (u(pb) - u(pa)) / (b(pb) - b(pa));
+                ua = u(pa) + k * (lo - b(pa)), ubb = u(pa) + k * (hi - b(pa));
+                if (ua > ubb) std::swap(ua, ubb);
+              }
+              const std::uint32_t ra = std::max(ea, cell_u(ua)), rb = std::min(eb, cell_u(ubb));
+              if (ra <= rb) record(L, ra, rb, t, s, reversed);
+            }
+          } else {
+            // Many lines (an edge nearly along them): per spanned position, the lines it
+            // passes through there, only those with a cell of interest.
+            const double k = (b(pb) - b(pa)) / (u(pb) - u(pa));
+            for (std::uint32_t i = ea; i <= eb; ++i) {
+              double ba = b(pa) + k * (ub[i] - u(pa)), bz = b(pa) + k * (ub[i + 1] - u(pa));
+              if (ba > bz) std::swap(ba, bz);
+              const std::uint32_t La = cell_b(std::max(ba, bmin)), Lb = cell_b(std::min(bz, bmax));
+              const std::uint32_t* first = at_lines.data() + at_off[i];
+              const std::uint32_t* last = at_lines.data() + at_off[i + 1];
+              for (const std::uint32_t* l = std::lower_bound(first, last, La); l != last && *l <= Lb; ++l) record(*l, i, i, t, s, reversed);
+            }
+          }
+        }
+      crossing[o].assign(ncells, 0);
+      for (std::uint32_t L = 0; L < nlines; ++L) {
+        std::int64_t c = 0;
+        for (std::uint32_t i = 0; i < nalong; ++i) {
+          c += diff[std::size_t(L) * (nalong + 1) + i];
+          crossing[o][cell_of(L, i)] = static_cast<std::uint32_t>(c);
+        }
+      }
+      std::sort(recs[o].begin(), recs[o].end(), [](const Rec& p, const Rec& q) { return p.line != q.line ? p.line < q.line : p.a < q.a; });
+    }
+    // Per heavy cell: left to right unless the vertical slab separates more and the
+    // horizontal one less than half the cell's triangles; fewer than 4 edges: no slab.
+    std::vector<std::uint8_t> want(ncells, 0);  // 1 horizontal, 2 vertical
+    for (std::size_t c = 0; c < ncells; ++c) {
+      if (!heavy[c]) continue;
+      const std::uint32_t H = crossing[0][c], V = crossing[1][c];
+      const bool vertical = 2 * std::size_t(H) < count[c] && V > H;
+      if ((vertical ? V : H) >= 4) want[c] = vertical ? 2 : 1;
+    }
+    struct Act {
+      double ua, wa, slope;
+      std::uint32_t tri, b;
+      std::uint8_t slot;
+      bool reversed;
+      double at(double um) const { return wa + slope * (um - ua); }
+    };
+    // Slab edges are shared: consecutive cells of a line whose crossing edges differ only
+    // at the two ends of their order across the line (a fan's edges ending or starting one
+    // by one) take windows of one sorted run, a block, stored once. The block's guess keys
+    // are taken at its first cell's middle (the slabs' `mid`), at most kBlockCells cells
+    // from any of its cells, so the float guess stays as good as a cell's own.
+    constexpr std::uint32_t kBlockCells = 32;
+    std::vector<Act> buf, fresh, S;
+    std::size_t ubeg = 0, uend = 0, lo = 0, hi = 0;
+    double ref = 0;
+    std::uint32_t ref_cell = 0;
+    std::vector<std::uint32_t> block_slabs;  // slabs_ whose edge ranges are still positions in buf
+    auto close_block = [&] {
+      const std::size_t base = slab_edges_.size();
+      for (std::size_t k = ubeg; k < uend; ++k) {
+        const Act& e = buf[k];
+        slab_edges_.push_back(SlabEdge{e.tri, e.slot, e.reversed, static_cast<float>(e.at(ref)), static_cast<float>(e.slope)});
+      }
+      for (const std::uint32_t sl : block_slabs) {
+        slabs_[sl].edges = static_cast<std::uint32_t>(base + (slabs_[sl].edges - ubeg));
+        slabs_[sl].edge_end = static_cast<std::uint32_t>(base + (slabs_[sl].edge_end - ubeg));
+      }
+      block_slabs.clear();
+      ubeg = uend = lo = hi = 0;
+    };
+    auto open_block = [&](double um, std::uint32_t i) {  // a block holding S, sorted
+      const std::size_t pad = S.size() + 16;
+      buf.resize(S.size() + 2 * pad);
+      std::copy(S.begin(), S.end(), buf.begin() + static_cast<std::ptrdiff_t>(pad));
+      ubeg = lo = pad, uend = hi = pad + S.size();
+      ref = um, ref_cell = i;
+    };
+    std::size_t reserve = 0;
+    for (std::size_t c = 0; c < ncells; ++c)
+      if (want[c]) reserve += crossing[want[c] - 1][c];
+    slab_edges_.reserve(std::min<std::size_t>(reserve, 4 * T.size() + 1024));
+    struct Tri {
+      std::uint32_t tri, last;
+    };
+    std::vector<Tri> tris;  // the row sweep's triangles: runs reaching the current cell
+    std::vector<std::uint32_t> mark(T.size(), 0), others, ends_at;
+    std::uint32_t stamp = 0;
+    std::size_t next_run = 0;
+    for (int o = 0; o < 2; ++o) {
+      const bool vertical = o == 1;
+      const std::uint32_t nlines = vertical ? gx_ : gy_, nalong = vertical ? gy_ : gx_;
+      const std::vector<double>& ub = vertical ? ys : xs;
+      auto u = [&](const Point& p) { return vertical ? p.y() : p.x(); };
+      auto w = [&](const Point& p) { return vertical ? -p.x() : p.y(); };
+      std::size_t next = 0;
+      const std::vector<Rec>& R = recs[o];
+      for (std::uint32_t L = 0; L < nlines; ++L) {
+        tris.clear();
+        ends_at.assign(nalong, 0);
+        std::size_t expired = 0, removed = 0;  // taken edges ending before the cell; no longer in the window
+        std::uint32_t counted_upto = 0;
+        while (next < R.size() && R[next].line < L) ++next;
+        if (!vertical)
+          while (next_run < runs.size() && runs[next_run].row < L) ++next_run;
+        for (std::uint32_t i = 0; i < nalong; ++i) {
+          const std::size_t c = vertical ? std::size_t(i) * gx_ + L : std::size_t(L) * gx_ + i;
+          if (!heavy[c] || (vertical && want[c] != 2)) continue;
+          // The cell's triangles: from the runs (rows), or kept by the row sweep (columns).
+          const std::uint32_t* list = nullptr;
+          std::size_t list_size = 0;
+          if (!vertical) {
+            std::size_t kept = 0;
+            for (std::size_t k = 0; k < tris.size(); ++k)
+              if (tris[k].last >= i) tris[kept++] = tris[k];
+            tris.resize(kept);
+            for (; next_run < runs.size() && runs[next_run].row == L && runs[next_run].first <= i; ++next_run)
+              if (runs[next_run].last >= i) tris.push_back({runs[next_run].tri, runs[next_run].last});
+            if (want[c] != 1) {  // no horizontal slab: keep the list for later
+              stash_at[c] = static_cast<std::uint32_t>(stash.size());
+              for (const Tri& t : tris) stash.push_back(t.tri);
+              continue;
+            }
+          } else {
+            list = stash.data() + stash_at[c], list_size = count[c];
+          }
+          const double ulo = ub[i], uhi = ub[i + 1], um = ulo / 2 + uhi / 2;
+          // The edges crossing this cell: the window less the edges that ended, plus the
+          // edges starting; in the block if those are at the window's ends, else in a new one.
+          fresh.clear();
+          for (; next < R.size() && R[next].line == L && R[next].a <= i; ++next) {
+            const Rec& r = R[next];
+            if (r.b < i) continue;
+            const Point &pa = P[T[r.tri].v[r.slot]], &pb = P[T[r.tri].v[(r.slot + 1) % 3]];
+            fresh.push_back({u(pa), w(pa), (w(pb) - w(pa)) / (u(pb) - u(pa)), r.tri, r.b, r.slot, r.reversed});
+          }
+          for (; counted_upto < i; ++counted_upto) expired += ends_at[counted_upto];
+          for (const Act& f : fresh) ++ends_at[f.b];
+          auto by_key = [um](const Act& p, const Act& q) { return p.at(um) < q.at(um); };
+          std::sort(fresh.begin(), fresh.end(), by_key);
+          std::size_t nl = lo, nh = hi, dropped = 0;
+          while (nl < nh && buf[nl].b < i) ++nl, ++dropped;
+          while (nh > nl && buf[nh - 1].b < i) --nh, ++dropped;
+          bool ok = hi > lo && i - ref_cell <= kBlockCells && dropped == expired - removed && nl < nh;
+          std::size_t below = 0, above = 0;
+          if (ok && !fresh.empty()) {
+            const double bottom = buf[nl].at(um), top = buf[nh - 1].at(um);
+            while (below < fresh.size() && fresh[below].at(um) < bottom) ++below;
+            while (above < fresh.size() - below && fresh[fresh.size() - 1 - above].at(um) > top) ++above;
+            ok = below + above == fresh.size() && (below == 0 || (nl == ubeg && ubeg >= below)) &&
+                 (above == 0 || (nh == uend && uend + above <= buf.size()));
+          }
+          if (ok) {
+            removed += dropped;
+            lo = nl, hi = nh;
+            for (std::size_t k = below; k-- > 0;) buf[--ubeg] = fresh[k];
+            for (std::size_t k = fresh.size() - above; k < fresh.size(); ++k) buf[uend++] = fresh[k];
+            if (below) lo = ubeg;
+            if (above) hi = uend;
+          } else {
+            S.clear();
+            for (std::size_t k = lo; k < hi; ++k)
+              if (buf[k].b >= i) S.push_back(buf[k]);
+            removed += (hi - lo) - S.size();
+            S.insert(S.end(), fresh.begin(), fresh.end());
+            std::sort(S.begin(), S.end(), by_key);
+            close_block();
+            open_block(um, i);
+          }
+          // The cell's triangles with no edge in the slab.
+          bool slab = hi - lo >= 4;
+          if (slab) {
+            if (++stamp == 0) std::fill(mark.begin(), mark.end(), 0), stamp = 1;
+            for (std::size_t k = lo; k < hi; ++k) {
+              mark[buf[k].tri] = stamp;
+              if (const std::uint32_t nb = T[buf[k].tri].nbr[buf[k].slot]; nb != kNone) mark[nb] = stamp;
+            }
+            others.clear();
+            if (!vertical) {
+              for (const Tri& t : tris)
+                if (mark[t.tri] != stamp) others.push_back(t.tri);
+            } else {
+              for (std::size_t k = 0; k < list_size; ++k)
+                if (mark[list[k]] != stamp) others.push_back(list[k]);
+            }
+            slab = 2 * others.size() <= count[c];  // else mostly triangles the slab does not separate
+          }
+          if (!slab) {
+            if (!vertical) {
+              stash_at[c] = static_cast<std::uint32_t>(stash.size());
+              for (const Tri& t : tris) stash.push_back(t.tri);
+            }
+            continue;
+          }
+          slab_of[c] = static_cast<std::int32_t>(slabs_.size());
+          block_slabs.push_back(static_cast<std::uint32_t>(slabs_.size()));
+          slabs_.push_back(Slab{static_cast<std::uint32_t>(lo), static_cast<std::uint32_t>(hi),
+                                static_cast<std::uint32_t>(slab_others_.size()), static_cast<std::uint32_t>(slab_others_.size() + others.size()),
+                                vertical, ulo, uhi, ref});
+          slab_others_.insert(slab_others_.end(), others.begin(), others.end());
+        }
+        close_block();
+      }
+    }
+  }
+
+  // 5. Cell lists in cell order: a slab entry, or the triangles sorted by overlap area
+  // (largest first; a heavy cell without a slab gets its areas here).
   cell_off_.assign(ncells + 1, 0);
   cell_tris_.clear();
-  cell_tris_.reserve(entries.size() + entries.size() / 8);
-  const bool slab_ids_fit = T.size() < kSlabCell;
-  std::vector<std::uint32_t> list;
+  cell_tris_.reserve(entries.size() + slabs_.size());
+  auto by_area = [](const Entry& a, const Entry& b) { return a.area != b.area ? a.area > b.area : a.tri < b.tri; };
+  std::vector<Entry> own;
   for (std::size_t cell = 0; cell < ncells; ++cell) {
-    std::uint32_t* const first = by_cell.data() + cell_start[cell];
-    std::uint32_t* const last = by_cell.data() + cell_start[cell + 1];
-    list.clear();
-    for (const std::uint32_t* k = first; k != last; ++k) list.push_back(entries[*k].tri & ~kInsideCell);
-    bool slab = false;
-    if (slab_ids_fit && list.size() > kSlabMinTriangles) {
+    if (slab_of[cell] >= 0) {
+      cell_tris_.push_back(kSlabCell | static_cast<std::uint32_t>(slab_of[cell]));
+    } else if (heavy[cell]) {
       const std::uint32_t i = static_cast<std::uint32_t>(cell % gx_), j = static_cast<std::uint32_t>(cell / gx_);
-      slab = build_slab(list, xs[i], ys[j], xs[i + 1], ys[j + 1]);
-    }
-    if (slab) {
-      cell_tris_.push_back(kSlabCell | static_cast<std::uint32_t>(slabs_.size() - 1));
+      own.clear();
+      for (std::uint32_t k = stash_at[cell]; k < stash_at[cell] + count[cell]; ++k) {
+        const std::uint32_t t = stash[k];
+        const Point* const V[3] = {&P[T[t].v[0]], &P[T[t].v[1]], &P[T[t].v[2]]};
+        own.push_back({t, static_cast<float>(vis_clipped_area(V, xs[i], ys[j], xs[i + 1], ys[j + 1]))});
+      }
+      std::sort(own.begin(), own.end(), by_area);
+      for (const Entry& e : own) cell_tris_.push_back(e.tri);
     } else {
-      std::sort(first, last, [&](std::uint32_t a, std::uint32_t b) {
-        if (entries[a].area != entries[b].area) return entries[a].area > entries[b].area;
-        return entries[a].tri < entries[b].tri;
-      });
-      for (const std::uint32_t* k = first; k != last; ++k) cell_tris_.push_back(entries[*k].tri);
+      Entry* const first = entries.data() + light_off[cell];
+      Entry* const last = entries.data() + light_off[cell + 1];
+      if (last - first > 1) std::sort(first, last, by_area);
+      for (const Entry* e = first; e != last; ++e) cell_tris_.push_back(e->tri);
     }
     cell_off_[cell + 1] = static_cast<std::uint32_t>(cell_tris_.size());
   }
-}
-
-
-// Builds the slab of a heavy cell with box [x0, x1] x [y0, y1] listing `list` (see
-// kSlabCell); false if a slab would not help. Double arithmetic here only chooses and
-// orders: a wrong choice costs a fallback at query time, never a wrong answer.
-bool VisibilityIndex::build_slab(const std::vector<std::uint32_t>& list, double x0, double y0, double x1, double y1) {
-  const auto& P = env_->vertices();
-  const auto& T = tri_.triangles();
-  struct Found {
-    std::uint32_t lo, hi;  // the edge's vertex ids, ascending (to merge its two sides)
-    SlabEdge e;
-    double key;
-  };
-  // Scratch kept between the cells of one construction (and across, per thread).
-  thread_local std::vector<Found> best, found;
-  thread_local std::vector<std::uint32_t> mark;  // mark[t] == stamp: t has an edge in the slab
-  thread_local std::uint32_t stamp = 0;
-  best.clear();
-  bool best_vertical = false;
-  for (const bool vertical : {false, true}) {
-    if (vertical && 2 * best.size() >= list.size()) break;  // left to right already separates most
-    // Along-coordinate u (x, or y if vertical) and across-coordinate w; the sort key is w
-    // (increasing y), or -w for a vertical slab (decreasing x): either way the later bands
-    // lie on the left of an edge directed along increasing u.
-    auto u = [&](const Point& p) { return vertical ? p.y() : p.x(); };
-    auto w = [&](const Point& p) { return vertical ? -p.x() : p.y(); };
-    const double ulo = vertical ? y0 : x0, uhi = vertical ? y1 : x1, um = ulo / 2 + uhi / 2;
-    const double wlo = vertical ? -x1 : y0, whi = vertical ? -x0 : y1;
-    found.clear();
-    for (const std::uint32_t t : list) {
-      for (std::uint8_t s = 0; s < 3; ++s) {
-        const std::uint32_t a = T[t].v[s], b = T[t].v[(s + 1) % 3];  // t lies left of a -> b
-        const Point &pa = P[a], &pb = P[b];
-        if (std::min(u(pa), u(pb)) > ulo || std::max(u(pa), u(pb)) < uhi) continue;  // not across
-        const double slope = (w(pb) - w(pa)) / (u(pb) - u(pa));
-        auto at = [&](double uu) { return w(pa) + slope * (uu - u(pa)); };
-        const double c0 = at(ulo), c1 = at(uhi);
-        if (std::max(c0, c1) < wlo || std::min(c0, c1) > whi) continue;  // passes beside the cell
-        const bool reversed = u(pa) > u(pb);  // along increasing u the edge runs b -> a: t on its right
-        found.push_back({std::min(a, b), std::max(a, b),
-                         SlabEdge{t, s, reversed, static_cast<float>(at(um)), static_cast<float>(slope)}, at(um)});
-      }
-    }
-    std::sort(found.begin(), found.end(), [](const Found& p, const Found& q) {
-      return p.lo != q.lo ? p.lo < q.lo : p.hi != q.hi ? p.hi < q.hi : p.e.reversed < q.e.reversed;
-    });
-    std::size_t kept = 0;  // one record per edge, from its left side when that is listed
-    for (std::size_t k = 0; k < found.size(); ++k)
-      if (kept == 0 || found[kept - 1].lo != found[k].lo || found[kept - 1].hi != found[k].hi) found[kept++] = found[k];
-    found.resize(kept);
-    std::sort(found.begin(), found.end(), [](const Found& p, const Found& q) { return p.key < q.key; });
-    if (found.size() > best.size()) std::swap(best, found), best_vertical = vertical;
-  }
-  if (best.size() < 4) return false;
-  // The cell's triangles with no edge in the slab.
-  if (mark.size() != T.size() || stamp == std::numeric_limits<std::uint32_t>::max()) mark.assign(T.size(), 0), stamp = 0;
-  ++stamp;
-  for (const Found& f : best) {
-    mark[f.e.tri] = stamp;
-    if (const std::uint32_t nb = T[f.e.tri].nbr[f.e.slot]; nb != kNone) mark[nb] = stamp;
-  }
-  thread_local std::vector<std::uint32_t> others;
-  others.clear();
-  for (const std::uint32_t t : list)
-    if (mark[t] != stamp) others.push_back(t);
-  if (2 * others.size() > list.size()) return false;  // mostly triangles the slab does not separate
-  const double ulo = best_vertical ? y0 : x0, uhi = best_vertical ? y1 : x1;
-  slabs_.push_back(Slab{static_cast<std::uint32_t>(slab_edges_.size()), static_cast<std::uint32_t>(slab_edges_.size() + best.size()),
-                        static_cast<std::uint32_t>(slab_others_.size()), static_cast<std::uint32_t>(slab_others_.size() + others.size()),
-                        best_vertical, ulo, uhi, ulo / 2 + uhi / 2});
-  for (const Found& f : best) slab_edges_.push_back(f.e);
-  slab_others_.insert(slab_others_.end(), others.begin(), others.end());
-  return true;
 }
 
 // Environment vertices in the query's number type: input points, or their lazy-exact twins
@@ -534,22 +807,6 @@ std::size_t VisibilityIndex::locate_tests(const Point& q) const {
 // ---------------------------------------------------------------- expansion
 namespace {
 
-// Orientation of (p, a, b) for the expansion's hot loop: CGAL's own semi-static filter for
-// Orientation_2 (Static_filters_predicates/Orientation_2.h: the same differences, the same
-// error bound and under/overflow guards), inlined here because the library call is not;
-// whenever the double sign is not certain, CGAL::orientation decides (exact).
-inline int vis_orient(const Point& p, const Point& a, const Point& b) {
-  const double pax = a.x() - p.x(), pay = a.y() - p.y(), pbx = b.x() - p.x(), pby = b.y() - p.y();
-  double maxx = std::max(std::abs(pax), std::abs(pbx)), maxy = std::max(std::abs(pay), std::abs(pby));
-  if (maxx > maxy) std::swap(maxx, maxy);
-  if (maxx >= 1e-146 && maxy < 1e153) {
-    const double det = pax * pby - pay * pbx, eps = 8.8872057372592798e-16 * maxx * maxy;
-    if (det > eps) return 1;
-    if (det < -eps) return -1;
-  }
-  return orientation(p, a, b);
-}
-inline int vis_orient(const ExactPoint& p, const ExactPoint& a, const ExactPoint& b) { return orientation(p, a, b); }
 
 // A point relative to the query: its differences and their magnitudes, for vis_orient's
 // filter with the differences shared between tests.

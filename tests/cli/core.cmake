@@ -229,6 +229,9 @@ cli_test(cover_brushfire_houseexpo 0 "covered (99\\.[0-9]+|100)% of the configur
 cli_test(cover_brushfire_contacts 0 "covered (99\\.[0-9]+|100)% of the configuration space" - cover ${FIX}/contacts/checkerboard.json --pattern brushfire --width 0.2 --radius 0)
 cli_test(cover_brushfire_no_centre fail "--center: the brushfire pattern grows from the obstacles, it has no centre" -
          cover ${EXAMPLES}/gallery.json --pattern brushfire --radius 0.2 --center 1,1)
+cli_test(cover_wavefront_houseexpo 0 "covered (99\\.[0-9]+|100)% of the configuration space" - cover ${OUT}/house1451.json --pattern wavefront --width 0.3 --radius 0.15 --start 1,1)
+cli_test(cover_wavefront_needs_start fail "the wavefront pattern needs a start \\(the tether's anchor\\): --start X,Y" - cover ${FIX}/morse/circle_through_vertex.json --pattern wavefront --width 0.2 --radius 0)
+set_tests_properties(cli.cover_wavefront_houseexpo PROPERTIES DEPENDS cli.import_houseexpo_1451)
 set_tests_properties(cli.decompose_brushfire_houseexpo PROPERTIES DEPENDS cli.import_houseexpo_1451)
 set_tests_properties(cli.cover_brushfire_houseexpo PROPERTIES DEPENDS cli.import_houseexpo_0000)
 cli_test(decompose_circular_contacts 0 "circular decomposition around \\(2.5, 0.5\\): 19 cells" - decompose ${FIX}/contacts/checkerboard.json --method circular --center 2.5,0.5)

@@ -11,6 +11,8 @@
 #include <preimage/geometry/configuration_space.hpp>
 #include <preimage/geometry/generators.hpp>
 #include <preimage/scene/import.hpp>
+
+#include "support/path_oracle.hpp"
 #include <preimage/scene/scene.hpp>
 
 #include <algorithm>
@@ -40,17 +42,6 @@ double shoelace(const std::vector<Point>& poly) {
     a += p.x() * q.y() - q.x() * p.y();
   }
   return a / 2;
-}
-
-double brute_clearance(const Environment& env, const Point& p) {
-  double best = std::numeric_limits<double>::infinity();
-  for (std::size_t e = 0; e < env.num_vertices(); ++e) {
-    const Point a = env.vertex(e), b = env.vertex(env.next(e));
-    const double ex = b.x() - a.x(), ey = b.y() - a.y(), L2 = ex * ex + ey * ey;
-    const double t = L2 > 0 ? std::clamp(((p.x() - a.x()) * ex + (p.y() - a.y()) * ey) / L2, 0.0, 1.0) : 0.0;
-    best = std::min(best, std::hypot(a.x() + t * ex - p.x(), a.y() + t * ey - p.y()));
-  }
-  return best;
 }
 
 std::string numbered(const char* what, std::uint64_t n) {
@@ -197,13 +188,13 @@ TEST(Brushfire, FrontsAndCriticalPointsAgreeWithBruteForceDistances) {
     const double ext = extent(env), tol = 1e-6 * ext + 4 * b.gvd().resolution();
     double top = 0;
     for (const auto& k : b.critical_points()) {
-      EXPECT_NEAR(brute_clearance(env, k.p), k.level, tol) << what;
+      EXPECT_NEAR(preimage::testing::brute_clearance(env, k.p), k.level, tol) << what;
       top = std::max(top, k.level);
     }
     for (const double f : {0.21, 0.55, 0.83}) {
       const double lam = f * top, sag = 1e-5 * ext;
       for (const auto& c : b.level_curves(lam, sag))
-        for (std::size_t i = 0; i < c.points.size(); i += 7) EXPECT_NEAR(brute_clearance(env, c.points[i]), lam, tol + sag) << what;
+        for (std::size_t i = 0; i < c.points.size(); i += 7) EXPECT_NEAR(preimage::testing::brute_clearance(env, c.points[i]), lam, tol + sag) << what;
     }
     for (const auto& s : b.gvd().saddles()) {
       if (s.kind != geometry::GvdCriticalPoint::Kind::Interior) continue;
@@ -271,7 +262,7 @@ TEST(BrushfireCoverage, CoversTheConfigurationSpaceAndKeepsClear) {
     double worst = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i + 1 < rep.path.size(); ++i)
       for (int k = 0; k <= 4; ++k)
-        worst = std::min(worst, brute_clearance(env, Point(rep.path[i].x() + (rep.path[i + 1].x() - rep.path[i].x()) * k / 4.0,
+        worst = std::min(worst, preimage::testing::brute_clearance(env, Point(rep.path[i].x() + (rep.path[i + 1].x() - rep.path[i].x()) * k / 4.0,
                                                              rep.path[i].y() + (rep.path[i + 1].y() - rep.path[i].y()) * k / 4.0)));
     EXPECT_GE(worst, r * (1 - 1e-6)) << what;
     EXPECT_GT(rep.laps, 0u) << what;

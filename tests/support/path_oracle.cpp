@@ -3,6 +3,7 @@
 
 #include <preimage/geometry/queries.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -28,6 +29,17 @@ double brute_shortest_path(const geometry::Environment& env, const geometry::Poi
     }
   }
   return d[1];
+}
+
+double brute_clearance(const geometry::Environment& env, const geometry::Point& p) {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t e = 0; e < env.num_vertices(); ++e) {
+    const geometry::Point a = env.vertex(e), b = env.vertex(env.next(e));
+    const double ex = b.x() - a.x(), ey = b.y() - a.y(), L2 = ex * ex + ey * ey;
+    const double t = L2 > 0 ? std::clamp(((p.x() - a.x()) * ex + (p.y() - a.y()) * ey) / L2, 0.0, 1.0) : 0.0;
+    best = std::min(best, std::hypot(a.x() + t * ex - p.x(), a.y() + t * ey - p.y()));
+  }
+  return best;
 }
 
 }  // namespace preimage::testing

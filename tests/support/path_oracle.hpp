@@ -11,4 +11,7 @@ namespace preimage::testing {
 /// Length of a shortest path from s to t in closed free space (infinity if none).
 double brute_shortest_path(const geometry::Environment& env, const geometry::Point& s, const geometry::Point& t);
 
+/// Distance from p to the nearest boundary edge, by scanning every edge (double).
+double brute_clearance(const geometry::Environment& env, const geometry::Point& p);
+
 }  // namespace preimage::testing

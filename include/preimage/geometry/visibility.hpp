@@ -129,7 +129,6 @@ class VisibilityIndex {
   };
   template <class Q, class Count = NoCount>
   Located locate_triangle(const Q& q, const Point& approx, bool name_outside = true, Count count = {}) const;
-  bool build_slab(const std::vector<std::uint32_t>& list, double x0, double y0, double x1, double y1);
   static constexpr std::size_t kSlabMinTriangles = 12;  // a cell listing more gets a slab
   template <class Q>
   void compute_at(const Q& q, const Point& approx, VisibilityPolygon& out, bool coordinates,
@@ -173,7 +172,9 @@ class VisibilityIndex {
     std::uint32_t edges, edge_end;    // slab_edges_[edges, edge_end), sorted
     std::uint32_t others, others_end; // slab_others_[others, others_end)
     bool vertical;                    // edges cross from bottom to top (else left to right)
-    double lo, hi, mid;               // the cell's extent along the edges (x, or y if vertical)
+    double lo, hi;                    // the cell's extent along the edges (x, or y if vertical)
+    double mid;                       // where the edges' w_mid are taken: the first cell of the
+                                      // block of cells sharing this run of edges (<= 32 cells away)
   };
   double x0_, y0_, cw_, ch_;
   std::uint32_t gx_, gy_;
