@@ -22,12 +22,6 @@
 
 namespace preimage::decompose::detail {
 
-namespace {
-
-double gap_between(const Point& a, const Point& b) { return std::hypot(a.x() - b.x(), a.y() - b.y()); }
-
-}  // namespace
-
 CoverageReport plan_brushfire(const Planning& P) {
   const BrushfireDecomposition bd(P.E);
   const double w = P.w;
@@ -102,7 +96,7 @@ CoverageReport plan_brushfire(const Planning& P) {
       }
       // a stub shorter than w/4 (into a corner the first lap cuts) is within the laps' reach
       double len = 0;
-      for (std::size_t k = 0; k + 1 < chain.size(); ++k) len += gap_between(chain[k], chain[k + 1]);
+      for (std::size_t k = 0; k + 1 < chain.size(); ++k) len += planar_distance(chain[k], chain[k + 1]);
       if (len >= w / 4) chains.push_back({std::move(chain), false});
     }
     runs = std::move(chains);
@@ -116,7 +110,7 @@ CoverageReport plan_brushfire(const Planning& P) {
     for (std::uint32_t k = 0; k < n; ++k)
       for (const Lap& l : laps[k])
         for (const Point& p : l.pts) {
-          const double d = P.start ? gap_between(p, *P.start) : 0;
+          const double d = P.start ? planar_distance(p, *P.start) : 0;
           if (d < best) best = d, first = k;
           if (!P.start) break;
         }
@@ -138,9 +132,9 @@ CoverageReport plan_brushfire(const Planning& P) {
         std::size_t best = 0;
         double bd2 = std::numeric_limits<double>::infinity();
         for (std::size_t i = 0; i < pts.size(); ++i)
-          if (const double d = gap_between(pts[i], here); d < bd2) bd2 = d, best = i;
+          if (const double d = planar_distance(pts[i], here); d < bd2) bd2 = d, best = i;
         std::rotate(pts.begin(), pts.begin() + static_cast<std::ptrdiff_t>(best), pts.end());
-      } else if (gap_between(pts.back(), here) < gap_between(pts.front(), here)) {
+      } else if (planar_distance(pts.back(), here) < planar_distance(pts.front(), here)) {
         std::reverse(pts.begin(), pts.end());
       }
     }
@@ -163,7 +157,7 @@ CoverageReport plan_brushfire(const Planning& P) {
       const Point here = path.points.empty() ? rest.front().pts.front() : path.points.back();
       for (std::size_t i = 0; i < rest.size(); ++i)
         for (const Point* q : {&rest[i].pts.front(), &rest[i].pts.back()})
-          if (const double d = gap_between(*q, here); d < bd2) bd2 = d, best = i;
+          if (const double d = planar_distance(*q, here); d < bd2) bd2 = d, best = i;
       run_lap(std::move(rest[best].pts), false);
       rest.erase(rest.begin() + static_cast<std::ptrdiff_t>(best));
     }

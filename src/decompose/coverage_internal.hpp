@@ -8,6 +8,8 @@
 
 #include "cell_sweep.hpp"
 
+#include <cmath>
+
 namespace preimage::decompose::detail {
 
 /// The problem once the configuration space is built: the component covered and its indexes.
@@ -26,6 +28,9 @@ struct Planning {
 /// failure is a bug (std::logic_error) — and fills the report's path, moves, length,
 /// transit length, rotation and turns.
 void finish_path(const Planning& P, Polyline path, CoverageReport& rep);
+
+/// Euclidean distance, for ordering laps (a choice, never a decision on geometry).
+inline double planar_distance(const Point& a, const Point& b) { return std::hypot(a.x() - b.x(), a.y() - b.y()); }
 
 /// A path grown point by point: a straight move where it is certified (inside E, r from
 /// every obstacle), else the shortest path there (counted in `detours`).

@@ -25,8 +25,6 @@ namespace preimage::decompose::detail {
 
 namespace {
 
-double tether_gap(const Point& a, const Point& b) { return std::hypot(a.x() - b.x(), a.y() - b.y()); }
-
 // Contours of h = lam on the sample grid, as polylines (marching squares; the ambiguous
 // saddle cells split by the cell's mean).
 std::vector<std::vector<Point>> front_polylines(const geometry::ShortestPathMap::Samples& S, double lam) {
@@ -133,10 +131,10 @@ CoverageReport plan_wavefront(const Planning& P) {
       double bd = std::numeric_limits<double>::infinity();
       for (std::size_t i = 0; i < arcs.size(); ++i)
         for (const Point* q : {&arcs[i].front(), &arcs[i].back()})
-          if (const double d = tether_gap(*q, here); d < bd) bd = d, best = i;
+          if (const double d = planar_distance(*q, here); d < bd) bd = d, best = i;
       auto arc = std::move(arcs[best]);
       arcs.erase(arcs.begin() + static_cast<std::ptrdiff_t>(best));
-      if (tether_gap(arc.back(), here) < tether_gap(arc.front(), here)) std::reverse(arc.begin(), arc.end());
+      if (planar_distance(arc.back(), here) < planar_distance(arc.front(), here)) std::reverse(arc.begin(), arc.end());
       // An open front ends within a sample step of the boundary: carry it on to the wall
       // (at most w/4), or the strip along the wall between fronts stays uncovered.
       if (arc.size() >= 2 && arc.front() != arc.back()) {
@@ -145,7 +143,7 @@ CoverageReport plan_wavefront(const Planning& P) {
           const auto hit = geometry::shoot_ray(P.E, b, Point(2 * b.x() - a.x(), 2 * b.y() - a.y()));
           if (!hit) return std::nullopt;
           const Point h = geometry::to_double(hit->point);
-          const double d = tether_gap(b, h), t = std::min(0.999 * d, w / 4);
+          const double d = planar_distance(b, h), t = std::min(0.999 * d, w / 4);
           if (!(t > 0)) return std::nullopt;
           return Point(b.x() + (h.x() - b.x()) * t / d, b.y() + (h.y() - b.y()) * t / d);
         };
