@@ -7,6 +7,7 @@
 #include <preimage/decompose/coverage.hpp>
 #include <preimage/decompose/online_coverage.hpp>
 #include <preimage/decompose/planner.hpp>
+#include <preimage/decompose/wavefront.hpp>
 #include <preimage/geometry/configuration_space.hpp>
 #include <preimage/geometry/coordinates.hpp>
 #include <preimage/geometry/shortest_path_map.hpp>
@@ -184,10 +185,10 @@ void run_brushfire(const scene::Scene& s, bool as_json, const std::string& svg, 
   if (!geojson.empty()) std::cout << "wrote " << geojson << "\n";
 }
 
-// Wave-front decomposition (6.2.3, Fig. 6.18), its base so far: the shortest path map from
-// --start. Vertex distances, roots and the tangency extensions are computed (see
-// geometry/shortest_path_map.hpp); the SVG's region colours and wave fronts are sampled on a
-// grid: a drawing, not a decision.
+// Wave-front decomposition (6.2.3, Fig. 6.18): the shortest path map from --start, its
+// critical points (geometry/shortest_path_map.hpp) and the cells and critical slices of h
+// (decompose/wavefront.hpp). The SVG's region colours are sampled on a grid (a drawing); the
+// fronts drawn are the computed ones.
 void run_wavefront(const scene::Scene& s, const std::string& start_s, bool as_json, const std::string& svg) {
   const auto& env = s.require_environment();
   if (start_s.empty()) throw InputError("--method wavefront: needs --start X,Y (the source of the wave front)");
@@ -195,6 +196,7 @@ void run_wavefront(const scene::Scene& s, const std::string& start_s, bool as_js
   const geometry::VisibilityIndex index(env);
   const geometry::VisibilityGraph graph(index);
   const geometry::ShortestPathMap spm(graph, start);
+  const decompose::WavefrontDecomposition wave(spm);
   const auto ext = spm.extensions();
   const auto meets = spm.collisions();
   std::size_t collisions = 0;
@@ -215,31 +217,20 @@ void run_wavefront(const scene::Scene& s, const std::string& start_s, bool as_js
         c.polygon({{p.x() - half, p.y() - half}, {q.x() + half, p.y() - half}, {q.x() + half, p.y() + half}, {p.x() - half, p.y() + half}},
                   {std::string("hsl(").append(std::to_string(h)).append(",55%,82%)"), "none", 0, 0.8, ""});
       }
-    // wave fronts: marching squares on the sampled h, over cells with four free corners
+    // wave fronts (computed arcs), coloured by the cell of the wave-front decomposition
     const double top = spm.max_vertex_distance() > 0 ? spm.max_vertex_distance() : 1;
-    const render::Style front{"none", "#1f5fa8", 0.8, 0.9, ""};
-    for (int k = 1; k <= 16; ++k) {
-      const double level = top * 1.25 * k / 16;
-      for (std::size_t j = 0; j + 1 < grid.rows; ++j)
-        for (std::size_t i = 0; i + 1 < grid.columns; ++i) {
-          const std::size_t ci[4] = {i, i + 1, i + 1, i}, cj[4] = {j, j, j + 1, j + 1};
-          std::vector<geometry::Point> cut;
-          for (int a = 0; a < 4; ++a) {
-            const auto& qa = grid.at(ci[a], cj[a]);
-            const auto& qb = grid.at(ci[(a + 1) % 4], cj[(a + 1) % 4]);
-            if (qa.root == geometry::kNone || qb.root == geometry::kNone) {
-              cut.clear();
-              break;
-            }
-            if ((qa.distance < level) != (qb.distance < level)) {
-              const double t = (level - qa.distance) / (qb.distance - qa.distance);
-              const auto pa = grid.point(ci[a], cj[a]), pb = grid.point(ci[(a + 1) % 4], cj[(a + 1) % 4]);
-              cut.emplace_back(pa.x() + t * (pb.x() - pa.x()), pa.y() + t * (pb.y() - pa.y()));
-            }
-          }
-          for (std::size_t m = 0; m + 1 < cut.size(); m += 2) c.segment(cut[m], cut[m + 1], front);
+    const auto box = render::scene_box(s);
+    const double sag = (box.xmax() - box.xmin()) / 2000;
+    for (int k = 1; k <= 24; ++k)
+      for (const auto& f : wave.fronts(top * 1.3 * k / 24)) {
+        const std::uint32_t hue = f.cell == decompose::WavefrontCell::kNone ? 0u : (f.cell * 137u) % 360u;
+        const render::Style front{"none", f.cell == decompose::WavefrontCell::kNone ? std::string("#555") : std::string("hsl(").append(std::to_string(hue)).append(",70%,38%)"), 1.0, 1, ""};
+        for (const auto& arc : f.arcs) {
+          const auto pts = wave.arc_points(arc, sag);
+          for (std::size_t i = 0; i + 1 < pts.size(); ++i) c.segment(pts[i], pts[i + 1], front);
         }
-    }
+      }
+    for (const auto& n : wave.nodes()) c.point(n.point, 2.5, {"#111", "none", 0, 1, ""}, std::string("critical slice at h = ").append(std::to_string(n.level)));
     const render::Style bound{"none", "#222", 1.4, 1, ""}, clipped{"none", "#888", 0.8, 1, "3 3"};
     for (const auto& e : ext) {
       const auto& V = env.vertex(e.vertex);
@@ -260,7 +251,8 @@ void run_wavefront(const scene::Scene& s, const std::string& start_s, bool as_js
     c.legend("extension: SPM boundary", bound);
     c.legend("collision on an extension", {"#c0392b", "none", 0, 1, ""});
     c.legend("two fronts collide (saddle of h)", {"#8e44ad", "none", 0, 1, ""});
-    c.legend("wave fronts (sampled)", front);
+    c.legend("wave fronts, coloured by cell", {"none", "hsl(200,70%,38%)", 1.0, 1, ""});
+    c.legend("critical slice (node)", {"#111", "none", 0, 1, ""});
     c.save(svg);
   }
   double dmin = std::numeric_limits<double>::infinity();
@@ -281,15 +273,28 @@ void run_wavefront(const scene::Scene& s, const std::string& start_s, bool as_js
     }
     for (const auto& m : meets)
       crit.push_back({{"kind", "fronts_collide"}, {"point", {m.point.x(), m.point.y()}}, {"roots", {m.a, m.b}}, {"distance", m.distance}});
+    json nodes = json::array(), cells = json::array();
+    auto opt = [](std::uint32_t x) { return x == decompose::WavefrontCell::kNone ? json(nullptr) : json(x); };
+    for (const auto& n : wave.nodes())
+      nodes.push_back({{"level", n.level}, {"bracket", {n.lo, n.hi}}, {"point", {n.point.x(), n.point.y()}}, {"below", n.below}, {"above", n.above}});
+    for (const auto& cl : wave.cells()) cells.push_back({{"lower", opt(cl.lower)}, {"upper", opt(cl.upper)}, {"h", {cl.lo, cl.hi}}});
     print_json({{"method", "wavefront"}, {"start", {start.x(), start.y()}}, {"reflex_vertices", spm.num_reflex()}, {"reached", spm.num_reached()},
                 {"dijkstra_edges", spm.num_edges()}, {"distance_range", {dmin, spm.max_vertex_distance()}}, {"vertices", verts},
-                {"critical_points", crit}, {"collisions_on_extensions", collisions}});
+                {"critical_points", crit}, {"collisions_on_extensions", collisions}, {"nodes", nodes}, {"cells", cells},
+                {"adjacency", wave.adjacency()}});
     return;
   }
   std::cout << "wavefront: shortest path map from " << geometry::format_point(start) << ": " << spm.num_reached() << " of " << spm.num_reflex()
             << " reflex vertices reached, D at reflex vertices from " << dmin << " to " << spm.max_vertex_distance() << "\n";
   std::cout << "critical points: " << ext.size() << " tangency bends (extensions to the boundary), " << collisions
             << " collisions on extensions, " << meets.size() << " first collisions of two fronts (saddles of h)\n";
+  std::cout << "wave-front decomposition: " << wave.cells().size() << " cells, " << wave.nodes().size() << " critical slices (levels followed: "
+            << wave.levels().size() << ")\n";
+  for (std::size_t i = 0; i < wave.nodes().size(); ++i) {
+    const auto& n = wave.nodes()[i];
+    std::cout << "  slice " << i << " at h " << n.level << " near " << geometry::format_point(n.point) << ": " << n.below.size() << " cell(s) end, "
+              << n.above.size() << " begin\n";
+  }
   for (const auto& e : ext) {
     std::cout << "  bend at " << geometry::format_point(env.vertex(e.vertex)) << " (D " << spm.vertex_distance(e.vertex) << ") from "
               << geometry::format_point(spm.root_point(e.from)) << ": extension to " << geometry::format_point(e.hit);
@@ -299,7 +304,7 @@ void run_wavefront(const scene::Scene& s, const std::string& start_s, bool as_js
   for (const auto& m : meets)
     std::cout << "  fronts from " << geometry::format_point(env.vertex(m.a)) << " and " << geometry::format_point(env.vertex(m.b)) << " meet at "
               << geometry::format_point(m.point) << " (h " << m.distance << ")\n";
-  if (!svg.empty()) std::cout << "wrote " << svg << " (regions and wave fronts sampled: a drawing)\n";
+  if (!svg.empty()) std::cout << "wrote " << svg << " (regions sampled on a grid; wave fronts computed, coloured by cell)\n";
 }
 
 void run_decompose(const std::string& path, const std::string& method, double angle, const std::string& centre, const std::string& start,

@@ -1,0 +1,142 @@
+// SPDX-License-Identifier: Apache-2.0
+// The wave-front decomposition (section 6.2.3, Fig. 6.18): the Morse decomposition of free
+// space by h, the length of a shortest path from a start point. Its slices h = λ are wave
+// fronts expanding from the start; a cell is what one front sweeps between two critical
+// levels, where fronts are born (the start), touch an obstacle and split, collide and merge,
+// close on themselves or vanish. The cells are the edges of h's Reeb graph; the nodes are
+// its critical slices.
+//
+// A front at a level λ is computed, not sampled: in the region of a root v (the start or a
+// reflex vertex, geometry::ShortestPathMap), h = D(v) + |vp|, so the front there is a part of
+// the circle C_v of radius λ - D(v) about v. h is continuous, so along C_v the set where
+// another root is shorter (the complement of the front) can only start or end where C_v
+// crosses another root's circle, an obstacle edge, or the extension of v's shortest path
+// through one of its children. C_v is cut at all those points (circle-circle and circle-
+// segment intersections, in double) and each piece is kept when its midpoint's root is v
+// (ShortestPathMap::query: exact visibility and tangency, distances in double). Pieces are
+// glued into fronts by what their ends are (the same circle-circle intersection of the
+// same two roots, the same extension), never by distance; an end on an obstacle edge is a
+// free end.
+//
+// Following a front from one level λb down to λa < λb is exact bookkeeping: a point of the
+// front at λb moves back along its own shortest path (a ray to its root, then the path's
+// edges) to the point at distance λa from the start, which is on the front at λa. Two
+// levels with no critical value between them have fronts in one-to-one correspondence this
+// way, with equal topology (open chain or closed curve). The levels are placed between
+// consecutive candidate critical values: the start; the shortest-path distance of every
+// vertex (reflex vertices reached head-on are where a front first touches an obstacle at a
+// vertex; convex corners are where fronts vanish); the feet of perpendiculars from each
+// root to the obstacle edges in its region (a front tangent to a wall); the fronts'
+// first collisions and the ends of the extensions (ShortestPathMap::collisions,
+// extensions). Between two consecutive levels the fronts that do not correspond one to one
+// form groups; each group is one critical slice (a node) at the candidate value between the
+// two levels. A group of several fronts on both sides (two events in one interval) is
+// split by bisection on the level. So a critical point that is not a candidate (a
+// bisector reaching a wall, three fronts meeting) is still found, placed at the nearest
+// candidate level, and no cell is lost; its level is then known to the interval only
+// (WavefrontNode::lo, hi).
+#pragma once
+#include <preimage/geometry/shortest_path_map.hpp>
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace preimage::decompose {
+
+using geometry::Environment;
+using geometry::Point;
+
+/// A piece of a front: part of the circle of `radius` about a root, counterclockwise from
+/// angle `from` through `sweep` radians.
+struct WavefrontArc {
+  std::uint32_t root = 0;  // ShortestPathMap root id (kSource or a reflex vertex)
+  double radius = 0;       // λ - D(root)
+  double from = 0, sweep = 0;
+};
+
+/// One component of the slice h = λ: arcs in order along it.
+struct WavefrontFront {
+  std::vector<WavefrontArc> arcs;
+  bool closed = false;      // a closed curve; else a chain whose two ends lie on obstacles
+  std::uint32_t cell = UINT32_MAX;
+};
+
+/// A critical slice of h.
+struct WavefrontNode {
+  double level = 0;           // the candidate critical value it is placed at
+  double lo = 0, hi = 0;      // the topology changes in (lo, hi]
+  Point point;                // the candidate critical point (the start for node 0)
+  std::vector<std::uint32_t> below, above;  // cells ending at it, cells starting at it
+};
+
+struct WavefrontCell {
+  static constexpr std::uint32_t kNone = UINT32_MAX;
+  std::uint32_t lower = kNone, upper = kNone;  // nodes it starts and ends at
+  double lo = 0, hi = 0;                       // its range of h
+};
+
+class WavefrontDecomposition {
+ public:
+  /// Keeps a pointer to `spm`.
+  explicit WavefrontDecomposition(const geometry::ShortestPathMap& spm);
+  WavefrontDecomposition(geometry::ShortestPathMap&&) = delete;
+
+  const geometry::ShortestPathMap& shortest_path_map() const { return *spm_; }
+  const std::vector<WavefrontNode>& nodes() const { return nodes_; }
+  const std::vector<WavefrontCell>& cells() const { return cells_; }
+  /// Cells sharing a node (sorted, no repeats).
+  std::vector<std::vector<std::uint32_t>> adjacency() const;
+
+  /// The fronts at level λ > 0, each with the cell it runs through (UINT32_MAX at a level
+  /// where the decomposition cannot tell: at a critical level).
+  std::vector<WavefrontFront> fronts(double lambda) const;
+  /// The cell containing free point p (UINT32_MAX outside free space or on a critical slice).
+  std::uint32_t cell_at(const Point& p) const;
+  /// Points of an arc, no chord farther than `sag` from the circle.
+  std::vector<Point> arc_points(const WavefrontArc& arc, double sag) const;
+
+  /// Candidate critical values (ascending, distinct) and the levels the fronts were
+  /// computed at (one between each two candidates, plus bisections).
+  const std::vector<double>& candidates() const { return candidates_; }
+  const std::vector<double>& levels() const { return levels_; }
+  /// Ends of front pieces that found no partner (double-precision ties); 0 on every map tried.
+  std::size_t unmatched_ends() const { return unmatched_; }
+  /// Upper bound on h (every front is empty above it).
+  double top() const { return top_; }
+
+  struct Level;  // the fronts at one level, with the bookkeeping to follow them
+
+ private:
+  const geometry::ShortestPathMap* spm_;
+  std::vector<double> candidates_, levels_;
+  std::vector<std::pair<double, Point>> all_candidates_;  // every candidate, ascending
+  std::vector<std::vector<std::uint32_t>> level_cells_;  // per level, per front: its cell
+  std::vector<WavefrontNode> nodes_;
+  std::vector<WavefrontCell> cells_;
+  mutable std::size_t unmatched_ = 0;
+  double top_ = 0;
+  // Per root slot: the root id, its point, D, and its children in the shortest path tree.
+  std::vector<std::uint32_t> slot_root_, root_slot_;
+  std::vector<Point> slot_point_;
+  std::vector<double> slot_dist_;
+  std::vector<std::uint32_t> slot_pred_;  // slot of the predecessor (UINT32_MAX for the start)
+  // Per slot: its visibility polygon's edges (double), each an obstacle edge or a window.
+  struct Sight {
+    std::vector<Point> a, b;
+    std::vector<std::uint64_t> label;
+    std::vector<std::uint32_t> edge;  // the obstacle edge, or kNone for a window
+  };
+  std::vector<Sight> sight_;
+
+  Level compute(double lambda) const;
+  // Pairs (front at A, front at B) joined by following B's fronts back to A's level.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> relation(const Level& A, const Level& B) const;
+  bool continues(const Level& A, std::uint32_t a, const Level& B, std::uint32_t b) const;
+  // Follows the fronts from A (the last level recorded) to B, creating nodes and cells.
+  void step(const Level& A, const Level& B, int depth);
+  // The cell of each front of a level (kNone where it cannot tell).
+  std::vector<std::uint32_t> cells_of(const Level& C) const;
+};
+
+}  // namespace preimage::decompose

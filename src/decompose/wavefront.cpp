@@ -1,0 +1,607 @@
+// SPDX-License-Identifier: Apache-2.0
+#include <preimage/decompose/wavefront.hpp>
+
+#include "cell_graph.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <limits>
+#include <numeric>
+#include <thread>
+
+namespace preimage::decompose {
+
+namespace {
+
+using geometry::ShortestPathMap;
+constexpr double kTwoPi = 2 * std::numbers::pi;
+constexpr std::uint32_t kNoSlot = UINT32_MAX;
+
+double wf_length(const Point& a, const Point& b) { return std::hypot(a.x() - b.x(), a.y() - b.y()); }
+double wf_angle(const Point& from, const Point& to) { return std::atan2(to.y() - from.y(), to.x() - from.x()); }
+// Angle reduced to [0, 2pi) relative to `base`.
+double wf_offset(double angle, double base) {
+  double d = std::fmod(angle - base, kTwoPi);
+  return d < 0 ? d + kTwoPi : d;
+}
+
+// What an end of a front piece is: an obstacle edge (a free end), the extension of the
+// shortest path through a root (glued to that root's piece), or one of the two crossings of
+// two roots' circles (glued to the other root's piece). Packed so both sides agree exactly.
+enum : std::uint64_t { kEdgeEnd = 0, kExtensionEnd = 1, kCrossingEnd = 2 };
+std::uint64_t wf_label(std::uint64_t kind, std::uint64_t a, std::uint64_t b = 0, std::uint64_t side = 0) {
+  return (kind << 62) | (a << 31) | (b << 1) | side;
+}
+bool wf_free_end(std::uint64_t label) { return (label >> 62) == kEdgeEnd; }
+
+struct WfSplit {
+  double angle;
+  std::uint64_t label;
+};
+
+struct WfUnionFind {
+  std::vector<std::uint32_t> parent;
+  explicit WfUnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
+  std::uint32_t find(std::uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  void unite(std::uint32_t a, std::uint32_t b) { parent[find(a)] = find(b); }
+};
+
+}  // namespace
+
+struct WavefrontDecomposition::Level {
+  double lambda = 0;
+  std::vector<WavefrontArc> arcs;           // grouped by slot
+  std::vector<std::uint32_t> arc_slot;
+  std::vector<std::uint32_t> first;         // per slot: first arc (size slots + 1)
+  std::vector<std::uint32_t> front;         // per arc: its front
+  std::vector<std::int64_t> link;           // per arc end (2 a + e): the glued end, or -1 (free)
+  std::vector<char> closed;                 // per front
+  std::size_t fronts = 0, unmatched = 0;
+
+  // The arc of `slot` whose angular range contains `angle` (-1 if none).
+  std::int64_t arc_at(std::uint32_t slot, double angle) const {
+    for (std::uint32_t a = first[slot]; a < first[slot + 1]; ++a)
+      if (arcs[a].sweep >= kTwoPi || wf_offset(angle, arcs[a].from) <= arcs[a].sweep) return a;
+    return -1;
+  }
+};
+
+WavefrontDecomposition::Level WavefrontDecomposition::compute(double lambda) const {
+  const std::size_t slots = slot_root_.size();
+  Level L;
+  L.lambda = lambda;
+  L.first.assign(slots + 1, 0);
+  std::vector<double> radius(slots, 0);
+  std::vector<std::uint32_t> live;
+  for (std::uint32_t s = 0; s < slots; ++s)
+    if (slot_dist_[s] < lambda) radius[s] = lambda - slot_dist_[s], live.push_back(s);
+  std::vector<std::vector<WfSplit>> splits(slots);
+
+  // Obstacle edges crossing each circle (the front ends there).
+  const Environment& env = spm_->environment();
+  const geometry::VisibilityIndex& index = spm_->index();
+  for (const std::uint32_t s : live) {
+    const Point& c = slot_point_[s];
+    const double r = radius[s];
+    for (std::size_t e = 0; e < env.num_vertices(); ++e) {
+      const Point& a = env.vertex(e);
+      const Point& b = env.vertex(env.next(e));
+      if (std::min(a.x(), b.x()) > c.x() + r || std::max(a.x(), b.x()) < c.x() - r || std::min(a.y(), b.y()) > c.y() + r ||
+          std::max(a.y(), b.y()) < c.y() - r)
+        continue;
+      const double dx = b.x() - a.x(), dy = b.y() - a.y(), fx = a.x() - c.x(), fy = a.y() - c.y();
+      const double qa = dx * dx + dy * dy, qb = 2 * (fx * dx + fy * dy), qc = fx * fx + fy * fy - r * r;
+      const double disc = qb * qb - 4 * qa * qc;
+      if (qa == 0 || disc < 0) continue;
+      const double root = std::sqrt(disc);
+      for (const double t : {(-qb - root) / (2 * qa), (-qb + root) / (2 * qa)})
+        if (t >= 0 && t <= 1) splits[s].push_back({std::atan2(fy + t * dy, fx + t * dx), wf_label(kEdgeEnd, e)});
+    }
+  }
+  // The extension of each root's shortest path: where its circle starts, and where its
+  // predecessor's circle passes behind it (the same angle from both, so the same label).
+  for (const std::uint32_t s : live) {
+    const std::uint32_t p = slot_pred_[s];
+    if (p == kNoSlot) continue;
+    const double angle = wf_angle(slot_point_[p], slot_point_[s]);
+    splits[s].push_back({angle, wf_label(kExtensionEnd, s)});
+    if (radius[p] > wf_length(slot_point_[p], slot_point_[s])) splits[p].push_back({angle, wf_label(kExtensionEnd, s)});
+  }
+  // Crossings of two circles, computed once per pair (lower slot first) so both agree.
+  for (std::size_t i = 0; i < live.size(); ++i) {
+    const std::uint32_t a = live[i];
+    const Point& pa = slot_point_[a];
+    for (std::size_t j = i + 1; j < live.size(); ++j) {
+      const std::uint32_t b = live[j];
+      if (slot_pred_[a] == b || slot_pred_[b] == a) continue;  // tangent along the extension
+      const Point& pb = slot_point_[b];
+      const double ra = radius[a], rb = radius[b];
+      const double dx = pb.x() - pa.x(), dy = pb.y() - pa.y();
+      if (std::fabs(dx) > ra + rb || std::fabs(dy) > ra + rb) continue;
+      const double d = std::hypot(dx, dy);
+      if (d == 0 || d >= ra + rb || d <= std::fabs(ra - rb) * (1 + 1e-12)) continue;
+      const double x = (d * d + ra * ra - rb * rb) / (2 * d), h = std::sqrt(std::max(0.0, ra * ra - x * x));
+      const double ux = dx / d, uy = dy / d;
+      for (int side = 0; side < 2; ++side) {
+        const double sgn = side == 0 ? 1 : -1;
+        const Point q(pa.x() + x * ux - sgn * h * uy, pa.y() + x * uy + sgn * h * ux);
+        const std::uint64_t label = wf_label(kCrossingEnd, a, b, static_cast<std::uint64_t>(side));
+        splits[a].push_back({wf_angle(pa, q), label});
+        splits[b].push_back({wf_angle(pb, q), label});
+      }
+    }
+  }
+
+  // Pieces between consecutive cuts; a piece is on the front when its midpoint's root is
+  // this circle's root. Runs of pieces on the front become arcs.
+  struct End {
+    std::vector<std::uint64_t> labels;
+  };
+  std::vector<std::array<End, 2>> ends;
+  for (std::uint32_t s = 0; s < slots; ++s) {
+    L.first[s] = static_cast<std::uint32_t>(L.arcs.size());
+    if (radius[s] <= 0) continue;
+    auto& cut = splits[s];
+    const Point& c = slot_point_[s];
+    const std::uint32_t root = slot_root_[s];
+    auto on_front = [&](double angle) {
+      const Point m(c.x() + radius[s] * std::cos(angle), c.y() + radius[s] * std::sin(angle));
+      // cheap necessary conditions first (the root must see m, tangent at a reflex root),
+      // then the full query (every root m sees)
+      if (!index.in_free_space(m)) return false;
+      if (root != ShortestPathMap::kSource && !geometry::tangent_at(env, root, m)) return false;
+      if (!index.visible(c, m)) return false;
+      return spm_->query(m).root == root;
+    };
+    if (cut.empty()) {
+      if (on_front(0)) {
+        L.arcs.push_back({root, radius[s], -std::numbers::pi, kTwoPi});
+        L.arc_slot.push_back(s);
+        ends.push_back({});
+      }
+      continue;
+    }
+    std::sort(cut.begin(), cut.end(), [](const WfSplit& x, const WfSplit& y) { return x.angle < y.angle || (x.angle == y.angle && x.label < y.label); });
+    // Distinct angles, with every label at each.
+    std::vector<double> angle;
+    std::vector<std::vector<std::uint64_t>> labels;
+    for (const auto& sp : cut) {
+      if (angle.empty() || sp.angle != angle.back()) angle.push_back(sp.angle), labels.emplace_back();
+      labels.back().push_back(sp.label);
+    }
+    const std::size_t k = angle.size();
+    std::vector<char> on(k);  // piece i: from angle[i] to angle[i + 1] (cyclically)
+    for (std::size_t i = 0; i < k; ++i) {
+      const double a0 = angle[i], span = k == 1 ? kTwoPi : wf_offset(angle[(i + 1) % k], a0);
+      on[i] = on_front(a0 + span / 2);
+    }
+    const std::size_t all = static_cast<std::size_t>(std::count(on.begin(), on.end(), 1));
+    if (all == k) {  // the whole circle (every cut spurious)
+      L.arcs.push_back({root, radius[s], -std::numbers::pi, kTwoPi});
+      L.arc_slot.push_back(s);
+      ends.push_back({});
+      continue;
+    }
+    std::size_t start = 0;
+    while (on[start]) ++start;  // an off piece: runs start after it
+    for (std::size_t step = 1; step <= k; ++step) {
+      const std::size_t i = (start + step) % k;
+      if (!on[i] || on[(i + k - 1) % k]) continue;  // not the first piece of a run
+      std::size_t j = i;
+      double sweep = 0;
+      while (on[j]) {
+        sweep += k == 1 ? kTwoPi : wf_offset(angle[(j + 1) % k], angle[j]);
+        j = (j + 1) % k;
+      }
+      L.arcs.push_back({root, radius[s], angle[i], sweep});
+      L.arc_slot.push_back(s);
+      ends.push_back({End{labels[i]}, End{labels[j]}});
+    }
+  }
+  L.first[slots] = static_cast<std::uint32_t>(L.arcs.size());
+
+  // Glue ends that carry the same label; an end with an edge label is free.
+  const std::size_t n = L.arcs.size();
+  L.link.assign(2 * n, -1);
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> reg;  // (label, arc end)
+  std::vector<char> free_end(2 * n, 0);
+  for (std::size_t a = 0; a < n; ++a)
+    for (int e = 0; e < 2; ++e) {
+      const auto& lab = ends[a][static_cast<std::size_t>(e)].labels;
+      if (L.arcs[a].sweep >= kTwoPi) continue;
+      if (std::any_of(lab.begin(), lab.end(), wf_free_end)) {
+        free_end[2 * a + static_cast<std::size_t>(e)] = 1;
+        continue;
+      }
+      for (const auto l : lab) reg.emplace_back(l, static_cast<std::uint32_t>(2 * a + static_cast<std::size_t>(e)));
+    }
+  std::sort(reg.begin(), reg.end());
+  WfUnionFind uf(n);
+  for (auto it = reg.begin(); it != reg.end();) {
+    auto jt = it;
+    while (jt != reg.end() && jt->first == it->first) ++jt;
+    for (auto mt = it + 1; mt < jt; ++mt) {
+      const std::uint32_t x = it->second, y = mt->second;
+      if (x / 2 == y / 2) continue;
+      uf.unite(x / 2, y / 2);
+      if (L.link[x] < 0) L.link[x] = y;
+      if (L.link[y] < 0) L.link[y] = x;
+    }
+    it = jt;
+  }
+  for (std::size_t x = 0; x < 2 * n; ++x)
+    if (!free_end[x] && L.link[x] < 0 && L.arcs[x / 2].sweep < kTwoPi) ++L.unmatched;
+  L.front.assign(n, 0);
+  std::vector<std::uint32_t> id(n, UINT32_MAX);
+  for (std::size_t a = 0; a < n; ++a) {
+    const std::uint32_t r = uf.find(static_cast<std::uint32_t>(a));
+    if (id[r] == UINT32_MAX) id[r] = static_cast<std::uint32_t>(L.fronts++), L.closed.push_back(1);
+    L.front[a] = id[r];
+  }
+  for (std::size_t x = 0; x < 2 * n; ++x)
+    if (L.link[x] < 0 && L.arcs[x / 2].sweep < kTwoPi) L.closed[L.front[x / 2]] = 0;
+  return L;
+}
+
+std::vector<std::pair<std::uint32_t, std::uint32_t>> WavefrontDecomposition::relation(const Level& A, const Level& B) const {
+  // Each arc of B, from its midpoint, back along its shortest path to the level of A.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  for (std::uint32_t b = 0; b < B.arcs.size(); ++b) {
+    std::uint32_t s = B.arc_slot[b];
+    double angle = B.arcs[b].from + B.arcs[b].sweep / 2;
+    if (slot_dist_[s] >= A.lambda) {
+      std::uint32_t child = s, x = slot_pred_[s];
+      while (x != kNoSlot && slot_dist_[x] >= A.lambda) child = x, x = slot_pred_[x];
+      if (x == kNoSlot) continue;
+      s = x;
+      angle = wf_angle(slot_point_[x], slot_point_[child]);
+    }
+    const std::int64_t a = A.arc_at(s, angle);
+    if (a >= 0) pairs.emplace_back(A.front[static_cast<std::size_t>(a)], B.front[b]);
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  return pairs;
+}
+
+namespace {
+
+// Fronts of two levels grouped by the correspondence: per group, its fronts below and above.
+struct WfGroup {
+  std::vector<std::uint32_t> below, above;
+};
+std::vector<WfGroup> wf_groups(std::size_t na, std::size_t nb, const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs) {
+  WfUnionFind uf(na + nb);
+  for (const auto& [a, b] : pairs) uf.unite(a, static_cast<std::uint32_t>(na + b));
+  std::vector<std::uint32_t> id(na + nb, UINT32_MAX);
+  std::vector<WfGroup> groups;
+  for (std::uint32_t x = 0; x < na + nb; ++x) {
+    const std::uint32_t r = uf.find(x);
+    if (id[r] == UINT32_MAX) id[r] = static_cast<std::uint32_t>(groups.size()), groups.emplace_back();
+    auto& g = groups[id[r]];
+    if (x < na) g.below.push_back(x);
+    else g.above.push_back(static_cast<std::uint32_t>(x - na));
+  }
+  return groups;
+}
+
+}  // namespace
+
+bool WavefrontDecomposition::continues(const Level& A, std::uint32_t a, const Level& B, std::uint32_t b) const {
+  return A.closed[a] == B.closed[b];
+}
+
+void WavefrontDecomposition::step(const Level& A, const Level& B, int depth) {
+  const auto groups = wf_groups(A.fronts, B.fronts, relation(A, B));
+  const bool compound = std::any_of(groups.begin(), groups.end(), [](const WfGroup& g) { return g.below.size() >= 2 && g.above.size() >= 2; });
+  if (compound && depth < 40 && B.lambda - A.lambda > 1e-12 * top_) {
+    const Level M = compute((A.lambda + B.lambda) / 2);
+    step(A, M, depth + 1);
+    step(M, B, depth + 1);
+    return;
+  }
+  const std::vector<std::uint32_t> below_cells = level_cells_.back();
+  std::vector<std::uint32_t> above_cells(B.fronts, WavefrontCell::kNone);
+  const auto c = std::upper_bound(candidates_.begin(), candidates_.end(), A.lambda);
+  const bool has_candidate = c != candidates_.end() && *c <= B.lambda;
+  for (const auto& g : groups) {
+    if (g.below.size() == 1 && g.above.size() == 1 && continues(A, g.below[0], B, g.above[0])) {
+      above_cells[g.above[0]] = below_cells[g.below[0]];
+      continue;
+    }
+    WavefrontNode node;
+    node.lo = A.lambda, node.hi = B.lambda;
+    node.level = has_candidate ? *c : (A.lambda + B.lambda) / 2;
+    // Its point: the candidate critical point in (lo, hi] nearest to the fronts taking part
+    // (midpoints of their arcs on both sides), else one of those midpoints.
+    std::vector<Point> near;
+    for (int side = 0; side < 2; ++side) {
+      const Level& L = side == 0 ? A : B;
+      const auto& fs = side == 0 ? g.below : g.above;
+      for (std::uint32_t a = 0; a < L.arcs.size(); ++a)
+        if (std::find(fs.begin(), fs.end(), L.front[a]) != fs.end()) {
+          const auto& arc = L.arcs[a];
+          const double t = arc.from + arc.sweep / 2;
+          const Point& o = slot_point_[L.arc_slot[a]];
+          near.emplace_back(o.x() + arc.radius * std::cos(t), o.y() + arc.radius * std::sin(t));
+        }
+    }
+    double best = std::numeric_limits<double>::infinity();
+    auto it = std::upper_bound(all_candidates_.begin(), all_candidates_.end(), A.lambda, [](double x, const auto& y) { return x < y.first; });
+    for (; it != all_candidates_.end() && it->first <= B.lambda; ++it)
+      for (const Point& q : near)
+        if (const double d = wf_length(q, it->second); d < best) best = d, node.point = it->second;
+    if (!std::isfinite(best) && !near.empty()) node.point = near.front();
+    const auto id = static_cast<std::uint32_t>(nodes_.size());
+    for (const std::uint32_t f : g.below) {
+      const std::uint32_t cell = below_cells[f];
+      cells_[cell].upper = id, cells_[cell].hi = node.level;
+      node.below.push_back(cell);
+    }
+    for (const std::uint32_t f : g.above) {
+      const auto cell = static_cast<std::uint32_t>(cells_.size());
+      cells_.push_back({id, WavefrontCell::kNone, node.level, node.level});
+      above_cells[f] = cell;
+      node.above.push_back(cell);
+    }
+    nodes_.push_back(std::move(node));
+  }
+  unmatched_ += B.unmatched;
+  levels_.push_back(B.lambda);
+  level_cells_.push_back(std::move(above_cells));
+}
+
+WavefrontDecomposition::WavefrontDecomposition(const geometry::ShortestPathMap& spm) : spm_(&spm) {
+  const Environment& env = spm.environment();
+  // Roots: the start (slot 0) and every reached reflex vertex.
+  root_slot_.assign(env.num_vertices(), kNoSlot);
+  slot_root_.push_back(ShortestPathMap::kSource);
+  slot_point_.push_back(spm.source());
+  slot_dist_.push_back(0);
+  for (const std::uint32_t v : spm.graph().reflex_vertices())
+    if (spm.reached(v)) {
+      root_slot_[v] = static_cast<std::uint32_t>(slot_root_.size());
+      slot_root_.push_back(v);
+      slot_point_.push_back(env.vertex(v));
+      slot_dist_.push_back(spm.vertex_distance(v));
+    }
+  slot_pred_.assign(slot_root_.size(), kNoSlot);
+  for (std::size_t s = 1; s < slot_root_.size(); ++s) {
+    const std::uint32_t p = spm.vertex_predecessor(slot_root_[s]);
+    slot_pred_[s] = p == ShortestPathMap::kSource ? 0 : root_slot_[p];
+  }
+  // Each root's visibility polygon as labelled segments (double: they only place cuts).
+  sight_.resize(slot_root_.size());
+  {
+    const geometry::VisibilityIndex& index = spm.index();
+    const unsigned threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
+    std::vector<std::thread> pool;
+    for (unsigned t = 0; t < threads; ++t)
+      pool.emplace_back([&, t] {
+        for (std::size_t s = t; s < slot_root_.size(); s += threads) {
+          const auto V = index.compute(slot_point_[s]);
+          auto& vb = sight_[s];
+          for (std::size_t i = 0; i < V.edges.size(); ++i) {
+            const auto& E = V.edges[i];
+            std::uint64_t label;
+            if (E.kind == geometry::VisibilityEdge::Kind::Solid) {
+              label = wf_label(kEdgeEnd, E.edge);
+            } else {
+              const std::uint32_t w = E.reflex < root_slot_.size() ? root_slot_[E.reflex] : kNoSlot;
+              label = wf_label(kExtensionEnd, w == kNoSlot ? (std::uint64_t{1} << 30) - 1 : w);
+            }
+            vb.a.push_back(V.approx_point(i));
+            vb.b.push_back(V.approx_point((i + 1) % V.vertices.size()));
+            vb.label.push_back(label);
+            vb.edge.push_back(E.kind == geometry::VisibilityEdge::Kind::Solid ? E.edge : geometry::kNone);
+          }
+        }
+      });
+    for (auto& th : pool) th.join();
+  }
+  const auto box = env.bbox();
+  for (std::size_t s = 0; s < slot_root_.size(); ++s) {
+    const Point& o = slot_point_[s];
+    const double far = std::hypot(std::max(o.x() - box.xmin(), box.xmax() - o.x()), std::max(o.y() - box.ymin(), box.ymax() - o.y()));
+    top_ = std::max(top_, slot_dist_[s] + far);
+  }
+  top_ = top_ * (1 + 1e-6) + 1e-9;
+
+  // Candidate critical values.
+  std::vector<std::pair<double, Point>> cand{{0.0, spm.source()}};
+  for (std::uint32_t v = 0; v < env.num_vertices(); ++v) {
+    const double d = root_slot_[v] != kNoSlot ? spm.vertex_distance(v) : spm.distance(env.vertex(v));
+    if (std::isfinite(d)) cand.emplace_back(d, env.vertex(v));
+  }
+  // Fronts tangent to a wall: the foot of the perpendicular from a root to an edge, where
+  // that root is the point's root (a local minimum of h along the edge).
+  std::vector<std::vector<double>> minima(env.num_vertices(), std::vector<double>{0.0, 1.0});
+  auto nudged = [&](std::size_t e, double t) {  // 1e-7 of the edge's length into free space (left)
+    const Point& a = env.vertex(e);
+    const Point& b = env.vertex(env.next(e));
+    const double dx = b.x() - a.x(), dy = b.y() - a.y();
+    return Point(a.x() + t * dx - 1e-7 * dy, a.y() + t * dy + 1e-7 * dx);
+  };
+  for (std::size_t s = 0; s < slot_root_.size(); ++s) {
+    const Point& o = slot_point_[s];
+    const auto& vb = sight_[s];
+    for (std::size_t k = 0; k < vb.edge.size(); ++k) {
+      const std::uint32_t e = vb.edge[k];
+      if (e == geometry::kNone) continue;
+      const Point& a = env.vertex(e);
+      const Point& b = env.vertex(env.next(e));
+      if (geometry::orientation(a, b, o) <= 0) continue;  // free space is left of every edge
+      const double dx = b.x() - a.x(), dy = b.y() - a.y();
+      const double t = ((o.x() - a.x()) * dx + (o.y() - a.y()) * dy) / (dx * dx + dy * dy);
+      if (!(t > 0 && t < 1)) continue;
+      const Point f(a.x() + t * dx, a.y() + t * dy);
+      // only where this root sees the edge (the piece of V(root) on it)
+      const Point &pa = vb.a[k], &pb = vb.b[k];
+      const double u = ((f.x() - pa.x()) * (pb.x() - pa.x()) + (f.y() - pa.y()) * (pb.y() - pa.y())) / std::max(1e-300, wf_length(pa, pb) * wf_length(pa, pb));
+      if (u < -1e-9 || u > 1 + 1e-9) continue;
+      const double d = slot_dist_[s] + wf_length(o, f);
+      if (d >= top_) continue;
+      // (the foot rounded to double may lie just inside the obstacle: ask a point nudged
+      // into free space; this only places a candidate level)
+      if (spm.query(nudged(e, t)).root == slot_root_[s]) cand.emplace_back(d, f), minima[e].push_back(t);
+    }
+  }
+  // Between two consecutive minima along an edge h (a minimum of convex functions of the
+  // position) has one maximum: where two fronts reach the wall from both sides, or a front
+  // leaves it. Golden-section search on h, to 1e-9 of the edge.
+  for (std::size_t e = 0; e < env.num_vertices(); ++e) {
+    auto& m = minima[e];
+    std::sort(m.begin(), m.end());
+    auto h = [&](double t) {
+      const double d = spm.distance(nudged(e, t));
+      return std::isfinite(d) ? d : -1.0;
+    };
+    for (std::size_t i = 0; i + 1 < m.size(); ++i) {
+      double lo = m[i], hi = m[i + 1];
+      if (hi - lo < 1e-9) continue;
+      const double g = (std::sqrt(5.0) - 1) / 2;
+      double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo), f1 = h(x1), f2 = h(x2);
+      while (hi - lo > 1e-9) {
+        if (f1 < f2) lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = h(x2);
+        else hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = h(x1);
+      }
+      const double t = (lo + hi) / 2, d = h(t);
+      if (d > 0) {
+        const Point& a = env.vertex(e);
+        const Point& b = env.vertex(env.next(e));
+        cand.emplace_back(d, Point(a.x() + t * (b.x() - a.x()), a.y() + t * (b.y() - a.y())));
+      }
+    }
+  }
+  for (const auto& m : spm.collisions()) cand.emplace_back(m.distance, m.point);
+  for (const auto& e : spm.extensions()) {
+    const Point& v = env.vertex(e.vertex);
+    cand.emplace_back(spm.vertex_distance(e.vertex) + wf_length(v, e.end), e.end);
+    const Point hit = geometry::to_double(e.hit);
+    cand.emplace_back(spm.vertex_distance(e.vertex) + wf_length(v, hit), hit);
+  }
+  std::stable_sort(cand.begin(), cand.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  for (const auto& [d, p] : cand) {
+    if (candidates_.empty() || d > candidates_.back() + 1e-9 * top_) candidates_.push_back(d);
+    all_candidates_.emplace_back(d, p);
+  }
+
+  // Levels between consecutive candidates, and one above every front.
+  std::vector<double> initial;
+  for (std::size_t i = 0; i + 1 < candidates_.size(); ++i) initial.push_back((candidates_[i] + candidates_[i + 1]) / 2);
+  initial.push_back(top_);
+  // The first level: the start's own front, one cell from node 0 (a minimum of h).
+  Level prev = compute(initial[0]);
+  WavefrontNode start;
+  start.level = 0, start.lo = 0, start.hi = initial[0], start.point = spm.source();
+  std::vector<std::uint32_t> first_cells;
+  for (std::uint32_t f = 0; f < prev.fronts; ++f) {
+    first_cells.push_back(static_cast<std::uint32_t>(cells_.size()));
+    start.above.push_back(static_cast<std::uint32_t>(cells_.size()));
+    cells_.push_back({0, WavefrontCell::kNone, 0, 0});
+  }
+  nodes_.push_back(std::move(start));
+  unmatched_ += prev.unmatched;
+  levels_.push_back(initial[0]);
+  level_cells_.push_back(std::move(first_cells));
+  // Later levels, computed a batch at a time on every core, then followed in order.
+  const unsigned threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
+  const std::size_t batch = 8 * threads;
+  for (std::size_t i = 1; i < initial.size(); i += batch) {
+    const std::size_t m = std::min(batch, initial.size() - i);
+    std::vector<Level> next(m);
+    std::vector<std::thread> pool;
+    for (unsigned t = 0; t < threads; ++t)
+      pool.emplace_back([&, t] {
+        for (std::size_t k = t; k < m; k += threads) next[k] = compute(initial[i + k]);
+      });
+    for (auto& th : pool) th.join();
+    for (auto& L : next) {
+      step(prev, L, 0);
+      prev = std::move(L);
+    }
+  }
+}
+
+std::vector<std::vector<std::uint32_t>> WavefrontDecomposition::adjacency() const {
+  std::vector<std::vector<std::uint32_t>> groups;
+  for (const auto& n : nodes_) {
+    groups.push_back(n.below);
+    groups.back().insert(groups.back().end(), n.above.begin(), n.above.end());
+  }
+  return detail::adjacency_from_groups(groups, cells_.size());
+}
+
+std::vector<std::uint32_t> WavefrontDecomposition::cells_of(const Level& C) const {
+  std::vector<std::uint32_t> out(C.fronts, WavefrontCell::kNone);
+  const auto it = std::upper_bound(levels_.begin(), levels_.end(), C.lambda);
+  const std::size_t k = static_cast<std::size_t>(it - levels_.begin());  // levels_[k - 1] <= lambda < levels_[k]
+  if (k > 0 && levels_[k - 1] == C.lambda) return level_cells_[k - 1];
+  auto follow = [&](const Level& A, const Level& B, bool from_below) {
+    const auto pairs = relation(A, B);
+    std::vector<std::uint32_t> na(A.fronts, 0), nb(B.fronts, 0);
+    for (const auto& [a, b] : pairs) ++na[a], ++nb[b];
+    for (const auto& [a, b] : pairs)
+      if (na[a] == 1 && nb[b] == 1 && A.closed[a] == B.closed[b]) {
+        if (from_below && out[b] == WavefrontCell::kNone) out[b] = level_cells_[k - 1][a];
+        if (!from_below && out[a] == WavefrontCell::kNone) out[a] = level_cells_[k][b];
+      }
+  };
+  if (k > 0) follow(compute(levels_[k - 1]), C, true);
+  if (k < levels_.size()) follow(C, compute(levels_[k]), false);
+  return out;
+}
+
+std::vector<WavefrontFront> WavefrontDecomposition::fronts(double lambda) const {
+  const Level C = compute(lambda);
+  const auto cell = cells_of(C);
+  std::vector<WavefrontFront> out(C.fronts);
+  std::vector<char> seen(C.arcs.size(), 0);
+  auto walk = [&](std::uint32_t a, int enter) {
+    auto& f = out[C.front[a]];
+    while (!seen[a]) {
+      seen[a] = 1;
+      WavefrontArc arc = C.arcs[a];
+      if (enter == 1) arc.from += arc.sweep, arc.sweep = -arc.sweep;
+      f.arcs.push_back(arc);
+      const std::int64_t next = C.link[2 * a + static_cast<std::uint32_t>(1 - enter)];
+      if (next < 0) break;
+      a = static_cast<std::uint32_t>(next / 2), enter = static_cast<int>(next % 2);
+    }
+  };
+  for (std::uint32_t a = 0; a < C.arcs.size(); ++a)  // chains from their free ends first
+    if (!seen[a] && C.arcs[a].sweep < kTwoPi && (C.link[2 * a] < 0 || C.link[2 * a + 1] < 0)) walk(a, C.link[2 * a] < 0 ? 0 : 1);
+  for (std::uint32_t a = 0; a < C.arcs.size(); ++a)
+    if (!seen[a]) walk(a, 0);
+  for (std::uint32_t f = 0; f < C.fronts; ++f) out[f].closed = C.closed[f], out[f].cell = cell[f];
+  return out;
+}
+
+std::uint32_t WavefrontDecomposition::cell_at(const Point& p) const {
+  const auto q = spm_->query(p);
+  if (q.root == geometry::kNone || q.distance <= 0) return WavefrontCell::kNone;
+  const Level C = compute(q.distance);
+  const std::uint32_t s = q.root == ShortestPathMap::kSource ? 0 : root_slot_[q.root];
+  const std::int64_t a = C.arc_at(s, wf_angle(slot_point_[s], p));
+  if (a < 0) return WavefrontCell::kNone;
+  return cells_of(C)[C.front[static_cast<std::size_t>(a)]];
+}
+
+std::vector<Point> WavefrontDecomposition::arc_points(const WavefrontArc& arc, double sag) const {
+  const Point& o = arc.root == ShortestPathMap::kSource ? spm_->source() : spm_->environment().vertex(arc.root);
+  const double r = arc.radius;
+  const double step = sag >= r ? std::numbers::pi / 2 : std::max(1e-4, 2 * std::acos(1 - sag / r));
+  const auto pieces = static_cast<std::size_t>(std::ceil(std::fabs(arc.sweep) / step)) + 1;
+  std::vector<Point> out;
+  for (std::size_t i = 0; i <= pieces; ++i) {
+    const double t = arc.from + arc.sweep * static_cast<double>(i) / static_cast<double>(pieces);
+    out.emplace_back(o.x() + r * std::cos(t), o.y() + r * std::sin(t));
+  }
+  return out;
+}
+
+}  // namespace preimage::decompose

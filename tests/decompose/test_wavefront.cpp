@@ -1,0 +1,187 @@
+// The wave-front decomposition (section 6.2.3, Fig. 6.18): a worked room with one pillar
+// (every critical slice placed by hand), and on random maps, an office and a floor plan:
+// - the Reeb graph has one independent cycle per obstacle (a planar domain with k holes);
+// - every front point lies at geodesic distance λ by an independent brute force (Dijkstra
+//   over all vertices with O(n) exact visibility), and every end of an open front on the
+//   boundary (brute-force clearance);
+// - random free points fall in a cell whose range of h holds theirs, and the fronts at a
+//   level are as many as the cells whose range spans it;
+// - nodes and cells are consistent (each cell starts and ends at a node, adjacency symmetric).
+#include <gtest/gtest.h>
+#include <preimage/decompose/wavefront.hpp>
+#include <preimage/geometry/generators.hpp>
+#include <preimage/geometry/queries.hpp>
+#include <preimage/scene/import.hpp>
+
+#include "support/path_oracle.hpp"
+
+#include <cmath>
+#include <random>
+#include <string>
+
+using namespace preimage;
+using namespace preimage::geometry;
+using namespace preimage::decompose;
+
+namespace {
+
+Point wft_free_point(const Environment& env, std::mt19937_64& rng) {
+  const auto b = env.bbox();
+  std::uniform_real_distribution<double> ux(b.xmin(), b.xmax()), uy(b.ymin(), b.ymax());
+  for (;;) {
+    const Point p(ux(rng), uy(rng));
+    if (locate(env, p).in_free_space()) return p;
+  }
+}
+
+// Structural checks every decomposition must pass.
+void wft_check_graph(const WavefrontDecomposition& wd, const Environment& env, const std::string& name) {
+  const auto& nodes = wd.nodes();
+  const auto& cells = wd.cells();
+  ASSERT_FALSE(nodes.empty()) << name;
+  EXPECT_EQ(nodes[0].level, 0) << name;
+  EXPECT_TRUE(nodes[0].below.empty()) << name;
+  // Reeb graph of h on a disc with k holes: E - V + 1 = k independent cycles.
+  EXPECT_EQ(static_cast<long>(cells.size()) - static_cast<long>(nodes.size()) + 1, static_cast<long>(env.num_holes())) << name;
+  for (std::uint32_t c = 0; c < cells.size(); ++c) {
+    ASSERT_NE(cells[c].lower, WavefrontCell::kNone) << name << " cell " << c;
+    ASSERT_NE(cells[c].upper, WavefrontCell::kNone) << name << " cell " << c << " never ends";
+    EXPECT_LE(cells[c].lo, cells[c].hi) << name;
+    const auto& a = nodes[cells[c].lower].above;
+    const auto& b = nodes[cells[c].upper].below;
+    EXPECT_NE(std::find(a.begin(), a.end(), c), a.end()) << name;
+    EXPECT_NE(std::find(b.begin(), b.end(), c), b.end()) << name;
+  }
+  const auto adj = wd.adjacency();
+  for (std::uint32_t a = 0; a < adj.size(); ++a)
+    for (const auto b : adj[a]) EXPECT_TRUE(std::binary_search(adj[b].begin(), adj[b].end(), a)) << name;
+  EXPECT_EQ(wd.unmatched_ends(), 0u) << name;
+}
+
+// Fronts at random levels against the brute force; cells of random points.
+void wft_check_fronts(const WavefrontDecomposition& wd, const Environment& env, const Point& start, const std::string& name, int levels,
+                      int points) {
+  const auto& spm = wd.shortest_path_map();
+  const double scale = std::max(env.bbox().xmax() - env.bbox().xmin(), env.bbox().ymax() - env.bbox().ymin());
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> ul(0.01, 1.0);
+  for (int k = 0; k < levels; ++k) {
+    const double lambda = ul(rng) * spm.max_vertex_distance() * 1.2 + 1e-3;
+    const auto fronts = wd.fronts(lambda);
+    std::size_t live = 0;
+    for (const auto& c : wd.cells()) live += c.lo < lambda && lambda < c.hi;
+    bool near_node = false;
+    for (const auto& n : wd.nodes()) near_node |= n.lo <= lambda && lambda <= n.hi;
+    if (!near_node) {
+      EXPECT_EQ(fronts.size(), live) << name << " at " << lambda;
+    }
+    for (const auto& f : fronts) {
+      ASSERT_FALSE(f.arcs.empty()) << name;
+      for (const auto& arc : f.arcs) {
+        const auto pts = wd.arc_points(arc, scale / 200);
+        const Point& mid = pts[pts.size() / 2];
+        const double h = preimage::testing::brute_shortest_path(env, start, mid);
+        EXPECT_NEAR(h, lambda, 1e-7 * std::max(1.0, lambda)) << name << " front point " << format_point(mid);
+      }
+      if (!f.closed) {
+        const auto first = wd.arc_points(f.arcs.front(), scale / 200).front();
+        const auto last = wd.arc_points(f.arcs.back(), scale / 200).back();
+        EXPECT_LT(preimage::testing::brute_clearance(env, first), 1e-7 * scale) << name << " chain end " << format_point(first);
+        EXPECT_LT(preimage::testing::brute_clearance(env, last), 1e-7 * scale) << name << " chain end " << format_point(last);
+      }
+    }
+  }
+  int none = 0;
+  for (int i = 0; i < points; ++i) {
+    const Point p = wft_free_point(env, rng);
+    const std::uint32_t c = wd.cell_at(p);
+    if (c == WavefrontCell::kNone) {
+      ++none;
+      continue;
+    }
+    const double h = spm.distance(p);
+    EXPECT_LE(wd.cells()[c].lo, h + 1e-9) << name << " " << format_point(p);
+    EXPECT_GE(wd.cells()[c].hi, h - 1e-9) << name << " " << format_point(p);
+  }
+  EXPECT_LE(none, points / 50) << name << ": points whose cell was not found";
+}
+
+}  // namespace
+
+// A 10 x 10 room with a 2 x 2 pillar at (4..6, 4..6), the start at (1, 5). By hand: the
+// circle touches the left wall (h 1: a closed front opens), the pillar (3: it splits), the
+// floor and ceiling (5, both: each lower/upper front splits off a corner piece), the corner
+// pieces vanish at (0, 0) and (0, 10) (sqrt 26); behind the pillar the fronts round its far
+// corners (D = sqrt 10 + 2) and meet on its back face at (6, 5) (sqrt 10 + 3: merge); the
+// merged front touches the right wall at (10, 4) and (10, 6) (sqrt 10 + 6: one slice, three
+// pieces), the middle one vanishes at (10, 5) (sqrt 10 + 2 + sqrt 17), the others in the far
+// corners, which the start sees past the pillar (sqrt 106). Twelve slices, twelve cells, one cycle.
+TEST(WavefrontDecomposition, PillarRoomByHand) {
+  const Environment env = Environment::make({{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{{4, 4}, {4, 6}, {6, 6}, {6, 4}}});
+  const VisibilityIndex index(env);
+  const VisibilityGraph graph(index);
+  const ShortestPathMap spm(graph, Point(1, 5));
+  const WavefrontDecomposition wd(spm);
+  wft_check_graph(wd, env, "pillar");
+  const double r10 = std::sqrt(10.0);
+  struct Want {
+    double level;
+    Point at;
+    std::size_t below, above;
+  };
+  const std::vector<Want> want{{0, {1, 5}, 0, 1},
+                               {1, {0, 5}, 1, 1},
+                               {3, {4, 5}, 1, 2},
+                               {5, {1, 10}, 1, 2},
+                               {5, {1, 0}, 1, 2},
+                               {std::sqrt(26.0), {0, 10}, 1, 0},
+                               {std::sqrt(26.0), {0, 0}, 1, 0},
+                               {r10 + 3, {6, 5}, 2, 1},
+                               {r10 + 6, {10, 6}, 1, 3},
+                               {r10 + 2 + std::sqrt(17.0), {10, 5}, 1, 0},
+                               {std::sqrt(106.0), {10, 10}, 1, 0},
+                               {std::sqrt(106.0), {10, 0}, 1, 0}};
+  ASSERT_EQ(wd.nodes().size(), want.size());
+  ASSERT_EQ(wd.cells().size(), 12u);
+  for (std::size_t i = 0; i < want.size(); ++i) {
+    const auto& n = wd.nodes()[i];
+    SCOPED_TRACE(i);
+    EXPECT_NEAR(n.level, want[i].level, 1e-5);  // maxima along a wall are searched 1e-7 of its length inside
+    EXPECT_EQ(n.below.size(), want[i].below);
+    EXPECT_EQ(n.above.size(), want[i].above);
+    // symmetric pairs at one level may come in either order
+    const bool here = std::hypot(n.point.x() - want[i].at.x(), n.point.y() - want[i].at.y()) < 1e-6;
+    const bool mirrored = std::hypot(n.point.x() - want[i].at.x(), n.point.y() - (10 - want[i].at.y())) < 1e-6;
+    EXPECT_TRUE(here || mirrored) << format_point(n.point);
+  }
+  // The first front is the start's circle, closed; at h 3.5 two fronts pass the pillar.
+  const auto f0 = wd.fronts(0.5);
+  ASSERT_EQ(f0.size(), 1u);
+  EXPECT_TRUE(f0[0].closed);
+  EXPECT_EQ(wd.fronts(3.5).size(), 2u);
+  EXPECT_EQ(wd.fronts(9.2).size(), 3u);
+  wft_check_fronts(wd, env, Point(1, 5), "pillar", 12, 200);
+}
+
+TEST(WavefrontDecomposition, RandomMapsOfficeAndFloorPlan) {
+  struct Case {
+    std::string name;
+    Environment env;
+  };
+  std::vector<Case> cases;
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) cases.push_back({"random-60-3-" + std::to_string(seed), generators::random_environment(60, 3, seed)});
+  cases.push_back({"random-120-6", generators::random_environment(120, 6, 9)});
+  cases.push_back({"office-2x3", generators::office(2, 3)});
+  cases.push_back({"house_expo_room_0000", *scene::import_houseexpo(std::string(PREIMAGE_FLOORPLANS).append("/house_expo_room_0000.json")).environment});
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.name);
+    std::mt19937_64 rng(3);
+    const Point start = wft_free_point(c.env, rng);
+    const VisibilityIndex index(c.env);
+    const VisibilityGraph graph(index);
+    const ShortestPathMap spm(graph, start);
+    const WavefrontDecomposition wd(spm);
+    wft_check_graph(wd, c.env, c.name);
+    wft_check_fronts(wd, c.env, start, c.name, 4, 40);
+  }
+}
