@@ -217,20 +217,7 @@ void run_wavefront(const scene::Scene& s, const std::string& start_s, bool as_js
         c.polygon({{p.x() - half, p.y() - half}, {q.x() + half, p.y() - half}, {q.x() + half, p.y() + half}, {p.x() - half, p.y() + half}},
                   {std::string("hsl(").append(std::to_string(h)).append(",55%,82%)"), "none", 0, 0.8, ""});
       }
-    // wave fronts (computed arcs), coloured by the cell of the wave-front decomposition
-    const double top = spm.max_vertex_distance() > 0 ? spm.max_vertex_distance() : 1;
-    const auto box = render::scene_box(s);
-    const double sag = (box.xmax() - box.xmin()) / 2000;
-    for (int k = 1; k <= 24; ++k)
-      for (const auto& f : wave.fronts(top * 1.3 * k / 24)) {
-        const std::uint32_t hue = f.cell == decompose::WavefrontCell::kNone ? 0u : (f.cell * 137u) % 360u;
-        const render::Style front{"none", f.cell == decompose::WavefrontCell::kNone ? std::string("#555") : std::string("hsl(").append(std::to_string(hue)).append(",70%,38%)"), 1.0, 1, ""};
-        for (const auto& arc : f.arcs) {
-          const auto pts = wave.arc_points(arc, sag);
-          for (std::size_t i = 0; i + 1 < pts.size(); ++i) c.segment(pts[i], pts[i + 1], front);
-        }
-      }
-    for (const auto& n : wave.nodes()) c.point(n.point, 2.5, {"#111", "none", 0, 1, ""}, std::string("critical slice at h = ").append(std::to_string(n.level)));
+    decompose::draw_wavefront(c, wave);
     const render::Style bound{"none", "#222", 1.4, 1, ""}, clipped{"none", "#888", 0.8, 1, "3 3"};
     for (const auto& e : ext) {
       const auto& V = env.vertex(e.vertex);
@@ -245,14 +232,10 @@ void run_wavefront(const scene::Scene& s, const std::string& start_s, bool as_js
       c.segment(env.vertex(m.a), env.vertex(m.b), clipped);
       c.point(m.point, 3.5, {"#8e44ad", "none", 0, 1, ""}, "two fronts collide (saddle of h)");
     }
-    c.point(start, 4, {"#1e8449", "#fff", 1, 1, ""}, "source");
-    c.legend("source", {"#1e8449", "#fff", 1, 1, ""});
     c.legend("tangency bend (critical point)", {"#e67e22", "none", 0, 1, ""});
     c.legend("extension: SPM boundary", bound);
     c.legend("collision on an extension", {"#c0392b", "none", 0, 1, ""});
     c.legend("two fronts collide (saddle of h)", {"#8e44ad", "none", 0, 1, ""});
-    c.legend("wave fronts, coloured by cell", {"none", "hsl(200,70%,38%)", 1.0, 1, ""});
-    c.legend("critical slice (node)", {"#111", "none", 0, 1, ""});
     c.save(svg);
   }
   double dmin = std::numeric_limits<double>::infinity();
@@ -290,6 +273,8 @@ void run_wavefront(const scene::Scene& s, const std::string& start_s, bool as_js
             << " collisions on extensions, " << meets.size() << " first collisions of two fronts (saddles of h)\n";
   std::cout << "wave-front decomposition: " << wave.cells().size() << " cells, " << wave.nodes().size() << " critical slices (levels followed: "
             << wave.levels().size() << ")\n";
+  if (wave.unmatched_ends() != 0)
+    std::cout << "warning: " << wave.unmatched_ends() << " front piece ends found no partner (treated as ends on a wall: double-precision ties)\n";
   for (std::size_t i = 0; i < wave.nodes().size(); ++i) {
     const auto& n = wave.nodes()[i];
     std::cout << "  slice " << i << " at h " << n.level << " near " << geometry::format_point(n.point) << ": " << n.below.size() << " cell(s) end, "

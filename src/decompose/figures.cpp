@@ -192,4 +192,33 @@ void draw_online_coverage(render::SvgCanvas& c, const OnlineReport& rep, std::si
   c.legend("critical points sensed", node);
 }
 
+void draw_wavefront(render::SvgCanvas& c, const WavefrontDecomposition& w, int levels) {
+  const auto box = w.shortest_path_map().environment().bbox();
+  const double sag = 1e-3 * std::max(box.xmax() - box.xmin(), box.ymax() - box.ymin());
+  double top = 0;
+  for (const auto& n : w.nodes()) top = std::max(top, n.level);
+  for (int k = 1; k <= levels; ++k) {
+    const double level = top * k / (levels + 1);
+    for (const auto& f : w.fronts(level)) {
+      const bool known = f.cell != WavefrontCell::kNone;
+      const render::Style s{"none", known ? std::string("hsl(").append(std::to_string((f.cell * 137u) % 360u)).append(",70%,38%)") : std::string("#555"), 1.1, 1, ""};
+      std::vector<Point> pts;
+      for (const auto& arc : f.arcs) {
+        const auto a = w.arc_points(arc, sag);
+        pts.insert(pts.end(), a.begin(), a.end());
+      }
+      if (f.closed && !pts.empty()) pts.push_back(pts.front());
+      c.polyline(pts, s, known ? "front of cell " + std::to_string(f.cell) : "front on a critical slice");
+    }
+  }
+  const render::Style node{"#111", "#fff", 1, 1, ""};
+  for (std::size_t i = 0; i < w.nodes().size(); ++i)
+    c.point(w.nodes()[i].point, 2.8, node, "critical slice " + std::to_string(i) + " at h = " + geometry::format_number(w.nodes()[i].level));
+  const render::Style start{"#1e8449", "#fff", 1, 1, ""};
+  c.point(w.shortest_path_map().source(), 4, start, "start");
+  c.legend("wave fronts h = const, one colour per cell", {"none", "hsl(200,70%,38%)", 1.1, 1, ""});
+  c.legend("critical slice (a point on it)", node);
+  c.legend("start (minimum of h)", start);
+}
+
 }  // namespace preimage::decompose

@@ -60,7 +60,7 @@ struct WavefrontDecomposition::Level {
   std::vector<std::uint32_t> front;         // per arc: its front
   std::vector<std::int64_t> link;           // per arc end (2 a + e): the glued end, or -1 (free)
   std::vector<char> closed;                 // per front
-  std::size_t fronts = 0, unmatched = 0;
+  std::size_t fronts = 0, unmatched = 0, snapped = 0;
 
   // The arc of `slot` whose angular range contains `angle` (-1 if none).
   std::int64_t arc_at(std::uint32_t slot, double angle) const {
@@ -107,9 +107,10 @@ WavefrontDecomposition::Level WavefrontDecomposition::compute(double lambda) con
   for (const std::uint32_t s : live) {
     const std::uint32_t p = slot_pred_[s];
     if (p == kNoSlot) continue;
-    const double angle = wf_angle(slot_point_[p], slot_point_[s]);
+    const double angle = ext_angle_[s];
     splits[s].push_back({angle, wf_label(kExtensionEnd, s)});
-    if (radius[p] > wf_length(slot_point_[p], slot_point_[s])) splits[p].push_back({angle, wf_label(kExtensionEnd, s)});
+    if (radius[p] > wf_length(slot_point_[p], slot_point_[s]))
+      for (const std::uint32_t w : collinear_chain_[s]) splits[p].push_back({angle, wf_label(kExtensionEnd, w)});
   }
   // Crossings of two circles, computed once per pair (lower slot first) so both agree.
   for (std::size_t i = 0; i < live.size(); ++i) {
@@ -154,8 +155,18 @@ WavefrontDecomposition::Level WavefrontDecomposition::compute(double lambda) con
       // then the full query (every root m sees)
       if (!index.in_free_space(m)) return false;
       if (root != ShortestPathMap::kSource && !geometry::tangent_at(env, root, m)) return false;
-      if (!index.visible(c, m)) return false;
-      return spm_->query(m).root == root;
+      if (!index.visible(m, c)) return false;
+      // m is on the front unless a root that sees m is nearer through its own path:
+      // h(m) = min over the roots m sees (any visible root's path bounds h from above).
+      // Only roots whose disc of radius λ - D(u) holds m can be; each costs one walk.
+      for (const std::uint32_t u : live) {
+        if (u == s) continue;
+        const double ru = radius[u] * (1 - 1e-12);
+        const Point& pu = slot_point_[u];
+        if (std::fabs(pu.x() - m.x()) >= ru || std::fabs(pu.y() - m.y()) >= ru) continue;
+        if (wf_length(pu, m) < ru && index.visible(m, pu)) return false;
+      }
+      return true;
     };
     if (cut.empty()) {
       if (on_front(0)) {
@@ -233,8 +244,28 @@ WavefrontDecomposition::Level WavefrontDecomposition::compute(double lambda) con
     }
     it = jt;
   }
+  // Ends left without a partner: bends so nearly on one ray from their predecessor (a
+  // staircase wall rasterised from an image) that the rays' order is below double
+  // resolution, and the thin shadow between them changes hands. Such an end is joined to
+  // another one at the same point (within 1e-9 of the map's size); the count is reported.
+  auto end_point = [&](std::size_t x) {
+    const auto& A = L.arcs[x / 2];
+    const double t = (x % 2) ? A.from + A.sweep : A.from;
+    const Point& o = slot_point_[L.arc_slot[x / 2]];
+    return Point(o.x() + A.radius * std::cos(t), o.y() + A.radius * std::sin(t));
+  };
+  std::vector<std::size_t> loose;
   for (std::size_t x = 0; x < 2 * n; ++x)
-    if (!free_end[x] && L.link[x] < 0 && L.arcs[x / 2].sweep < kTwoPi) ++L.unmatched;
+    if (!free_end[x] && L.link[x] < 0 && L.arcs[x / 2].sweep < kTwoPi) loose.push_back(x);
+  for (std::size_t i = 0; i < loose.size(); ++i)
+    for (std::size_t j = i + 1; j < loose.size() && L.link[loose[i]] < 0; ++j) {
+      const std::size_t x = loose[i], y = loose[j];
+      if (x / 2 == y / 2 || L.link[y] >= 0 || wf_length(end_point(x), end_point(y)) > 1e-9 * top_) continue;
+      L.link[x] = static_cast<std::int64_t>(y), L.link[y] = static_cast<std::int64_t>(x);
+      uf.unite(static_cast<std::uint32_t>(x / 2), static_cast<std::uint32_t>(y / 2));
+      L.snapped += 2;
+    }
+  for (const std::size_t x : loose) L.unmatched += L.link[x] < 0;
   L.front.assign(n, 0);
   std::vector<std::uint32_t> id(n, UINT32_MAX);
   for (std::size_t a = 0; a < n; ++a) {
@@ -350,7 +381,7 @@ void WavefrontDecomposition::step(const Level& A, const Level& B, int depth) {
     }
     nodes_.push_back(std::move(node));
   }
-  unmatched_ += B.unmatched;
+  unmatched_ += B.unmatched, snapped_ += B.snapped;
   levels_.push_back(B.lambda);
   level_cells_.push_back(std::move(above_cells));
 }
@@ -402,6 +433,39 @@ WavefrontDecomposition::WavefrontDecomposition(const geometry::ShortestPathMap& 
         }
       });
     for (auto& th : pool) th.join();
+  }
+  // Bends in a straight line (p -> s -> w with w's predecessor s, all collinear: real
+  // floor plans have them): beyond the last of them p's circle meets the circle of any of
+  // them, so p's cut there carries all their labels.
+  collinear_chain_.resize(slot_root_.size());
+  for (std::uint32_t s = 0; s < slot_root_.size(); ++s) collinear_chain_[s].push_back(s);
+  {
+    std::vector<std::vector<std::uint32_t>> children(slot_root_.size());
+    for (std::uint32_t s = 1; s < slot_root_.size(); ++s) children[slot_pred_[s]].push_back(s);
+    for (std::uint32_t s = 1; s < slot_root_.size(); ++s) {
+      const Point& p = slot_point_[slot_pred_[s]];
+      for (std::size_t i = 0; i < collinear_chain_[s].size(); ++i) {  // every bend straight beyond s
+        const std::uint32_t cur = collinear_chain_[s][i];
+        for (const std::uint32_t w : children[cur])
+          if (geometry::orientation(p, slot_point_[cur], slot_point_[w]) == 0 &&
+              (slot_point_[w].x() - slot_point_[cur].x()) * (slot_point_[cur].x() - p.x()) + (slot_point_[w].y() - slot_point_[cur].y()) * (slot_point_[cur].y() - p.y()) > 0)
+            collinear_chain_[s].push_back(w);
+      }
+    }
+    // The direction of each extension, the same double for bends on one ray from their
+    // predecessor (siblings exactly collinear): computed from the nearest of them.
+    ext_angle_.assign(slot_root_.size(), 0);
+    for (std::uint32_t s = 1; s < slot_root_.size(); ++s) {
+      const std::uint32_t p = slot_pred_[s];
+      const Point& o = slot_point_[p];
+      std::uint32_t nearest = s;
+      for (const std::uint32_t c : children[p])
+        if (geometry::orientation(o, slot_point_[s], slot_point_[c]) == 0 &&
+            (slot_point_[c].x() - o.x()) * (slot_point_[s].x() - o.x()) + (slot_point_[c].y() - o.y()) * (slot_point_[s].y() - o.y()) > 0 &&
+            wf_length(o, slot_point_[c]) < wf_length(o, slot_point_[nearest]))
+          nearest = c;
+      ext_angle_[s] = wf_angle(o, slot_point_[nearest]);
+    }
   }
   const auto box = env.bbox();
   for (std::size_t s = 0; s < slot_root_.size(); ++s) {
@@ -505,7 +569,7 @@ WavefrontDecomposition::WavefrontDecomposition(const geometry::ShortestPathMap& 
     cells_.push_back({0, WavefrontCell::kNone, 0, 0});
   }
   nodes_.push_back(std::move(start));
-  unmatched_ += prev.unmatched;
+  unmatched_ += prev.unmatched, snapped_ += prev.snapped;
   levels_.push_back(initial[0]);
   level_cells_.push_back(std::move(first_cells));
   // Later levels, computed a batch at a time on every core, then followed in order.

@@ -7,6 +7,7 @@
 #include <preimage/decompose/morse.hpp>
 #include <preimage/decompose/online_coverage.hpp>
 #include <preimage/decompose/planner.hpp>
+#include <preimage/decompose/wavefront.hpp>
 #include <preimage/render/svg.hpp>
 
 namespace preimage::decompose {
@@ -27,6 +28,10 @@ void draw_morse(render::SvgCanvas& canvas, const MorseDecomposition& m);
 /// Brushfire cells (each band filled with its cell's colour), the medial axis (grey), the
 /// GVD between different obstacles (blue), saddles (filled) and maxima (open) of D.
 void draw_brushfire(render::SvgCanvas& canvas, const BrushfireDecomposition& b);
+
+/// The wave-front decomposition: `levels` fronts (the computed arcs) evenly spaced up to
+/// the largest h, each coloured by its cell, the critical slices' points and the start.
+void draw_wavefront(render::SvgCanvas& canvas, const WavefrontDecomposition& w, int levels = 24);
 
 /// A coverage path: laps, boundary following and transits in three styles, arrows along
 /// it, start and end markers.

@@ -23,18 +23,33 @@
 // edges) to the point at distance λa from the start, which is on the front at λa. Two
 // levels with no critical value between them have fronts in one-to-one correspondence this
 // way, with equal topology (open chain or closed curve). The levels are placed between
-// consecutive candidate critical values: the start; the shortest-path distance of every
-// vertex (reflex vertices reached head-on are where a front first touches an obstacle at a
-// vertex; convex corners are where fronts vanish); the feet of perpendiculars from each
-// root to the obstacle edges in its region (a front tangent to a wall); the fronts'
-// first collisions and the ends of the extensions (ShortestPathMap::collisions,
-// extensions). Between two consecutive levels the fronts that do not correspond one to one
-// form groups; each group is one critical slice (a node) at the candidate value between the
-// two levels. A group of several fronts on both sides (two events in one interval) is
-// split by bisection on the level. So a critical point that is not a candidate (a
-// bisector reaching a wall, three fronts meeting) is still found, placed at the nearest
-// candidate level, and no cell is lost; its level is then known to the interval only
-// (WavefrontNode::lo, hi).
+// consecutive candidate critical values:
+//  - the start (a minimum: the first front is a closed circle);
+//  - the distance of every vertex (a reflex vertex reached head-on is where a front first
+//    touches an obstacle; a convex corner is where a front vanishes);
+//  - the feet of perpendiculars from each root to the walls it sees, where that root is
+//    the point's root (a front tangent to a wall: h has a local minimum along the wall);
+//  - between two consecutive such minima along an edge, h (a minimum of convex functions)
+//    has one maximum: where fronts from both sides reach the wall, or a front leaves it;
+//    found by golden-section search on h, 1e-7 of the edge's length inside free space;
+//  - the fronts' first collisions and the ends of the extensions
+//    (ShortestPathMap::collisions, extensions).
+// Between two consecutive levels the fronts that do not correspond one to one form groups;
+// each group is one critical slice (a node) placed at the candidate value between the two
+// levels. A group of several fronts on both sides (two events in one interval) is split by
+// bisection on the level. A critical point that is not a candidate (three fronts meeting
+// in the open, a bisector meeting an extension) is still seen as a change of fronts and
+// placed at the interval's candidate (WavefrontNode::lo, hi bound it); what is missed is a
+// front born and gone within one interval, which needs a split that is a candidate and a
+// death that is not in the same interval (not seen on any map tried: random points all
+// find their cell). The independent check in the suite: the Reeb graph of h on a disc with
+// k holes has exactly k independent cycles.
+//
+// Degeneracies of real floor plans: bends exactly in line (p -> s -> w all collinear; a
+// wall with notches) carry all their labels on one cut of p's circle; bends so nearly in
+// line that the order of their rays is below double resolution (staircase walls rasterised
+// from images) leave ends without a partner, joined by position (within 1e-9 of the map's
+// size, snapped_ends) or, failing that, counted (unmatched_ends) and treated as free.
 #pragma once
 #include <preimage/geometry/shortest_path_map.hpp>
 
@@ -100,8 +115,11 @@ class WavefrontDecomposition {
   /// computed at (one between each two candidates, plus bisections).
   const std::vector<double>& candidates() const { return candidates_; }
   const std::vector<double>& levels() const { return levels_; }
-  /// Ends of front pieces that found no partner (double-precision ties); 0 on every map tried.
+  /// Ends of front pieces, over every level followed, that found no partner by label (0 on
+  /// every map tried), and those joined by position instead (bends on one ray to within
+  /// double resolution, as on staircase walls of rasterised floor plans).
   std::size_t unmatched_ends() const { return unmatched_; }
+  std::size_t snapped_ends() const { return snapped_; }
   /// Upper bound on h (every front is empty above it).
   double top() const { return top_; }
 
@@ -114,7 +132,7 @@ class WavefrontDecomposition {
   std::vector<std::vector<std::uint32_t>> level_cells_;  // per level, per front: its cell
   std::vector<WavefrontNode> nodes_;
   std::vector<WavefrontCell> cells_;
-  mutable std::size_t unmatched_ = 0;
+  std::size_t unmatched_ = 0, snapped_ = 0;
   double top_ = 0;
   // Per root slot: the root id, its point, D, and its children in the shortest path tree.
   std::vector<std::uint32_t> slot_root_, root_slot_;
@@ -128,6 +146,8 @@ class WavefrontDecomposition {
     std::vector<std::uint32_t> edge;  // the obstacle edge, or kNone for a window
   };
   std::vector<Sight> sight_;
+  std::vector<double> ext_angle_;  // per slot: direction of its extension (from its predecessor)
+  std::vector<std::vector<std::uint32_t>> collinear_chain_;  // per slot: itself and the bends straight beyond it
 
   Level compute(double lambda) const;
   // Pairs (front at A, front at B) joined by following B's fronts back to A's level.
