@@ -151,11 +151,14 @@ WavefrontDecomposition::Level WavefrontDecomposition::compute(double lambda) con
     const std::uint32_t root = slot_root_[s];
     auto on_front = [&](double angle) {
       const Point m(c.x() + radius[s] * std::cos(angle), c.y() + radius[s] * std::sin(angle));
-      // cheap necessary conditions first (the root must see m, tangent at a reflex root),
-      // then the full query (every root m sees)
-      if (!index.in_free_space(m)) return false;
+      // m must be seen from the root (a walk from the root, which also rejects an m outside
+      // free space without locating it), with the path tangent there at a reflex root
       if (root != ShortestPathMap::kSource && !geometry::tangent_at(env, root, m)) return false;
-      if (!index.visible(m, c)) return false;
+      auto sees = [&](std::uint32_t slot) {
+        const std::uint32_t r = slot_root_[slot];
+        return r == ShortestPathMap::kSource ? index.visible(slot_point_[slot], m) : index.visible_from_vertex(r, m);
+      };
+      if (!sees(s)) return false;
       // m is on the front unless a root that sees m is nearer through its own path:
       // h(m) = min over the roots m sees (any visible root's path bounds h from above).
       // Only roots whose disc of radius λ - D(u) holds m can be; each costs one walk.
@@ -164,7 +167,7 @@ WavefrontDecomposition::Level WavefrontDecomposition::compute(double lambda) con
         const double ru = radius[u] * (1 - 1e-12);
         const Point& pu = slot_point_[u];
         if (std::fabs(pu.x() - m.x()) >= ru || std::fabs(pu.y() - m.y()) >= ru) continue;
-        if (wf_length(pu, m) < ru && index.visible(m, pu)) return false;
+        if (wf_length(pu, m) < ru && sees(u)) return false;
       }
       return true;
     };

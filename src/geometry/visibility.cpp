@@ -1417,6 +1417,12 @@ bool VisibilityIndex::visible(const Point& p, const Point& q) const {
   return walk(p, q, kNone, true, [](std::uint32_t) {});
 }
 
+bool VisibilityIndex::visible_from_vertex(std::uint32_t v, const Point& q) const {
+  const Point& p = env_->vertex(v);
+  if (p == q) return true;
+  return walk(p, q, v, true, [](std::uint32_t) {});  // a q outside free space is never reached
+}
+
 std::vector<std::uint32_t> VisibilityIndex::visible_vertices(const Point& q) const {
   const VisibilityPolygon vis = compute(q);
   std::vector<std::uint32_t> out;

@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 #include <preimage/error.hpp>
 #include <preimage/geometry/generators.hpp>
+#include <preimage/geometry/queries.hpp>
 #include <preimage/geometry/visibility.hpp>
 #include <preimage/scene/import.hpp>
+#include <preimage/scene/scene.hpp>
 
 #include "support/cgal_oracle.hpp"
 
@@ -310,5 +312,36 @@ TEST(Visibility, LocateInHeavyCellsEqualsBruteForce) {
     }
     EXPECT_LT(static_cast<double>(tests) / static_cast<double>(interior), 5.0) << name;
     EXPECT_GE(compare_with_cgal(env, 40, 10, 10, 91), 60) << name;
+  }
+}
+
+// visible_from_vertex (the walk started in the vertex's fan, no point location) against the
+// O(n) exact segment test, from every vertex to random points inside and outside free space
+// and to every other vertex, on random maps, a rectilinear office, a floor plan with
+// collinear walls and a map whose holes touch at vertices.
+TEST(Visibility, FromVertexMatchesTheExactSegmentTest) {
+  const Environment maps[] = {generators::random_environment(40, 3, 11), generators::office(2, 2),
+                              *preimage::scene::import_houseexpo(std::string(PREIMAGE_FLOORPLANS).append("/house_expo_room_0000.json")).environment,
+                              *preimage::scene::load_scene(std::string(PREIMAGE_FIXTURES).append("/contacts/checkerboard.json")).environment};
+  const char* names[] = {"random-40-3", "office-2x2", "house_expo_room_0000", "checkerboard"};
+  std::mt19937_64 rng(4);
+  for (std::size_t m = 0; m < 4; ++m) {
+    const Environment& env = maps[m];
+    const std::string name = names[m];
+    const VisibilityIndex index(env);
+    const auto b = env.bbox();
+    std::uniform_real_distribution<double> ux(b.xmin(), b.xmax()), uy(b.ymin(), b.ymax());
+    std::size_t seen = 0, tested = 0;
+    for (std::uint32_t v = 0; v < env.num_vertices(); v += std::max<std::uint32_t>(1, static_cast<std::uint32_t>(env.num_vertices() / 40))) {
+      std::vector<Point> targets;
+      for (int k = 0; k < 20; ++k) targets.emplace_back(ux(rng), uy(rng));
+      for (std::uint32_t w = 0; w < env.num_vertices(); w += 3) targets.push_back(env.vertex(w));
+      for (const Point& q : targets) {
+        const bool want = preimage::geometry::visible(env, env.vertex(v), q);
+        ASSERT_EQ(index.visible_from_vertex(v, q), want) << name << " vertex " << v << " to " << format_point(q);
+        seen += want, ++tested;
+      }
+    }
+    EXPECT_GT(seen, tested / 20) << name;  // the test sees something
   }
 }

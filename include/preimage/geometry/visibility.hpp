@@ -117,6 +117,9 @@ class VisibilityIndex {
   /// crosses: O(k) orientation tests for k triangles, no V(p) built. False when p or q is
   /// outside free space.
   bool visible(const Point& p, const Point& q) const;
+  /// The same from environment vertex v's point, the walk starting in v's fan (no point
+  /// location of v, whose degenerate position makes locating it slow).
+  bool visible_from_vertex(std::uint32_t v, const Point& q) const;
   /// Environment vertices visible from q (q in closed free space), ascending: every
   /// vertex w with visible(q, w), needles and grazed vertices included (at a contact, every
   /// ring's vertex there).
