@@ -14,6 +14,11 @@
 //   geodesic-query/<map>          one h(p) query (V(p)'s vertices + one triangle walk)
 //   extensions/<map>              tangency extensions and collisions on them (one pass)
 //   fronts-collide/<map>          first collisions of two fronts (one pass)
+//   wavefront-decomposition/<map> the cells and critical slices (decompose::WavefrontDecomposition)
+//                                 on smaller maps, beside spm/<map> of the same source: what the
+//                                 decomposition costs over the map it is built on (no other
+//                                 method computes these cells to compare with)
+#include <preimage/decompose/wavefront.hpp>
 #include <preimage/geometry/generators.hpp>
 #include <preimage/geometry/shortest_path_map.hpp>
 #include <preimage/geometry/visibility_graphs.hpp>
@@ -44,6 +49,8 @@ WaveCase& wave_case(const std::string& name) {
   if (it != cases.end()) return it->second;
   WaveCase c;
   if (name == "random-10000-50") c.env = std::make_unique<Environment>(generators::random_environment(10000, 50, 11));
+  else if (name == "random-300-6") c.env = std::make_unique<Environment>(generators::random_environment(300, 6, 11));
+  else if (name == "office-3x3") c.env = std::make_unique<Environment>(generators::office(3, 3));
   else c.env = std::make_unique<Environment>(generators::office(20, 20));
   c.index = std::make_unique<VisibilityIndex>(*c.env);
   std::mt19937_64 rng(5);
@@ -141,7 +148,24 @@ void critical_points(benchmark::State& state, const std::string& name, bool fron
   state.counters["found"] = static_cast<double>(found);
 }
 
+void decomposition(benchmark::State& state, const std::string& name) {
+  WaveCase& c = wave_case(name);
+  VisibilityGraph graph(*c.index);
+  const ShortestPathMap spm(graph, c.source);
+  std::size_t cells = 0, levels = 0;
+  for (auto _ : state) {
+    const preimage::decompose::WavefrontDecomposition d(spm);
+    cells = d.cells().size(), levels = d.levels().size();
+  }
+  state.counters["cells"] = static_cast<double>(cells);
+  state.counters["levels"] = static_cast<double>(levels);
+}
+
 const int registered = [] {
+  for (const std::string name : {"random-300-6", "office-3x3"}) {
+    benchmark::RegisterBenchmark(("wavefront-decomposition/" + name).c_str(), decomposition, name)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("spm/preimage/" + name).c_str(), spm_preimage, name, 0u)->Unit(benchmark::kMillisecond);
+  }
   for (const std::string name : {"random-10000-50", "office-20x20"}) {
     benchmark::RegisterBenchmark(("spm/preimage/" + name).c_str(), spm_preimage, name, 0u)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("spm/reference/" + name).c_str(), spm_reference, name, 0u)->Unit(benchmark::kMillisecond);
