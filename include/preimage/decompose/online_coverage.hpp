@@ -76,18 +76,24 @@ struct OnlineOptions {
   std::size_t max_steps = 0;        // primitive budget (0: automatic); running out is an inconsistency
 };
 
-enum class OnlineKind : std::uint8_t { Birth, Death, Split, Merge };
+/// A node's shape by its cells (left | right): birth 0 | 1, death 1 | 0, split 1 | 2, merge
+/// 2 | 1; slice: any other count (several critical points on one critical slice).
+enum class OnlineKind : std::uint8_t { Birth, Death, Split, Merge, Slice };
 std::string_view to_string(OnlineKind k);
 
-/// A sensed critical point, in the order sensed.
+/// A sensed critical slice (the connected piece of the slice through a sensed critical
+/// point, surveyed by the robot), in the order sensed.
 struct OnlineNode {
-  OnlineKind kind;
-  double x = 0, y_low = 0, y_high = 0;  // sweep frame (y_low < y_high on a vertical wall)
-  Point at;                             // input frame (the middle of the run)
+  OnlineKind kind = OnlineKind::Birth;
+  double x = 0, y_low = 0, y_high = 0;  // sweep frame: the piece of the slice x (y_low <= y_high)
+  Point at;                             // input frame (the middle of the piece)
   std::size_t sensed_at = 0;            // path index where it was sensed
-  /// Per port, the edge explored through it or -1. Birth: {right}; death: {left};
-  /// split: {left, right-up, right-down}; merge: {left-up, left-down, right}.
+  /// Ports, one per adjacent cell: [0, left) the cells on the left (ending here), bottom to
+  /// top, [left, size) those on the right (starting here), bottom to top. Per port, the
+  /// edge explored through it or -1, and its interval on the slice (sweep frame).
+  std::size_t left = 0;
   std::vector<int> ports;
+  std::vector<std::pair<double, double>> spans;
 };
 
 /// A covered cell: an edge of the Reeb graph.
