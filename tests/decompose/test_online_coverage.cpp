@@ -128,7 +128,7 @@ TEST(OnlineCoverage, Gallery) {
 }
 
 // The office generator: rooms, doors and corridors. At 0, 45 and 90 degrees walls line up on
-// one slice, so critical slices hold several critical points and join up to 6 cells.
+// one slice, so critical slices hold several critical points and join up to 5 cells.
 TEST(OnlineCoverage, Office) {
   const Environment env = geometry::generators::office(2, 3);
   for (double angle : {0.0, 45.0, 90.0, 7.0, 33.0}) {
