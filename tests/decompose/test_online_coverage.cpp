@@ -67,8 +67,20 @@ void expect_done(const Environment& env, const Outcome& o, double r) {
   EXPECT_EQ(o.rep.nodes.size(), o.cmp.offline_nodes);
   EXPECT_EQ(o.rep.edges.size(), o.cmp.offline_edges);
   EXPECT_GE(o.covered, 0.99);
-  for (const auto& n : o.rep.nodes)
+  for (const auto& n : o.rep.nodes) {
     for (int p : n.ports) EXPECT_GE(p, 0);
+    // One span per port, inside the piece; per side bottom to top, never overlapping.
+    ASSERT_EQ(n.spans.size(), n.ports.size());
+    ASSERT_LE(n.left, n.ports.size());
+    for (std::size_t k = 0; k < n.spans.size(); ++k) {
+      EXPECT_LE(n.y_low, n.spans[k].first);
+      EXPECT_LE(n.spans[k].first, n.spans[k].second);
+      EXPECT_LE(n.spans[k].second, n.y_high);
+      if (k > 0 && k != n.left) {
+        EXPECT_LE(n.spans[k - 1].second, n.spans[k].first);
+      }
+    }
+  }
   expect_no_collision(env, o.rep.path, r);
 }
 
