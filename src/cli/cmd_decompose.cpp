@@ -448,7 +448,7 @@ void run_cover_online(const CoverArgs& a, const scene::Scene& s, double radius, 
     for (std::size_t i = 0; i < rep.nodes.size(); ++i) {
       const auto& n = rep.nodes[i];
       nodes.push_back({{"id", i}, {"kind", std::string(decompose::to_string(n.kind))}, {"at", {n.at.x(), n.at.y()}},
-                       {"sweep_x", n.x}, {"sweep_y", {n.y_low, n.y_high}}, {"sensed_at", n.sensed_at}, {"ports", n.ports},
+                       {"sweep_x", n.x}, {"sweep_y", {n.y_low, n.y_high}}, {"sensed_at", n.sensed_at}, {"ports", n.ports}, {"left_ports", n.left}, {"port_spans", n.spans},
                        {"offline_slice", cmp.offline_of.empty() ? -1 : cmp.offline_of[i]}});
     }
     for (const auto& e : rep.edges)
@@ -472,11 +472,15 @@ void run_cover_online(const CoverArgs& a, const scene::Scene& s, double radius, 
   if (rep.noise > 0) std::cout << ", noise " << geometry::format_number(rep.noise);
   std::cout << "\n";
   std::cout << (rep.complete ? "complete: every critical point has all its edges explored" : "NOT complete: " + rep.inconsistency) << "\n";
-  std::cout << "Reeb graph as built: " << rep.nodes.size() << " critical points, " << rep.edges.size() << " cells; sensed in the order";
+  std::cout << "Reeb graph as built: " << rep.nodes.size() << " critical slices, " << rep.edges.size() << " cells; sensed in the order";
   for (auto k : rep.sensing_order) std::cout << " " << k;
   std::cout << "\n";
-  for (std::size_t i = 0; i < rep.nodes.size(); ++i)
-    std::cout << "  " << i << ": " << decompose::to_string(rep.nodes[i].kind) << " at " << geometry::format_point(rep.nodes[i].at) << "\n";
+  for (std::size_t i = 0; i < rep.nodes.size(); ++i) {
+    const auto& n = rep.nodes[i];
+    std::cout << "  " << i << ": " << decompose::to_string(n.kind) << " at " << geometry::format_point(n.at);
+    if (n.kind == decompose::OnlineKind::Slice) std::cout << " (" << n.left << " cells left, " << n.ports.size() - n.left << " right)";
+    std::cout << "\n";
+  }
   for (const auto& e : rep.edges) std::cout << "  cell " << e.from << " - " << e.to << " (" << e.laps << " laps)\n";
   std::cout << "offline boustrophedon Reeb graph: " << cmp.offline_nodes << " critical slices, " << cmp.offline_edges << " cells: "
             << (cmp.isomorphic ? "isomorphic, critical points within " + geometry::format_number(cmp.max_offset) : "differs: " + cmp.detail) << "\n";

@@ -170,11 +170,11 @@ void draw_online_coverage(render::SvgCanvas& c, const OnlineReport& rep, std::si
     for (std::size_t p = 0; p < n.ports.size(); ++p) {
       const bool explored = n.ports[p] >= 0 && rep.edges[static_cast<std::size_t>(n.ports[p])].path_end < upto;
       if (explored) continue;
-      // Port directions: left or right along the sweep, tilted up or down.
-      const bool right = n.kind == OnlineKind::Birth || (n.kind == OnlineKind::Split && p > 0) || (n.kind == OnlineKind::Merge && p == 2);
-      double tilt = 0;
-      if ((n.kind == OnlineKind::Split && p == 1) || (n.kind == OnlineKind::Merge && p == 0)) tilt = 0.6;
-      if ((n.kind == OnlineKind::Split && p == 2) || (n.kind == OnlineKind::Merge && p == 1)) tilt = -0.6;
+      // Port directions: left or right along the sweep, tilted from down to up by their
+      // order on the slice.
+      const bool right = p >= n.left;
+      const std::size_t k = right ? n.ports.size() - n.left : n.left, j = right ? p - n.left : p;
+      const double tilt = k > 1 ? -0.6 + 1.2 * static_cast<double>(j) / static_cast<double>(k - 1) : 0.0;
       const double sx = right ? 1 : -1;
       const Point q(n.at.x() + len * (sx * ux - tilt * uy), n.at.y() + len * (sx * uy + tilt * ux));
       c.segment(n.at, q, stub, "unexplored port");

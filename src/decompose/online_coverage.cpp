@@ -25,6 +25,7 @@ std::string_view to_string(OnlineKind k) {
     case OnlineKind::Death: return "death";
     case OnlineKind::Split: return "split";
     case OnlineKind::Merge: return "merge";
+    case OnlineKind::Slice: return "slice";
   }
   return "?";
 }
@@ -44,7 +45,8 @@ struct Stand {
 };
 
 // A sensed critical point: its kind and the run of extreme abscissa the robot drove through
-// (one point, or a vertical wall), bottom to top.
+// (one point, or a vertical wall), bottom to top. The kind is the critical point's own (the
+// turn the boundary makes there); the node it belongs to is the surveyed piece of its slice.
 struct Sensed {
   OnlineKind kind;
   std::vector<Stand> run;
@@ -55,55 +57,54 @@ struct Sensed {
 };
 
 // A boundary follow: every point driven (the start first), and the critical point where the
-// lateral displacement turned back, if it did before the stop slice.
+// lateral displacement turned back, if it did before the stop slice or on it.
 struct Follow {
   std::vector<Stand> stands;
   std::optional<Sensed> cp;
-  // The chain's ordinate at abscissa x (x between the start and the end), by interpolation
-  // of the odometry: the planner's own estimate, compared with a stated tolerance.
-  double y_at(double x) const {
+  // Where a lap across the cell along the slice x meets this chain: where the chain runs
+  // along the slice (a wall, or a vertex on it) its highest point for a floor and lowest for
+  // a ceiling, else by interpolation of the odometry (the planner's own estimate, compared
+  // with a stated tolerance).
+  double y_at(double x, bool floor) const {
+    bool on = false;
+    double best = 0;
+    for (const Stand& s : stands)
+      if (s.p.x() == x) best = !on ? s.p.y() : floor ? std::max(best, s.p.y()) : std::min(best, s.p.y()), on = true;
+    if (on) return best;
     for (std::size_t i = 1; i < stands.size(); ++i) {
       const Point &a = stands[i - 1].p, &b = stands[i].p;
-      if ((a.x() <= x && x <= b.x()) || (b.x() <= x && x <= a.x())) {
-        if (a.x() == b.x()) return a.y();
-        return a.y() + (x - a.x()) * (b.y() - a.y()) / (b.x() - a.x());
-      }
+      if ((a.x() <= x && x <= b.x()) || (b.x() <= x && x <= a.x())) return a.y() + (x - a.x()) * (b.y() - a.y()) / (b.x() - a.x());
     }
     return NAN;
   }
 };
 
-// Which port of a node a cell uses.
+// Which side of a closing critical point a cell is on: the critical point's own interval
+// (birth, death), above it (on the floor), below it (on the ceiling), or around it (an
+// obstacle starting between the floor and the ceiling).
 enum class PortSide : std::uint8_t { Point, Up, Down, Both };
 
-int port_index(OnlineKind k, bool right, PortSide ps) {
-  switch (k) {
-    case OnlineKind::Birth: return right && ps == PortSide::Point ? 0 : -1;
-    case OnlineKind::Death: return !right && ps == PortSide::Point ? 0 : -1;
-    case OnlineKind::Split:
-      if (!right) return ps == PortSide::Both ? 0 : -1;
-      return ps == PortSide::Up ? 1 : ps == PortSide::Down ? 2 : -1;
-    case OnlineKind::Merge:
-      if (right) return ps == PortSide::Both ? 2 : -1;
-      return ps == PortSide::Up ? 0 : ps == PortSide::Down ? 1 : -1;
-  }
-  return -1;
-}
-// The inverse: side and kind of a port.
-void port_of(OnlineKind k, int port, bool& right, PortSide& ps) {
-  switch (k) {
-    case OnlineKind::Birth: right = true, ps = PortSide::Point; return;
-    case OnlineKind::Death: right = false, ps = PortSide::Point; return;
-    case OnlineKind::Split: right = port != 0, ps = port == 0 ? PortSide::Both : port == 1 ? PortSide::Up : PortSide::Down; return;
-    case OnlineKind::Merge: right = port == 2, ps = port == 2 ? PortSide::Both : port == 0 ? PortSide::Up : PortSide::Down; return;
-  }
-}
+// A surveyed piece of a critical slice: the stops the robot made along it, bottom to top,
+// what lies between consecutive stops, and the ports.
+struct Piece {
+  std::vector<Stand> stops;
+  // Per gap between stops i and i + 1: 0 free on both sides (a lap), +1 a wall with its
+  // obstacle towards +x, -1 towards -x.
+  std::vector<int> gap;
+  struct Port {
+    bool right;
+    std::size_t lo, hi;  // stop indices: the cell's floor and ceiling on the slice
+  };
+  std::vector<Port> ports;  // as OnlineNode::ports: the left ones, then the right ones, each bottom to top
+};
 
 struct Failure {
   std::string what;
 };
 
 std::string at_text(const Point& p) { return geometry::format_point(p); }
+bool point_kind(OnlineKind k) { return k == OnlineKind::Birth || k == OnlineKind::Death; }
+
 class OnlinePlanner {
  public:
   OnlinePlanner(OnlineRobot& robot, const OnlineOptions& o, double w, std::size_t budget)
@@ -137,41 +138,43 @@ class OnlinePlanner {
   // vertex or a vertical run, the place where the boundary's normal cone holds the sweep
   // direction (Lemma 5.5.2); the robot then stands on the run's last point. Its kind: the
   // turn the boundary makes there (odometry: is the free wedge convex, so free space ends,
-  // or reflex, so an obstacle ends), which the ring must confirm: the direction of the
-  // ring's minimum (the surface normal) points along the sweep towards the obstacle side.
-  Follow follow(Side s, int delta, double stop_x) {
+  // or reflex, so an obstacle ends). Arriving on the stop slice at a vertex, the robot drives
+  // on (along the slice while the boundary runs along it, then one step) to see whether the
+  // boundary turns back there, and if not returns to the chain's point on the slice that
+  // faces the cell. `start_kind`: the robot starts where a lap across free space met the
+  // boundary, so a boundary that turns back at once there is a critical point of that kind
+  // (an obstacle's first point along the follow); otherwise that is an inconsistency.
+  Follow follow(Side s, int delta, double stop_x, std::optional<OnlineKind> start_kind = std::nullopt) {
     Follow out;
     const int dir = s == Side::Floor ? delta : -delta;  // +1: the ring order, free space on the left
     out.stands.push_back(here());
     std::vector<double> along{0};
     double best = delta * R_.odometry().x();
-    for (;;) {
+    auto step = [&](double stop, bool& on_slice) {
       tick();
-      bool on_slice = false;
-      if (!R_.follow_step(dir, stop_x, on_slice)) throw Failure{"boundary following started away from the boundary at " + at_text(R_.odometry())};
+      if (!R_.follow_step(dir, stop, on_slice)) throw Failure{"boundary following started away from the boundary at " + at_text(R_.odometry())};
       out.stands.push_back(here());
-      if (on_slice) return out;
+      // The surface normal's component along the follow (the ring's minimum; sensor 0
+      // looks along +x).
       const auto ring = R_.read_ring();
-      // The surface normal's component along the follow (the ring's minimum; sensor 0 looks
-      // along +x).
       along.push_back(delta * std::cos(R_.sensor_angle(ring.argmin)));
-      const double x = delta * R_.odometry().x();
-      if (x >= best) {
-        best = x;
-        continue;
-      }
-      // Turned back: the run of extreme abscissa ends at the previous point.
-      const std::size_t last = out.stands.size() - 2;
-      std::size_t first = last;
-      while (first > 0 && out.stands[first - 1].p.x() == out.stands[last].p.x()) --first;
-      if (first == 0) throw Failure{"the boundary turns back at once from " + at_text(out.stands[0].p)};
+    };
+    // The boundary turned back after the run first..last (the robot one step beyond it).
+    auto sensed = [&](std::size_t first, std::size_t last) {
       Sensed cp;
       cp.run.assign(out.stands.begin() + static_cast<std::ptrdiff_t>(first), out.stands.begin() + static_cast<std::ptrdiff_t>(last) + 1);
-      const int turn = geometry::orientation(out.stands[first - 1].p, out.stands[first].p,
-                                             first != last ? out.stands[last].p : out.stands[last + 1].p);
-      const bool convex = turn * dir > 0;  // free space on the inside of the turn
-      if (delta > 0) cp.kind = convex ? OnlineKind::Death : OnlineKind::Merge;
-      else cp.kind = convex ? OnlineKind::Birth : OnlineKind::Split;
+      bool convex;
+      if (first == 0) {
+        if (!start_kind) throw Failure{"the boundary turns back at once from " + at_text(out.stands[0].p)};
+        cp.kind = *start_kind;
+        convex = point_kind(cp.kind);
+      } else {
+        const int turn = geometry::orientation(out.stands[first - 1].p, out.stands[first].p,
+                                               first != last ? out.stands[last].p : out.stands[last + 1].p);
+        convex = turn * dir > 0;  // free space on the inside of the turn
+        if (delta > 0) cp.kind = convex ? OnlineKind::Death : OnlineKind::Merge;
+        else cp.kind = convex ? OnlineKind::Birth : OnlineKind::Split;
+      }
       // The ring's view of it: where an obstacle ends (reflex) the nearest obstacle point,
       // the ring's minimum, should lie behind. Counted, not trusted: near another obstacle
       // (a passage barely 2r wide) or beside a sharp tip the minimum points elsewhere.
@@ -185,6 +188,39 @@ class OnlinePlanner {
       out.stands.pop_back();
       cp.path_index = R_.path().size() - 1;
       out.cp = std::move(cp);
+    };
+    for (;;) {
+      bool on_slice = false;
+      step(stop_x, on_slice);
+      if (on_slice) {
+        if (R_.contact().vertex == Contact::kNone) return out;  // inside an edge: the chain crosses the slice
+        const std::size_t first = out.stands.size() - 1;
+        bool dummy = false;
+        do step(NAN, dummy);
+        while (R_.odometry().x() == stop_x);
+        const std::size_t last = out.stands.size() - 2;
+        if (delta * R_.odometry().x() < delta * stop_x) {
+          sensed(first, last);
+          return out;
+        }
+        // On beyond the slice: back to the chain's point on it that faces the cell.
+        std::size_t k = first;
+        for (std::size_t i = first; i <= last; ++i)
+          if (s == Side::Floor ? out.stands[i].p.y() > out.stands[k].p.y() : out.stands[i].p.y() < out.stands[k].p.y()) k = i;
+        for (std::size_t i = out.stands.size() - 1; i-- > k;) R_.retrace_to(out.stands[i].p, out.stands[i].c, Move::Follow);
+        out.stands.resize(k + 1);
+        return out;
+      }
+      const double x = delta * R_.odometry().x();
+      if (x >= best) {
+        best = x;
+        continue;
+      }
+      // Turned back: the run of extreme abscissa ends at the previous point.
+      const std::size_t last = out.stands.size() - 2;
+      std::size_t first = last;
+      while (first > 0 && out.stands[first - 1].p.x() == out.stands[last].p.x()) --first;
+      sensed(first, last);
       return out;
     }
   }
@@ -210,27 +246,146 @@ class OnlinePlanner {
     ++laps_;
     return true;
   }
+  bool wall_lap(bool up, bool& obstacle_right) {
+    tick();
+    if (!R_.wall_lap(up, obstacle_right)) return false;
+    ++laps_;
+    return true;
+  }
 
   // --- the incremental Reeb graph ---------------------------------------------------------
+  // The node of the piece of the critical slice holding a sensed critical point: a known one,
+  // or a new one the robot surveys.
   std::uint32_t node_for(const Sensed& s) {
-    const double y0 = s.lo().p.y(), y1 = s.hi().p.y();
     for (std::uint32_t i = 0; i < nodes_.size(); ++i) {
       const OnlineNode& n = nodes_[i];
-      if (n.kind != s.kind || n.x != s.x()) continue;
-      if (y0 <= n.y_high + tol_ && n.y_low <= y1 + tol_) {
+      if (n.x == s.x() && n.y_low <= s.lo().p.y() && s.hi().p.y() <= n.y_high) {
         order_.push_back(i);
         return i;
       }
     }
-    OnlineNode n;
-    n.kind = s.kind;
-    n.x = s.x(), n.y_low = y0, n.y_high = y1;
-    n.sensed_at = s.path_index;
-    n.ports.assign(s.kind == OnlineKind::Birth || s.kind == OnlineKind::Death ? 1 : 3, -1);
-    nodes_.push_back(n);
-    runs_.push_back(s.run);
+    return survey(s);
+  }
+
+  // Survey the piece of the slice through a sensed critical point: from the top of its run,
+  // lap up along the slice (sliding along walls that run along it) until the boundary
+  // crosses the slice; the same downwards from its bottom. Between two laps the robot
+  // stopped at a boundary point that touches the slice from one side; which side, a short
+  // boundary follow tells (its lateral displacement). Walls tell their side by contact, and
+  // the run's by the critical point's kind. Then the ports: per side, the maximal stretches
+  // of the piece free on that side, split where the obstacle touches from that side.
+  std::uint32_t survey(const Sensed& cp) {
+    goto_driven(cp.hi().p);
+    const double c = cp.x();
+    // The run's obstacle: a death or split lies on +x of its run, a birth or merge on -x.
+    const int run_side = cp.kind == OnlineKind::Death || cp.kind == OnlineKind::Split ? 1 : -1;
+    std::vector<Stand> above, below;
+    std::vector<int> gap_above, gap_below;
+    for (int pass = 0; pass < 2; ++pass) {
+      const bool up = pass == 0;
+      auto& st = up ? above : below;
+      auto& gp = up ? gap_above : gap_below;
+      if (!up) {
+        for (std::size_t i = above.size(); i-- > 0;) R_.retrace_to(i > 0 ? above[i - 1].p : cp.hi().p, i > 0 ? above[i - 1].c : cp.hi().c, Move::Transit);
+        along_run(cp.run, false);
+      }
+      for (;;) {
+        bool right = false;
+        // Stopped inside an edge, the boundary crosses the slice there: the piece ends.
+        if (R_.contact().vertex == Contact::kNone && R_.contact().edge != Contact::kNone) break;
+        if (wall_lap(up, right)) gp.push_back(right ? 1 : -1);
+        else if (lap(up)) gp.push_back(0);
+        else break;
+        st.push_back(here());
+        if (R_.odometry().x() != c) throw Failure{"a lap along the slice left it"};
+      }
+    }
+    Piece pc;
+    for (std::size_t i = below.size(); i-- > 0;) pc.stops.push_back(below[i]), pc.gap.push_back(gap_below[i]);
+    for (std::size_t i = 0; i < cp.run.size(); ++i) {
+      pc.stops.push_back(cp.run[i]);
+      if (i > 0) pc.gap.push_back(run_side);
+    }
+    pc.gap.insert(pc.gap.end(), gap_above.begin(), gap_above.end());
+    pc.stops.insert(pc.stops.end(), above.begin(), above.end());
+    const std::size_t m = pc.stops.size() - 1;
+    // Per stop, the side its obstacle touches the slice from (0: an end of the piece).
+    std::vector<int> touch(m + 1, 0);
+    for (std::size_t g = 0; g < m; ++g)
+      if (pc.gap[g] != 0) touch[g] = touch[g + 1] = pc.gap[g];
+    if (cp.run.size() == 1) touch[below.size()] = run_side;
+    for (std::size_t i = 1; i < m; ++i) {
+      if (touch[i] != 0) continue;
+      // Between two laps: a boundary point touching the slice; follow it a short way.
+      goto_driven(pc.stops[i].p);
+      tick();
+      bool on = false;
+      if (!R_.follow_step(1, c - w_ / 2, on, c + w_ / 2) || R_.odometry().x() == c)
+        throw Failure{"a boundary point where the slice goes on at " + at_text(pc.stops[i].p) + " does not touch it from one side"};
+      touch[i] = R_.odometry().x() > c ? 1 : -1;
+      R_.retrace_to(pc.stops[i].p, pc.stops[i].c, Move::Transit);
+    }
+    if (m == 0) {
+      if (!point_kind(cp.kind))
+        throw Failure{std::string("the slice through a ").append(to_string(cp.kind)).append(" critical point at ").append(at_text(cp.lo().p)).append(" is a single point")};
+      pc.ports.push_back({cp.kind == OnlineKind::Birth, 0, 0});
+    } else {
+      for (int side : {-1, 1}) {
+        constexpr std::size_t kClosed = SIZE_MAX;
+        std::size_t open = kClosed;
+        for (std::size_t g = 0; g < m; ++g) {
+          const bool free = pc.gap[g] == 0 || pc.gap[g] == -side;
+          if (free && open == kClosed) open = g;
+          else if (free && touch[g] == side) pc.ports.push_back({side > 0, open, g}), open = g;
+          else if (!free && open != kClosed) pc.ports.push_back({side > 0, open, g}), open = kClosed;
+        }
+        if (open != kClosed) pc.ports.push_back({side > 0, open, m});
+      }
+    }
+    OnlineNode n{};
+    n.at = cp.lo().p;  // the input frame's point is set at the end
+    n.x = c, n.y_low = pc.stops.front().p.y(), n.y_high = pc.stops.back().p.y();
+    n.sensed_at = cp.path_index;
+    for (const auto& p : pc.ports) {
+      n.left += p.right ? 0 : 1;
+      n.ports.push_back(-1);
+      n.spans.emplace_back(pc.stops[p.lo].p.y(), pc.stops[p.hi].p.y());
+    }
+    const std::size_t L = n.left, R = n.ports.size() - n.left;
+    n.kind = L == 0 && R == 1   ? OnlineKind::Birth
+             : L == 1 && R == 0 ? OnlineKind::Death
+             : L == 1 && R == 2 ? OnlineKind::Split
+             : L == 2 && R == 1 ? OnlineKind::Merge
+                                : OnlineKind::Slice;
+    if (L + R < 1 || (L == 1 && R == 1))
+      throw Failure{"the slice through a critical point at " + at_text(cp.lo().p) + " joins " + std::to_string(L) + " cell(s) on the left and " +
+                    std::to_string(R) + " on the right"};
+    nodes_.push_back(std::move(n));
+    pieces_.push_back(std::move(pc));
     order_.push_back(static_cast<std::uint32_t>(nodes_.size() - 1));
     return static_cast<std::uint32_t>(nodes_.size() - 1);
+  }
+
+  // The port of node `node` on side `right` a cell closing at critical point c arrives through.
+  int closing_port(std::uint32_t node, bool right, const Sensed& cp, PortSide ps) const {
+    const Piece& pc = pieces_[node];
+    const double a = cp.lo().p.y(), b = cp.hi().p.y();
+    int found = -1;
+    for (std::size_t k = 0; k < pc.ports.size(); ++k) {
+      if (pc.ports[k].right != right) continue;
+      const double lo = pc.stops[pc.ports[k].lo].p.y(), hi = pc.stops[pc.ports[k].hi].p.y();
+      bool in = false;
+      switch (ps) {
+        case PortSide::Point: in = lo <= a && b <= hi; break;
+        case PortSide::Up: in = lo <= b && b < hi; break;
+        case PortSide::Down: in = lo < a && a <= hi; break;
+        case PortSide::Both: in = lo < a && b < hi; break;
+      }
+      if (!in) continue;
+      if (found >= 0) throw Failure{"a cell closing at " + at_text(cp.lo().p) + " fits two ports of its critical slice"};
+      found = static_cast<int>(k);
+    }
+    return found;
   }
 
   // --- transit over what the robot has driven ----------------------------------------------
@@ -281,6 +436,15 @@ class OnlinePlanner {
     for (std::uint32_t v = it->second; v != UINT32_MAX; v = pred[v]) chain.push_back(v);
     for (auto k = chain.rbegin(); k != chain.rend(); ++k) R_.retrace_to(gpts_[*k].p, gpts_[*k].c, Move::Transit);
   }
+  // To a point the robot has driven through, shortest over its driven path.
+  void goto_driven(const Point& p) {
+    if (R_.odometry() == p) return;
+    std::vector<double> dist;
+    std::vector<std::uint32_t> pred;
+    dijkstra(dist, pred);
+    if (!std::isfinite(distance_to(dist, p))) throw Failure{"no driven path to " + at_text(p)};
+    transit(pred, p);
+  }
 
   // --- covering a cell --------------------------------------------------------------------
   struct Closing {
@@ -289,71 +453,38 @@ class OnlinePlanner {
   };
 
   // Cover the cell leaving node `from` through `port` (the robot stands at the port's
-  // anchor); returns its closing critical point.
+  // floor point on the slice); returns its closing critical point.
   //
   // The cell is swept strip by strip. The strip from the last lap (slice x0, floor point F0,
   // ceiling point C0, the bridge between them driven) towards x0 + d w is explored so that
   // the *first* critical point along the sweep is the one that closes the cell, however
   // many the strip holds:
   //  1. forward phase on the floor: follow it from F0 to the target slice; a critical point
-  //     sensed there moves the target to its slice;
+  //     sensed there (on the target slice too) moves the target to its slice;
   //  2. back to F0, across the bridge to C0, and the same on the ceiling (the reverse
   //     phase's boundary following, driven forward): its critical point moves the target
   //     again if it comes first;
-  //  3. closing phase on the target slice: lap from the ceiling towards the floor. Arriving
-  //     where the floor crosses the slice (odometry) proves the strip clear: the chains are
+  //  3. closing phase on the target slice: lap from the ceiling towards the floor (from the
+  //     floor when the ceiling has a critical point there). Arriving where the other chain
+  //     (or its critical point) crosses the slice proves the strip clear: the chains are
   //     monotone and an obstacle starting inside the strip would still cross the target
   //     slice (every obstacle of the configuration space is wider than 2r >= w). Hitting an
   //     obstacle instead: follow it back against the sweep to its first point, a critical
-  //     point nearer than the target, which becomes the target; then lap from there both
-  //     ways, again until both laps arrive on the chains.
-  // Each step moves the target strictly back, so this ends; the target's critical point
-  // (if any) closes the cell. Otherwise the lap across the target slice is the next lap.
+  //     point nearer than the target or on it, which becomes the target; then lap from there
+  //     both ways, again until both laps arrive on the chains.
+  // Each step moves the target back or keeps it on its slice while the laps progress along
+  // it, so this ends; the target's critical point (if any) closes the cell. Otherwise the lap
+  // across the target slice is the next lap.
   Closing cover_cell(std::uint32_t from, int port) {
-    bool right = false;
-    PortSide ps = PortSide::Point;
-    port_of(nodes_[from].kind, port, right, ps);
-    const int d = right ? 1 : -1;
-    const std::vector<Stand> run = runs_[from];
+    const Piece& pc = pieces_[from];
+    const Piece::Port pt = pc.ports[static_cast<std::size_t>(port)];
+    const int d = pt.right ? 1 : -1;
     auto blocked = [&](const char* what) {
       return Failure{std::string("a lap ").append(what).append(" from ").append(at_text(R_.odometry())).append(" is blocked")};
     };
-    // The first lap: the bridge from the floor's start to the ceiling's, as driven.
-    std::vector<Stand> bridge;
-    switch (ps) {
-      case PortSide::Point: bridge = run; break;
-      case PortSide::Up: {
-        const Stand h = R_.odometry() == run.back().p ? run.back() : run.front();
-        if (!lap(true)) throw blocked("up from a critical point");
-        bridge = {h, here()};
-        break;
-      }
-      case PortSide::Down: {
-        const Stand l = R_.odometry() == run.front().p ? run.front() : run.back();
-        if (!lap(false)) throw blocked("down from a critical point");
-        bridge = {here(), l};
-        break;
-      }
-      case PortSide::Both: {
-        along_run(run, true);
-        if (!lap(true)) throw blocked("up through a critical point");
-        const Stand top = here();
-        R_.retrace_to(run.back().p, run.back().c, Move::Transit);
-        along_run(run, false);
-        if (!lap(false)) throw blocked("down through a critical point");
-        bridge.push_back(here());
-        bridge.insert(bridge.end(), run.begin(), run.end());
-        bridge.push_back(top);
-        break;
-      }
-    }
-    // To the floor's start.
-    if (R_.odometry() != bridge.front().p) {
-      std::size_t k = 0;
-      while (k < bridge.size() && bridge[k].p != R_.odometry()) ++k;
-      if (k == bridge.size()) throw Failure{"the robot lost the first lap of a cell"};
-      for (std::size_t i = k; i-- > 0;) R_.retrace_to(bridge[i].p, bridge[i].c, Move::Transit);
-    }
+    // The first lap: the port's stretch of the slice, as surveyed.
+    std::vector<Stand> bridge(pc.stops.begin() + static_cast<std::ptrdiff_t>(pt.lo), pc.stops.begin() + static_cast<std::ptrdiff_t>(pt.hi) + 1);
+    if (R_.odometry() != bridge.front().p) throw Failure{"the robot is not at the port's floor"};
     const OnlineKind between_kind = d > 0 ? OnlineKind::Split : OnlineKind::Merge;  // an obstacle starts
     if (!o_.cycle) return raster(bridge, d);
     for (;;) {
@@ -362,91 +493,117 @@ class OnlinePlanner {
       std::optional<Sensed> target;  // the critical point on the target slice
       PortSide tps = PortSide::Point;
       auto sooner = [&](const Sensed& cp, PortSide side) {
-        if (target) node_for(*target);  // passed over: a critical point of another cell
+        if (target && cp.x() == xt && side != PortSide::Both) return;  // the same slice: the first one names it
         xt = cp.x(), target = cp;
-        tps = (cp.kind == OnlineKind::Birth || cp.kind == OnlineKind::Death) ? PortSide::Point : side;
+        tps = point_kind(cp.kind) ? PortSide::Point : side;
       };
       // 1. The floor.
       Follow F = follow(Side::Floor, d, xt);
       if (F.cp) sooner(*F.cp, PortSide::Up);
       // 2. Back, across, the ceiling.
       back_along(F.stands, 0);
-      if (F.cp) R_.retrace_to(F.stands.front().p, F.stands.front().c, Move::Transit);
       for (std::size_t i = 1; i < bridge.size(); ++i) R_.retrace_to(bridge[i].p, bridge[i].c, Move::Transit);
       Follow C = follow(Side::Ceiling, d, xt);
       if (C.cp) {
-        if (target && C.cp->x() == xt) {
-          // The same slice: the death where floor and ceiling meet, or a degenerate pair.
-          if (target->kind != C.cp->kind || C.cp->lo().p.y() > target->hi().p.y() + tol_)
-            throw Failure{"two critical points on one slice at x = " + geometry::format_number(xt) + " in one cell"};
-        } else {
-          if (target && d * C.cp->x() > d * xt) throw Failure{"the ceiling turned back beyond the target slice"};
-          sooner(*C.cp, PortSide::Down);
-        }
+        if (d * C.cp->x() > d * xt) throw Failure{"the ceiling turned back beyond the target slice"};
+        sooner(*C.cp, PortSide::Down);
       }
-      // 3. Across the target slice, towards the side the target's critical point is on (from
-      // the ceiling when it is on the floor or there is none).
-      const bool from_floor = target && C.cp && target->x() == C.cp->x();
-      const bool point_kind = target && (target->kind == OnlineKind::Birth || target->kind == OnlineKind::Death);
-      if (from_floor) {
-        // Back to the floor, and along it to the target slice again.
-        back_along(C.stands, 0);
-        for (std::size_t i = bridge.size() - 1; i-- > 0;) R_.retrace_to(bridge[i].p, bridge[i].c, Move::Transit);
-        const Follow F2 = follow(Side::Floor, d, xt);
-        if (F2.cp) throw Failure{"the floor turned back where it did not before"};
+      // The critical points of each chain on the target slice.
+      const Sensed* fcp = F.cp && F.cp->x() == xt ? &*F.cp : nullptr;
+      const Sensed* ccp = C.cp && C.cp->x() == xt ? &*C.cp : nullptr;
+      bool same_run = false;
+      if (fcp && ccp)
+        for (const Stand& a : fcp->run)
+          for (const Stand& b : ccp->run) same_run = same_run || a.p == b.p;
+      if (same_run) {
+        // Floor and ceiling meet there: a death (birth) closes the cell.
+        if (!point_kind(fcp->kind) || fcp->kind != ccp->kind) throw Failure{"the floor and the ceiling meet at a critical point of two kinds"};
+        return {*fcp, PortSide::Point};
       }
-      const Stand lap_from = here();
-      if (point_kind)
-        for (const Stand& st : target->run)
-          if (st.p == lap_from.p) return {*target, PortSide::Point};  // floor and ceiling meet there
-      const double expect = !target ? F.y_at(xt) : from_floor ? target->lo().p.y() : target->hi().p.y();
-      if (!lap(from_floor)) {
-        // Against a point where floor and ceiling meet: the strip closes there.
-        bool on_run = false;
-        if (point_kind)
-          for (const Stand& st : target->run) on_run = on_run || st.p == lap_from.p;
-        if (on_run) return {*target, PortSide::Point};
-        throw blocked("across the cell");
-      }
-      const Stand lap_to = here();
-      if (std::fabs(lap_to.p.y() - expect) <= tol_) {
-        if (target) return {*target, tps};
-        // The strip is clear: the lap across the target slice is the next lap.
-        bridge = {lap_to, lap_from};
-        continue;
-      }
-      if (from_floor ? !(lap_to.p.y() < expect) : !(lap_to.p.y() > expect))
-        throw Failure{"a lap across the cell from " + at_text(lap_from.p) + " went through the other side"};
-      const Stand floor_pt = lap_to;
-      // An obstacle between: back against the sweep along its top to where it starts, then
-      // lap from there both ways until both laps arrive on the chains.
-      Stand from_pt = floor_pt;
-      bool towards_floor = !from_floor;  // the lap that hit the obstacle went down
-      for (;;) {
-        const Follow O = follow(towards_floor ? Side::Floor : Side::Ceiling, -d, x0);
-        if (!O.cp) throw Failure{"an obstacle met in a strip at " + at_text(from_pt.p) + " does not start inside the strip"};
+      if (fcp && ccp && !(fcp->hi().p.y() < ccp->lo().p.y()))
+        throw Failure{"the floor's and the ceiling's critical points on the slice x = " + geometry::format_number(xt) + " overlap"};
+      // An obstacle starting in the strip, met as below.
+      const auto first_point = [&](bool on_floor, const Point& met, std::optional<OnlineKind> start_kind) {
+        const Follow O = follow(on_floor ? Side::Floor : Side::Ceiling, -d, x0, start_kind);
+        if (!O.cp) throw Failure{"an obstacle met in a strip at " + at_text(met) + " does not start inside the strip"};
         if (O.cp->kind != between_kind)
           throw Failure{std::string("an obstacle met in a strip starts at a ").append(to_string(O.cp->kind)).append(" critical point")};
-        sooner(*O.cp, PortSide::Both);
-        tps = PortSide::Both;
-        // Down from its bottom to the floor.
-        along_run(target->run, false);
-        if (!lap(false)) throw blocked("down from an obstacle's first point");
-        if (std::fabs(R_.odometry().y() - F.y_at(xt)) > tol_) {
-          if (!(R_.odometry().y() > F.y_at(xt))) throw Failure{"a lap down at " + at_text(R_.odometry()) + " went below the floor"};
-          from_pt = here(), towards_floor = true;
+        if (d * O.cp->x() > d * xt) throw Failure{"an obstacle met in a strip starts beyond the target slice"};
+        return *O.cp;
+      };
+      std::optional<Sensed> obs;
+      if (fcp && ccp && point_kind(fcp->kind) && point_kind(ccp->kind)) {
+        // Two pockets, one of the floor and one of the ceiling, end on the target slice: what
+        // separates them starts inside the strip, and the ceiling's pocket leads there. The
+        // robot stands on the ceiling's critical point: on around it, back against the sweep,
+        // to the boundary's next turn.
+        obs = first_point(true, R_.odometry(), std::nullopt);
+      } else {
+        // 3. Across the target slice, from a side whose critical point there (if any) is not a
+        // pocket's end: towards the ceiling's critical point if it has one there, else
+        // towards the floor.
+        const bool from_floor = ccp && !(fcp && point_kind(fcp->kind));
+        if (from_floor) {
+          // Back to the floor, and along it to the target slice again, to the top of its
+          // critical point there.
+          back_along(C.stands, 0);
+          for (std::size_t i = bridge.size() - 1; i-- > 0;) R_.retrace_to(bridge[i].p, bridge[i].c, Move::Transit);
+          const Follow F2 = follow(Side::Floor, d, xt);
+          if (F2.cp && F2.cp->x() != xt) throw Failure{"the floor turned back where it did not before"};
+          if (!F2.cp != !fcp) throw Failure{"the floor's critical point on the target slice changed"};
+          if (F2.cp) along_run(F2.cp->run, true);
+        } else if (ccp) {
+          along_run(ccp->run, false);
+        }
+        const Stand lap_from = here();
+        const double expect = from_floor ? ccp->lo().p.y() : fcp ? fcp->hi().p.y() : F.y_at(xt, true);
+        if (!lap(from_floor)) throw blocked("across the cell");
+        const Stand lap_to = here();
+        if (std::fabs(lap_to.p.y() - expect) <= tol_) {
+          if (target) return {*target, tps};
+          // The strip is clear: the lap across the target slice is the next lap.
+          bridge = from_floor ? std::vector<Stand>{lap_from, lap_to} : std::vector<Stand>{lap_to, lap_from};
           continue;
         }
-        R_.retrace_to(target->lo().p, target->lo().c, Move::Transit);
-        along_run(target->run, true);
-        if (!lap(true)) throw blocked("up from an obstacle's first point");
-        if (std::fabs(R_.odometry().y() - C.y_at(xt)) > tol_) {
-          if (!(R_.odometry().y() < C.y_at(xt))) throw Failure{"a lap up at " + at_text(R_.odometry()) + " went above the ceiling"};
-          from_pt = here(), towards_floor = false;
-          continue;
-        }
-        return {*target, PortSide::Both};
+        if (from_floor ? !(lap_to.p.y() < expect) : !(lap_to.p.y() > expect))
+          throw Failure{"a lap across the cell from " + at_text(lap_from.p) + " went through the other side"};
+        // An obstacle between: back against the sweep along it to where it starts (the new
+        // target), then lap from there both ways along its slice until both laps arrive on
+        // the chains. Another obstacle met on the way is followed back the same way: if it
+        // starts on the same slice the laps go on from its far side, if sooner it is the new
+        // target.
+        obs = first_point(!from_floor, lap_to.p, between_kind);
       }
+      sooner(*obs, PortSide::Both);
+      for (bool again = true; again;) {
+        again = false;
+        // The chains where they cross the obstacle's slice.
+        const double floor_y = F.y_at(xt, true), ceiling_y = C.y_at(xt, false);
+        for (int pass = 0; pass < 2 && !again; ++pass) {
+          const bool up = pass == 1;
+          goto_driven(up ? obs->hi().p : obs->lo().p);
+          Sensed cur = *obs;
+          for (;;) {
+            along_run(cur.run, up);
+            if (!lap(up)) throw blocked(up ? "up from an obstacle's first point" : "down from an obstacle's first point");
+            const double want = up ? ceiling_y : floor_y;
+            if (std::fabs(R_.odometry().y() - want) <= tol_) break;
+            if (up ? !(R_.odometry().y() < want) : !(R_.odometry().y() > want))
+              throw Failure{std::string("a lap ").append(up ? "up" : "down").append(" at ").append(at_text(R_.odometry())).append(" went past the ").append(up ? "ceiling" : "floor")};
+            const Point met = R_.odometry();
+            const Sensed next = first_point(!up, met, between_kind);
+            if (next.x() == xt) {
+              cur = next;
+              continue;
+            }
+            obs = next;
+            sooner(*obs, PortSide::Both);
+            again = true;
+            break;
+          }
+        }
+      }
+      return {*target, PortSide::Both};
     }
   }
 
@@ -457,9 +614,7 @@ class OnlinePlanner {
     Side s = Side::Floor;
     for (;;) {
       const Follow f = follow(s, d, bridge.front().p.x() + d * w_);
-      if (f.cp) return {*f.cp, (f.cp->kind == OnlineKind::Birth || f.cp->kind == OnlineKind::Death) ? PortSide::Point
-                                : s == Side::Floor                                                  ? PortSide::Up
-                                                                                                    : PortSide::Down};
+      if (f.cp) return {*f.cp, point_kind(f.cp->kind) ? PortSide::Point : s == Side::Floor ? PortSide::Up : PortSide::Down};
       if (!lap(s == Side::Floor)) throw Failure{"a lap across the cell from " + at_text(R_.odometry()) + " is blocked"};
       bridge = {here()};
       s = s == Side::Floor ? Side::Ceiling : Side::Floor;
@@ -493,31 +648,28 @@ class OnlinePlanner {
             if (p < 0) throw Failure{"a critical point with an unexplored port cannot be reached over the driven path"};
         return;
       }
-      bool right = false;
-      PortSide ps = PortSide::Point;
-      port_of(nodes_[bn].kind, bp, right, ps);
+      const bool right = pieces_[bn].ports[static_cast<std::size_t>(bp)].right;
       transit(pred, anchor(bn, bp).p);
       const std::size_t begin = R_.path().size() - 1;
       const std::size_t laps0 = laps_;
       const Closing c = cover_cell(bn, bp);
+      const std::size_t end = R_.path().size() - 1, laps = laps_ - laps0;
       const std::uint32_t to = node_for(c.cp);
-      const int tp = port_index(nodes_[to].kind, !right, c.ps);
-      if (tp < 0) throw Failure{"the closing critical point of a cell has no port for it"};
+      const int tp = closing_port(to, !right, c.cp, c.ps);
+      if (tp < 0) throw Failure{"the closing critical point of a cell at " + at_text(c.cp.lo().p) + " has no port for it"};
       if (nodes_[to].ports[tp] >= 0)
         throw Failure{"cell from critical point " + std::to_string(bn) + " closes at critical point " + std::to_string(to) +
                       " through a port already explored"};
-      if (to == bn && tp == bp) throw Failure{"a cell closes at its own port"};
+      if (to == bn) throw Failure{"a cell closes at its own critical slice"};
       const int e = static_cast<int>(edges_.size());
-      edges_.push_back({bn, to, laps_ - laps0, begin, R_.path().size() - 1});
+      edges_.push_back({bn, to, laps, begin, end});
       nodes_[bn].ports[bp] = e, nodes_[to].ports[tp] = e;
     }
   }
-  // Where a cell through a port starts: the run's top for the upper cells, else its bottom.
+  // Where a cell through a port starts: its floor point on the slice.
   const Stand& anchor(std::uint32_t node, int port) const {
-    bool right = false;
-    PortSide ps = PortSide::Point;
-    port_of(nodes_[node].kind, port, right, ps);
-    return ps == PortSide::Up ? runs_[node].back() : runs_[node].front();
+    const Piece& pc = pieces_[node];
+    return pc.stops[pc.ports[static_cast<std::size_t>(port)].lo];
   }
 
   OnlineRobot& R_;
@@ -526,7 +678,7 @@ class OnlinePlanner {
   std::size_t budget_, steps_ = 0, laps_ = 0, ring_disagreements_ = 0;
   double tol_;  // odometry comparisons: a lap arrives on a chain it was estimated to reach
   std::vector<OnlineNode> nodes_;
-  std::vector<std::vector<Stand>> runs_;
+  std::vector<Piece> pieces_;
   std::vector<OnlineEdge> edges_;
   std::vector<std::uint32_t> order_;
   // the driven graph
@@ -682,6 +834,13 @@ OnlineComparison compare_with_offline(const BoustrophedonDecomposition& off, con
     }
     if (online_of[bj] >= 0) {
       c.detail = "sensed critical points " + std::to_string(online_of[bj]) + " and " + std::to_string(i) + " match the same offline critical slice";
+      return c;
+    }
+    const std::size_t L = n.left, R = n.ports.size() - n.left;
+    if (L != S[bj].cells_left || R != S[bj].cells_right) {
+      c.detail = "sensed critical slice " + std::to_string(i) + " joins " + std::to_string(L) + " | " + std::to_string(R) +
+                 " cells (left | right), offline critical slice " + std::to_string(bj) + " " + std::to_string(S[bj].cells_left) + " | " +
+                 std::to_string(S[bj].cells_right);
       return c;
     }
     online_of[bj] = static_cast<int>(i), c.offline_of[i] = bj;

@@ -64,7 +64,7 @@ bool OnlineRobot::lap(bool up) {
   if (hit->vertex) {
     p = Q_.vertex(*hit->vertex), c.vertex = static_cast<std::uint32_t>(*hit->vertex);
   } else {
-    const auto iy = CGAL::to_interval(hit->point.y());
+    const auto iy = CGAL::to_interval(CGAL::exact(hit->point.y()));
     p = Point(pos_.x(), up ? iy.first : iy.second), c.edge = static_cast<std::uint32_t>(hit->edge);
   }
   if (p == pos_ || !geometry::visible(Q_, pos_, p)) return false;  // against the boundary that way
@@ -72,7 +72,25 @@ bool OnlineRobot::lap(bool up) {
   return true;
 }
 
-bool OnlineRobot::follow_step(int dir, double stop_x, bool& on_slice) {
+bool OnlineRobot::wall_lap(bool up, bool& obstacle_right) {
+  if (at_.vertex == Contact::kNone) return false;
+  const std::uint32_t v = at_.vertex;
+  const auto along = [&](std::size_t u) {
+    const Point& q = Q_.vertex(u);
+    return q.x() == pos_.x() && (up ? q.y() > pos_.y() : q.y() < pos_.y());
+  };
+  // Free space is on the left of every edge in ring order: a wall driven up in ring order
+  // has its obstacle towards +x, one driven up against ring order towards -x.
+  const std::size_t n = Q_.next(v), p = Q_.prev(v);
+  std::size_t to;
+  if (along(n)) to = n, obstacle_right = up;
+  else if (along(p)) to = p, obstacle_right = !up;
+  else return false;
+  go(Q_.vertex(to), Contact{static_cast<std::uint32_t>(to), Contact::kNone}, Move::Lap);
+  return true;
+}
+
+bool OnlineRobot::follow_step(int dir, double stop_x, bool& on_slice, double stop_x2) {
   on_slice = false;
   if (!at_.on_boundary()) return false;
   std::uint32_t e;  // the edge driven along, from its start (dir > 0) or end (dir < 0)
@@ -82,7 +100,9 @@ bool OnlineRobot::follow_step(int dir, double stop_x, bool& on_slice) {
   const Point& v = Q_.vertex(target);
   // Does the edge reach the slice x = stop_x strictly beyond the robot? (Exact: all doubles.)
   const double x0 = pos_.x(), x1 = v.x();
-  if (x0 != stop_x && ((x0 < stop_x && stop_x <= x1) || (x0 > stop_x && stop_x >= x1))) {
+  const auto reaches = [&](double s) { return x0 != s && ((x0 < s && s <= x1) || (x0 > s && s >= x1)); };
+  if (!reaches(stop_x) && !std::isnan(stop_x2) && reaches(stop_x2)) stop_x = stop_x2;
+  if (reaches(stop_x)) {
     on_slice = true;
     if (x1 == stop_x) {
       go(v, Contact{target, Contact::kNone}, Move::Follow);
@@ -92,7 +112,7 @@ bool OnlineRobot::follow_step(int dir, double stop_x, bool& on_slice) {
     // the left of the edge in ring order: above it when the edge runs towards +x).
     const geometry::ExactPoint &a = Q_.exact_vertex(e), &b = Q_.exact_vertex(Q_.next(e));
     const ExactFT y = a.y() + (ExactFT(stop_x) - a.x()) * (b.y() - a.y()) / (b.x() - a.x());
-    const auto iy = CGAL::to_interval(y);
+    const auto iy = CGAL::to_interval(CGAL::exact(y));
     const bool free_above = Q_.vertex(Q_.next(e)).x() > Q_.vertex(e).x();
     go(Point(stop_x, free_above ? iy.second : iy.first), Contact{Contact::kNone, e}, Move::Follow);
     return true;

@@ -9,6 +9,7 @@
 
 #include "cell_sweep.hpp"
 
+#include <cmath>
 #include <random>
 
 namespace preimage::decompose::detail {
@@ -47,7 +48,13 @@ class OnlineRobot {
   /// the polygon's ring order, free space on the left; -1: the reverse): to the next vertex,
   /// or onto the slice x = stop_x if the current edge reaches it first (then `on_slice`).
   /// False if the robot is not on the boundary.
-  bool follow_step(int dir, double stop_x, bool& on_slice);
+  /// A second stop slice `stop_x2` (NaN: none) bounds the lateral displacement both ways.
+  bool follow_step(int dir, double stop_x, bool& on_slice, double stop_x2 = NAN);
+  /// A lap along a wall: where the boundary runs along the slice from the robot's vertex
+  /// (up: +y), slide along it to the wall's far end, the next vertex (the robot keeps
+  /// contact with it on one side: `obstacle_right` says the wall's obstacle is towards +x).
+  /// False if no wall runs along the slice from here that way; the robot then stays.
+  bool wall_lap(bool up, bool& obstacle_right);
   /// Drive back to a point of its own path (a known free segment), exactly checked.
   void retrace_to(const Point& p, const Contact& c, Move m);
   const std::vector<SweepPoint>& path() const { return path_; }

@@ -244,6 +244,10 @@ cli_test(cover_online_raster_misses_ceiling_cp 0 "differs: offline critical slic
 cli_test(cover_online_cycle_finds_ceiling_cp 0 "4 critical slices, 4 cells: isomorphic" - cover ${FIX}/online/ceiling_critical_point.json --online --angle 13)
 cli_test(cover_online_several_critical_points_in_one_strip 0 "offline boustrophedon Reeb graph: 10 critical slices, 12 cells: isomorphic"
          - cover ${FIX}/online/several_critical_points_in_one_strip.json --online --angle 33)
+cli_test(cover_online_obstacles_starting_on_one_slice 0 "slice at .* \\(1 cells left, 3 right\\)"
+         - cover ${FIX}/online/obstacles_starting_on_one_slice.json --online --angle 0)
+cli_test(cover_online_obstacles_starting_on_one_slice_isomorphic 0 "offline boustrophedon Reeb graph: 4 critical slices, 5 cells: isomorphic"
+         - cover ${FIX}/online/obstacles_starting_on_one_slice.json --online --angle 0)
 cli_test(cover_online_wide_tool fail "^preimage: --width 0.5: online coverage needs 0 < w <= 2r = 0.4" - cover ${EXAMPLES}/gallery.json --radius 0.2 --width 0.5 --online)
 cli_test(cover_online_bad_sensors fail "^preimage: --sensors 10: the ring needs a multiple of 4 sensors" - cover ${EXAMPLES}/gallery.json --radius 0.2 --online --sensors 10)
 cli_test(cover_online_flags_need_online fail "^preimage: --sensors/--range/--noise/--raster: only with --online" - cover ${EXAMPLES}/gallery.json --radius 0.2 --noise 0.1)
