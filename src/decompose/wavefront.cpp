@@ -9,6 +9,7 @@
 #include <limits>
 #include <numeric>
 #include <thread>
+#include <tuple>
 
 namespace preimage::decompose {
 
@@ -247,10 +248,13 @@ WavefrontDecomposition::Level WavefrontDecomposition::compute(double lambda) con
     }
     it = jt;
   }
-  // Ends left without a partner: bends so nearly on one ray from their predecessor (a
-  // staircase wall rasterised from an image) that the rays' order is below double
-  // resolution, and the thin shadow between them changes hands. Such an end is joined to
-  // another one at the same point (within 1e-9 of the map's size); the count is reported.
+  // Ends left without a partner: where the cuts of one circle come closer than double
+  // resolution can order (bends so nearly on one ray from their predecessor, as on the
+  // staircase walls of rasterised plans; three circles nearly through one point, a level
+  // close to a collision on an extension), the sliver between them changes hands. A front
+  // has no end in open free space, so such an end is joined to the nearest other such end
+  // (the closest pairs first) if it lies within 1e-6 of the map's size; the count is
+  // reported (snapped_ends), and ends left over are counted as unmatched.
   auto end_point = [&](std::size_t x) {
     const auto& A = L.arcs[x / 2];
     const double t = (x % 2) ? A.from + A.sweep : A.from;
@@ -260,14 +264,18 @@ WavefrontDecomposition::Level WavefrontDecomposition::compute(double lambda) con
   std::vector<std::size_t> loose;
   for (std::size_t x = 0; x < 2 * n; ++x)
     if (!free_end[x] && L.link[x] < 0 && L.arcs[x / 2].sweep < kTwoPi) loose.push_back(x);
+  std::vector<std::tuple<double, std::size_t, std::size_t>> close;
   for (std::size_t i = 0; i < loose.size(); ++i)
-    for (std::size_t j = i + 1; j < loose.size() && L.link[loose[i]] < 0; ++j) {
-      const std::size_t x = loose[i], y = loose[j];
-      if (x / 2 == y / 2 || L.link[y] >= 0 || wf_length(end_point(x), end_point(y)) > 1e-9 * top_) continue;
-      L.link[x] = static_cast<std::int64_t>(y), L.link[y] = static_cast<std::int64_t>(x);
-      uf.unite(static_cast<std::uint32_t>(x / 2), static_cast<std::uint32_t>(y / 2));
-      L.snapped += 2;
-    }
+    for (std::size_t j = i + 1; j < loose.size(); ++j)
+      if (const double d = wf_length(end_point(loose[i]), end_point(loose[j])); loose[i] / 2 != loose[j] / 2 && d <= 1e-6 * top_)
+        close.emplace_back(d, loose[i], loose[j]);
+  std::sort(close.begin(), close.end());
+  for (const auto& [d, x, y] : close) {
+    if (L.link[x] >= 0 || L.link[y] >= 0) continue;
+    L.link[x] = static_cast<std::int64_t>(y), L.link[y] = static_cast<std::int64_t>(x);
+    uf.unite(static_cast<std::uint32_t>(x / 2), static_cast<std::uint32_t>(y / 2));
+    L.snapped += 2;
+  }
   for (const std::size_t x : loose) L.unmatched += L.link[x] < 0;
   L.front.assign(n, 0);
   std::vector<std::uint32_t> id(n, UINT32_MAX);

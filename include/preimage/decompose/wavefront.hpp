@@ -48,8 +48,9 @@
 // Degeneracies of real floor plans: bends exactly in line (p -> s -> w all collinear; a
 // wall with notches) carry all their labels on one cut of p's circle; bends so nearly in
 // line that the order of their rays is below double resolution (staircase walls rasterised
-// from images) leave ends without a partner, joined by position (within 1e-9 of the map's
-// size, snapped_ends) or, failing that, counted (unmatched_ends) and treated as free.
+// from images), or three circles nearly through one point, leave ends without a partner,
+// joined to the nearest such end (within 1e-6 of the map's size, snapped_ends) or, failing
+// that, counted (unmatched_ends) and treated as free.
 #pragma once
 #include <preimage/geometry/shortest_path_map.hpp>
 
