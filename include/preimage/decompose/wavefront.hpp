@@ -12,8 +12,11 @@
 // another root is shorter (the complement of the front) can only start or end where C_v
 // crosses another root's circle, an obstacle edge, or the extension of v's shortest path
 // through one of its children. C_v is cut at all those points (circle-circle and circle-
-// segment intersections, in double) and each piece is kept when its midpoint's root is v
-// (ShortestPathMap::query: exact visibility and tangency, distances in double). Pieces are
+// segment intersections, in double) and a piece is kept when its midpoint m is seen from v
+// (an exact walk from v), the path bends taut at v (m tangent at v, and on the obstacle's
+// side of the line from v's predecessor through v: exact orientations) and no root u with
+// D(u) + |um| < λ sees m (a walk per such u; distances in double). Roots at one point (the
+// start at a reflex vertex) are one root. Pieces are
 // glued into fronts by what their ends are (the same circle-circle intersection of the
 // same two roots, the same extension), never by distance; an end on an obstacle edge is a
 // free end.
@@ -22,7 +25,8 @@
 // front at λb moves back along its own shortest path (a ray to its root, then the path's
 // edges) to the point at distance λa from the start, which is on the front at λa. Two
 // levels with no critical value between them have fronts in one-to-one correspondence this
-// way, with equal topology (open chain or closed curve). The levels are placed between
+// way, with equal topology (open chain or closed curve, and an open chain's ends on the
+// same obstacles). The levels are placed between
 // consecutive candidate critical values:
 //  - the start (a minimum: the first front is a closed circle);
 //  - the distance of every vertex (a reflex vertex reached head-on is where a front first
@@ -42,8 +46,10 @@
 // placed at the interval's candidate (WavefrontNode::lo, hi bound it); what is missed is a
 // front born and gone within one interval, which needs a split that is a candidate and a
 // death that is not in the same interval (not seen on any map tried: random points all
-// find their cell). The independent check in the suite: the Reeb graph of h on a disc with
-// k holes has exactly k independent cycles.
+// find their cell). The independent check in the suite is homology: free space with k
+// holes has k independent cycles, each a cycle of the Reeb graph or carried by closed
+// fronts around holes. Events closer than 1e-9 of the range of h are one slice. Maps whose
+// holes touch at vertices (contacts) are refused (InputError).
 //
 // Degeneracies of real floor plans: bends exactly in line (p -> s -> w all collinear; a
 // wall with notches) carry all their labels on one cut of p's circle; bends so nearly in
@@ -140,10 +146,12 @@ class WavefrontDecomposition {
   std::vector<Point> slot_point_;
   std::vector<double> slot_dist_;
   std::vector<std::uint32_t> slot_pred_;  // slot of the predecessor (UINT32_MAX for the start)
-  // Per slot: its visibility polygon's edges (double), each an obstacle edge or a window.
+  std::vector<std::vector<std::uint32_t>> slot_alias_;  // per slot: the reflex vertices at its point
+  std::vector<char> slot_live_;                         // 0 for an alias of an earlier slot
+  // Per slot: its visibility polygon's edges (double), each on an obstacle edge or a window
+  // (where the feet of perpendiculars are looked for).
   struct Sight {
     std::vector<Point> a, b;
-    std::vector<std::uint64_t> label;
     std::vector<std::uint32_t> edge;  // the obstacle edge, or kNone for a window
   };
   std::vector<Sight> sight_;
@@ -154,6 +162,8 @@ class WavefrontDecomposition {
   // Pairs (front at A, front at B) joined by following B's fronts back to A's level.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> relation(const Level& A, const Level& B) const;
   bool continues(const Level& A, std::uint32_t a, const Level& B, std::uint32_t b) const;
+  // Whether a path can end at m with its last bend at (reflex) slot s.
+  bool taut(std::uint32_t s, const Point& m) const;
   // Follows the fronts from A (the last level recorded) to B, creating nodes and cells.
   void step(const Level& A, const Level& B, int depth);
   // The cell of each front of a level (kNone where it cannot tell).
