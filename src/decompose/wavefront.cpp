@@ -6,6 +6,7 @@
 #include "cell_graph.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <limits>
@@ -185,8 +186,8 @@ WavefrontDecomposition::Level WavefrontDecomposition::compute(double lambda) con
     }
   }
 
-  // Pieces between consecutive cuts; a piece is on the front when its midpoint's root is
-  // this circle's root. Runs of pieces on the front become arcs.
+  // Pieces between consecutive cuts; a piece is on the front when its midpoint m is (see
+  // on_front). Runs of pieces on the front become arcs.
   struct End {
     std::vector<std::uint64_t> labels;
   };
@@ -200,7 +201,7 @@ WavefrontDecomposition::Level WavefrontDecomposition::compute(double lambda) con
     auto on_front = [&](double angle) {
       const Point m(c.x() + radius[s] * std::cos(angle), c.y() + radius[s] * std::sin(angle));
       // m must be seen from the root (a walk from the root, which also rejects an m outside
-      // free space without locating it), with the path tangent there at a reflex root
+      // free space without locating it), with the path taut there at a reflex root
       if (root != ShortestPathMap::kSource && !taut(s, m)) return false;
       auto sees = [&](std::uint32_t slot) {
         const std::uint32_t r = slot_root_[slot];
