@@ -29,6 +29,13 @@ void Scan::validate_layout(const std::string& what) const {
   if (!(angle_increment > 0) || !std::isfinite(angle_min))
     throw InputError(what + ": angle_increment must be positive and angle_min finite");
   if (!(max_range > 0) || !std::isfinite(max_range)) throw InputError(what + ": max_range must be positive and finite");
+  // Beams must point different ways (a fuzzer's increment of 1.6e-47 made every beam one
+  // direction in double, and the beams per quarter turn more than any integer). No laser
+  // resolves a nanoradian; the check is O(1) because the tracking loop calls it per scan.
+  const std::size_t n = ranges.size();
+  if (angle_increment < 1e-9 || !(angle(1) > angle(0)) || !(angle(n - 1) > angle(n - 2)))
+    throw InputError(what + ": angle_increment " + geometry::format_number(angle_increment) + " with angle_min " + geometry::format_number(angle_min) +
+                     " does not give beams distinct directions (increments of at least 1e-9 rad are accepted)");
   const double span = static_cast<double>(ranges.size() - 1) * angle_increment;
   if (!full_circle() && span > M_PI * (1 + 1e-12))
     throw InputError(what + ": the beams span " + std::to_string(span * 180 / M_PI) +
@@ -307,7 +314,9 @@ LocalMap local_map_from_scan(const Scan& scan, const MapParams& mp) {
     return CGAL::compare_distance_to_point(m.observer, p, m.vertices[other]) == CGAL::SMALLER ? p_index : other;
   };
   thread_local std::vector<std::size_t> fitted, stack;
-  const auto quarter_turn = static_cast<std::size_t>(std::max(2.0, std::floor(M_PI / 2 / scan.angle_increment)));
+  // beams per quarter turn, at most the walk's length (a cast of a larger double is undefined)
+  const double beams_per_quarter = std::floor(M_PI / 2 / scan.angle_increment);
+  const std::size_t quarter_turn = beams_per_quarter < static_cast<double>(2 * n + 2) ? static_cast<std::size_t>(std::max(2.0, beams_per_quarter)) : 2 * n + 2;
   // Emits the fitted polyline of a run (its first point is already emitted).
   auto flush = [&](const ScanPoints::Run& run) {
     if (run.last == run.first) return;

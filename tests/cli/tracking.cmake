@@ -56,6 +56,8 @@ cli_test(track_replay_truncated_gz fail "aces_three_scans_truncated.log.gz: the 
 cli_test(track_replay_bad_radius fail "--radius: expected a number in \\(0, 100\\], got 0" - track replay ${FIX}/scans/bad.log --radius 0)
 cli_test(track_replay_bad_max_range fail "--max-range: expected a number in \\(0, 10000\\], got 'inf'" - track replay ${FIX}/scans/bad.log --max-range inf)
 cli_test(track_replay_bad_ahead fail "--ahead: expected a number in \\(0, 10000\\], got -1" - track replay ${FIX}/scans/bad.log --ahead -1)
+# a fuzzer's scan: beams 1.6e-47 rad apart (all one direction in double)
+cli_test(track_replay_tiny_angle_increment fail "tiny_angle_increment\\.log:1: angle_increment 1\\.63971058433e-47 with angle_min -1\\.5707963 does not give beams distinct directions" - track replay ${FIX}/scans/tiny_angle_increment.log)
 cli_test(track_replay_bad_token fail "bad.log:3: token 5 \\(\"x\"\\): expected a number" - track replay ${FIX}/scans/bad.log)
 if(EXISTS ${PROJECT_SOURCE_DIR}/../shared/data/carmen/aces-corrected.log.gz)
   cli_test(track_replay_aces 0 "^440 scans replayed" - track replay ${PROJECT_SOURCE_DIR}/../shared/data/carmen/aces-corrected.log.gz)
