@@ -2,6 +2,7 @@
 #include <preimage/decompose/wavefront.hpp>
 
 #include <preimage/error.hpp>
+#include <preimage/union_find.hpp>
 
 #include "cell_graph.hpp"
 
@@ -42,20 +43,11 @@ std::uint64_t wf_label(std::uint64_t kind, std::uint64_t a, std::uint64_t b = 0,
   return (kind << 62) | (a << 31) | (b << 1) | side;
 }
 bool wf_free_end(std::uint64_t label) { return (label >> 62) == kEdgeEnd; }
+std::uint32_t wf_edge_of(std::uint64_t label) { return static_cast<std::uint32_t>((label >> 31) & 0x7fffffff); }  // of a free end
 
 struct WfSplit {
   double angle;
   std::uint64_t label;
-};
-
-struct WfUnionFind {
-  std::vector<std::uint32_t> parent;
-  explicit WfUnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-  std::uint32_t find(std::uint32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void unite(std::uint32_t a, std::uint32_t b) { parent[find(a)] = find(b); }
 };
 
 // Runs body(k) for k in [0, n) on `threads` threads, strided; the first exception a
@@ -283,14 +275,14 @@ WavefrontDecomposition::Level WavefrontDecomposition::compute(double lambda) con
       for (const auto l : lab) reg.emplace_back(l, static_cast<std::uint32_t>(2 * a + static_cast<std::size_t>(e)));
     }
   std::sort(reg.begin(), reg.end());
-  WfUnionFind uf(n);
+  UnionFind uf(n);
   for (auto it = reg.begin(); it != reg.end();) {
     auto jt = it;
     while (jt != reg.end() && jt->first == it->first) ++jt;
     for (auto mt = it + 1; mt < jt; ++mt) {
       const std::uint32_t x = it->second, y = mt->second;
       if (x / 2 == y / 2) continue;
-      uf.unite(x / 2, y / 2);
+      uf.join(x / 2, y / 2);
       if (L.link[x] < 0) L.link[x] = y;
       if (L.link[y] < 0) L.link[y] = x;
     }
@@ -321,7 +313,7 @@ WavefrontDecomposition::Level WavefrontDecomposition::compute(double lambda) con
   for (const auto& [d, x, y] : close) {
     if (L.link[x] >= 0 || L.link[y] >= 0) continue;
     L.link[x] = static_cast<std::int64_t>(y), L.link[y] = static_cast<std::int64_t>(x);
-    uf.unite(static_cast<std::uint32_t>(x / 2), static_cast<std::uint32_t>(y / 2));
+    uf.join(static_cast<std::uint32_t>(x / 2), static_cast<std::uint32_t>(y / 2));
     L.snapped += 2;
   }
   for (const std::size_t x : loose) L.unmatched += L.link[x] < 0;
@@ -338,7 +330,7 @@ WavefrontDecomposition::Level WavefrontDecomposition::compute(double lambda) con
       L.closed[L.front[x / 2]] = 0;
       std::uint32_t ring = UINT32_MAX;  // the obstacle the end lies on (the lowest ring at a vertex)
       for (const auto l : ends[x / 2][x % 2].labels)
-        if (wf_free_end(l)) ring = std::min(ring, static_cast<std::uint32_t>(env.ring_of((l >> 31) & 0x7fffffff)));
+        if (wf_free_end(l)) ring = std::min(ring, static_cast<std::uint32_t>(env.ring_of(wf_edge_of(l))));
       L.end_rings[L.front[x / 2]].push_back(ring);
     }
   for (auto& r : L.end_rings) std::sort(r.begin(), r.end());
@@ -373,8 +365,8 @@ struct WfGroup {
   std::vector<std::uint32_t> below, above;
 };
 std::vector<WfGroup> wf_groups(std::size_t na, std::size_t nb, const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs) {
-  WfUnionFind uf(na + nb);
-  for (const auto& [a, b] : pairs) uf.unite(a, static_cast<std::uint32_t>(na + b));
+  UnionFind uf(na + nb);
+  for (const auto& [a, b] : pairs) uf.join(a, static_cast<std::uint32_t>(na + b));
   std::vector<std::uint32_t> id(na + nb, UINT32_MAX);
   std::vector<WfGroup> groups;
   for (std::uint32_t x = 0; x < na + nb; ++x) {
