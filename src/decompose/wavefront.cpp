@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <preimage/decompose/wavefront.hpp>
 
-#include <preimage/error.hpp>
 #include <preimage/union_find.hpp>
 
 #include "cell_graph.hpp"
@@ -13,7 +12,6 @@
 #include <limits>
 #include <map>
 #include <numeric>
-#include <string>
 #include <exception>
 #include <mutex>
 #include <thread>
@@ -38,7 +36,7 @@ double wf_offset(double angle, double base) {
 // What an end of a front piece is: an obstacle edge (a free end), the extension of the
 // shortest path through a root (glued to that root's piece), or one of the two crossings of
 // two roots' circles (glued to the other root's piece). Packed so both sides agree exactly.
-enum : std::uint64_t { kEdgeEnd = 0, kExtensionEnd = 1, kCrossingEnd = 2 };
+enum : std::uint64_t { kEdgeEnd = 0, kExtensionEnd = 1, kCrossingEnd = 2, kTieEnd = 3 };
 std::uint64_t wf_label(std::uint64_t kind, std::uint64_t a, std::uint64_t b = 0, std::uint64_t side = 0) {
   return (kind << 62) | (a << 31) | (b << 1) | side;
 }
@@ -84,10 +82,16 @@ struct WavefrontDecomposition::Level {
   std::size_t fronts = 0, unmatched = 0, snapped = 0;
 
   // The arc of `slot` whose angular range contains `angle` (-1 if none).
+  // A point followed back along a path that runs along a wall (into a contact, or down a
+  // notch) lands on an arc's end, whose angle is a rounded cut: ends within 1e-9 rad count.
   std::int64_t arc_at(std::uint32_t slot, double angle) const {
-    for (std::uint32_t a = first[slot]; a < first[slot + 1]; ++a)
-      if (arcs[a].sweep >= kTwoPi || wf_offset(angle, arcs[a].from) <= arcs[a].sweep) return a;
-    return -1;
+    std::int64_t near = -1;
+    for (std::uint32_t a = first[slot]; a < first[slot + 1]; ++a) {
+      const double off = wf_offset(angle, arcs[a].from);
+      if (arcs[a].sweep >= kTwoPi || off <= arcs[a].sweep) return a;
+      if (off - arcs[a].sweep < 1e-9 || kTwoPi - off < 1e-9) near = a;
+    }
+    return near;
   }
 };
 
@@ -134,6 +138,13 @@ WavefrontDecomposition::Level WavefrontDecomposition::compute(double lambda) con
       if (std::min(a.x(), b.x()) > c.x() + r || std::max(a.x(), b.x()) < c.x() - r || std::min(a.y(), b.y()) > c.y() + r ||
           std::max(a.y(), b.y()) < c.y() - r)
         continue;
+      // An edge at the root's own point (its ring edges, a contact's other rings): the
+      // circle meets it in the edge's direction (the quadratic loses a small radius).
+      if (a == c || b == c) {
+        const Point& o = a == c ? b : a;
+        if (wf_length(c, o) >= r) splits[s].push_back({wf_angle(c, o), wf_label(kEdgeEnd, e)});
+        continue;
+      }
       const double dx = b.x() - a.x(), dy = b.y() - a.y(), fx = a.x() - c.x(), fy = a.y() - c.y();
       const double qa = dx * dx + dy * dy, qb = 2 * (fx * dx + fy * dy), qc = fx * fx + fy * fy - r * r;
       const double disc = qb * qb - 4 * qa * qc;
@@ -150,8 +161,15 @@ WavefrontDecomposition::Level WavefrontDecomposition::compute(double lambda) con
     if (p == kNoSlot) continue;
     const double angle = ext_angle_[s];
     splits[s].push_back({angle, wf_label(kExtensionEnd, s)});
-    if (radius[p] > wf_length(slot_point_[p], slot_point_[s]))
-      for (const std::uint32_t w : collinear_chain_[s]) splits[p].push_back({angle, wf_label(kExtensionEnd, w)});
+    // (whenever s's own circle has the cut: p's radius exceeds |ps| by exactly s's radius,
+    // but not always once rounded, and a cut on one side only leaves an end alone)
+    for (const std::uint32_t w : collinear_chain_[s]) splits[p].push_back({angle, wf_label(kExtensionEnd, w)});
+  }
+  for (const Tie& t : ties_) {
+    if (radius[t.w] <= 0) continue;
+    const std::uint64_t label = wf_label(kTieEnd, t.s, t.w);
+    splits[t.w].push_back({t.angle, label});
+    splits[t.s].push_back({t.angle, label});  // (as for extensions)
   }
   // Crossings of two circles, computed once per pair (lower slot first) so both agree.
   for (std::size_t i = 0; i < live.size(); ++i) {
@@ -200,6 +218,10 @@ WavefrontDecomposition::Level WavefrontDecomposition::compute(double lambda) con
         return r == ShortestPathMap::kSource ? index.visible(slot_point_[slot], m) : index.visible_from_vertex(r, m);  // a walk from a contact tries each wedge
       };
       if (!sees(s)) return false;
+      // A root tied with s (ties_) is as near at s's point and nearer wherever it sees:
+      // the ray through s bounds s's share exactly, whatever distances round to.
+      for (const std::uint32_t t : tie_sources_[s])
+        if (radius[t] > 0 && sees(t)) return false;
       // m is on the front unless a root that sees m is nearer through its own path:
       // h(m) = min over the roots m sees (any visible root's path bounds h from above).
       // Only roots whose disc of radius λ - D(u) holds m can be; each costs one walk.
@@ -221,12 +243,18 @@ WavefrontDecomposition::Level WavefrontDecomposition::compute(double lambda) con
       continue;
     }
     std::sort(cut.begin(), cut.end(), [](const WfSplit& x, const WfSplit& y) { return x.angle < y.angle || (x.angle == y.angle && x.label < y.label); });
-    // Distinct angles, with every label at each.
+    // Distinct angles, with every label at each. Cuts within 1e-12 rad are one: the same
+    // point reached two ways (a wall lying on the ray of an extension through a contact,
+    // whose crossing is solved, not taken from the ray), which would leave a sliver between.
     std::vector<double> angle;
     std::vector<std::vector<std::uint64_t>> labels;
     for (const auto& sp : cut) {
-      if (angle.empty() || sp.angle != angle.back()) angle.push_back(sp.angle), labels.emplace_back();
+      if (angle.empty() || sp.angle - angle.back() > 1e-12) angle.push_back(sp.angle), labels.emplace_back();
       labels.back().push_back(sp.label);
+    }
+    if (angle.size() > 1 && angle.front() + kTwoPi - angle.back() <= 1e-12) {  // across -pi
+      labels.front().insert(labels.front().end(), labels.back().begin(), labels.back().end());
+      angle.pop_back(), labels.pop_back();
     }
     const std::size_t k = angle.size();
     std::vector<char> on(k);  // piece i: from angle[i] to angle[i + 1] (cyclically)
@@ -337,20 +365,31 @@ WavefrontDecomposition::Level WavefrontDecomposition::compute(double lambda) con
   return L;
 }
 
+std::int64_t WavefrontDecomposition::arc_on_path(const Level& A, std::uint32_t s, double angle) const {
+  // Back along the path's bends while they are not below A's level; the point is then on
+  // the circle of the last bend below it, in the direction of the next bend.
+  if (slot_dist_[s] >= A.lambda) {
+    std::uint32_t child = s, x = slot_pred_[s];
+    while (x != kNoSlot && slot_dist_[x] >= A.lambda) child = x, x = slot_pred_[x];
+    if (x == kNoSlot) return -1;
+    s = x;
+    angle = ext_angle_[child];
+  }
+  std::int64_t a = A.arc_at(s, angle);
+  // On a straight chain of bends (p -> s -> child in line) the circles of s and p touch on
+  // the ray and the front there may be p's: go back while the path arrives straight.
+  while (a < 0 && s != 0 && slot_pred_[s] != kNoSlot && ext_angle_[s] == angle) {
+    s = slot_pred_[s];
+    a = A.arc_at(s, angle);
+  }
+  return a;
+}
+
 std::vector<std::pair<std::uint32_t, std::uint32_t>> WavefrontDecomposition::relation(const Level& A, const Level& B) const {
   // Each arc of B, from its midpoint, back along its shortest path to the level of A.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
   for (std::uint32_t b = 0; b < B.arcs.size(); ++b) {
-    std::uint32_t s = B.arc_slot[b];
-    double angle = B.arcs[b].from + B.arcs[b].sweep / 2;
-    if (slot_dist_[s] >= A.lambda) {
-      std::uint32_t child = s, x = slot_pred_[s];
-      while (x != kNoSlot && slot_dist_[x] >= A.lambda) child = x, x = slot_pred_[x];
-      if (x == kNoSlot) continue;
-      s = x;
-      angle = wf_angle(slot_point_[x], slot_point_[child]);
-    }
-    const std::int64_t a = A.arc_at(s, angle);
+    const std::int64_t a = arc_on_path(A, B.arc_slot[b], B.arcs[b].from + B.arcs[b].sweep / 2);
     if (a >= 0) pairs.emplace_back(A.front[static_cast<std::size_t>(a)], B.front[b]);
   }
   std::sort(pairs.begin(), pairs.end());
@@ -364,9 +403,11 @@ namespace {
 struct WfGroup {
   std::vector<std::uint32_t> below, above;
 };
-std::vector<WfGroup> wf_groups(std::size_t na, std::size_t nb, const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs) {
+std::vector<WfGroup> wf_groups(std::size_t na, std::size_t nb, const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs,
+                               const std::vector<std::pair<std::uint32_t, std::uint32_t>>& below_joins = {}) {
   UnionFind uf(na + nb);
   for (const auto& [a, b] : pairs) uf.join(a, static_cast<std::uint32_t>(na + b));
+  for (const auto& [a, b] : below_joins) uf.join(a, b);
   std::vector<std::uint32_t> id(na + nb, UINT32_MAX);
   std::vector<WfGroup> groups;
   for (std::uint32_t x = 0; x < na + nb; ++x) {
@@ -387,10 +428,39 @@ bool WavefrontDecomposition::continues(const Level& A, std::uint32_t a, const Le
   return A.closed[a] == B.closed[b] && A.end_rings[a] == B.end_rings[b];
 }
 
+std::int64_t WavefrontDecomposition::front_on_path(const Level& A, std::uint32_t s, double angle) const {
+  const std::int64_t a = arc_on_path(A, s, angle);
+  return a < 0 ? -1 : static_cast<std::int64_t>(A.front[static_cast<std::size_t>(a)]);
+}
+
 void WavefrontDecomposition::step(const Level& A, const Level& B, int depth) {
-  const auto groups = wf_groups(A.fronts, B.fronts, relation(A, B));
-  const bool compound = std::any_of(groups.begin(), groups.end(), [](const WfGroup& g) { return g.below.size() >= 2 && g.above.size() >= 2; });
-  if (compound && depth < 40 && B.lambda - A.lambda > 1e-12 * top_) {
+  const auto pairs = relation(A, B);
+  // Fronts that reach one root at one level along tied paths (ties_) meet there: at a
+  // contact they may touch only at that point (a kiss through the contact) and part again,
+  // one to one on both sides, which following back cannot see. Joined below.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> kisses;
+  for (const Tie& t : ties_) {
+    if (!(A.lambda < slot_dist_[t.w] && slot_dist_[t.w] <= B.lambda)) continue;
+    const std::uint32_t p = slot_pred_[t.w];
+    const std::int64_t x = front_on_path(A, p, wf_angle(slot_point_[p], slot_point_[t.w]));
+    const std::int64_t y = front_on_path(A, t.s, t.angle);
+    if (x >= 0 && y >= 0 && x != y) kisses.emplace_back(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y));
+  }
+  const auto groups = wf_groups(A.fronts, B.fronts, pairs, kisses);
+  // (a kiss is one slice whatever the interval: it does not call for bisection)
+  const auto plain = kisses.empty() ? groups : wf_groups(A.fronts, B.fronts, pairs);
+  const bool compound = std::any_of(plain.begin(), plain.end(), [](const WfGroup& g) { return g.below.size() >= 2 && g.above.size() >= 2; });
+  // A front that merges into another and whose part of the merged front is then overrun
+  // within the interval looks like a death beside a change of the other front (nothing at B
+  // follows back to it). Seen where a front comes through a contact into a corner. A finer
+  // level between the two shows the merge.
+  std::size_t deaths = 0, changes = 0;
+  for (const auto& g : plain) {
+    if (g.above.empty()) ++deaths;
+    else if (!(g.below.size() == 1 && g.above.size() == 1 && continues(A, g.below[0], B, g.above[0]))) ++changes;
+  }
+  const bool overrun = deaths > 0 && changes > 0 && B.lambda - A.lambda > 1e-9 * top_;
+  if ((compound || overrun) && depth < 40 && B.lambda - A.lambda > 1e-12 * top_) {
     const Level M = compute((A.lambda + B.lambda) / 2);
     step(A, M, depth + 1);
     step(M, B, depth + 1);
@@ -449,15 +519,11 @@ void WavefrontDecomposition::step(const Level& A, const Level& B, int depth) {
 
 WavefrontDecomposition::WavefrontDecomposition(const geometry::ShortestPathMap& spm) : spm_(&spm) {
   const Environment& env = spm.environment();
-  // Holes touching at a vertex: a front reaches the far side through the contact point
-  // only, pinched to nothing there; following that needs events this code does not model
-  // (a reviewer's runs on touching squares gave fronts from nothing). Refused, not guessed.
-  for (std::size_t v = 0; v < env.num_vertices(); ++v)
-    if (env.is_contact(v)) {
-      std::string msg("wave-front decomposition: rings touch at ");
-      msg.append(geometry::format_point(env.vertex(v))).append(" (a contact); this decomposition does not take contacts yet");
-      throw InputError(msg);
-    }
+  // Holes touching at a vertex (contacts) need no case of their own: the ring vertices at
+  // a contact are one root (aliases, below); a front that reaches the contact goes on
+  // into the far wedges as that root's circle (found by following back through it); paths
+  // along walls on both sides of a contact are straight chains of bends; fronts arriving
+  // from two wedges at once kiss there (ties_, joined in step()).
   // Roots: the start (slot 0) and every reached reflex vertex.
   root_slot_.assign(env.num_vertices(), kNoSlot);
   slot_root_.push_back(ShortestPathMap::kSource);
@@ -505,6 +571,28 @@ WavefrontDecomposition::WavefrontDecomposition(const geometry::ShortestPathMap& 
     }
     if (slot_pred_[s] == kNoSlot) slot_pred_[s] = 0;  // (every alias reached through the point itself: cannot be)
   }
+  // A root lying on the segment from another root's predecessor to it (siblings on one
+  // ray: a sight line along two walls through a contact, or grazing a notch) is where that
+  // path passes, at the same distance: it becomes the predecessor, so that the circles
+  // along the ray are glued by the chain of extensions below (which follows predecessors).
+  {
+    std::vector<std::vector<std::uint32_t>> kids(slot_root_.size());
+    for (std::uint32_t s = 1; s < slot_root_.size(); ++s)
+      if (slot_live_[s]) kids[slot_pred_[s]].push_back(s);
+    for (std::uint32_t s = 1; s < slot_root_.size(); ++s) {
+      if (!slot_live_[s]) continue;
+      const std::uint32_t p = slot_pred_[s];
+      const Point &P = slot_point_[p], &S = slot_point_[s];
+      std::uint32_t via = p;
+      for (const std::uint32_t c : kids[p]) {
+        const Point& C = slot_point_[c];
+        if (c == s || geometry::orientation(P, C, S) != 0 || CGAL::compare_distance_to_point(P, C, S) != CGAL::SMALLER) continue;
+        if ((C.x() - P.x()) * (S.x() - P.x()) + (C.y() - P.y()) * (S.y() - P.y()) <= 0) continue;  // behind p
+        if (via == p || CGAL::compare_distance_to_point(P, slot_point_[via], C) == CGAL::SMALLER) via = c;
+      }
+      slot_pred_[s] = via;
+    }
+  }
   // Each root's visibility polygon as segments (double: they only say where to look for
   // the feet of perpendiculars, each confirmed by a query).
   sight_.resize(slot_root_.size());
@@ -541,20 +629,23 @@ WavefrontDecomposition::WavefrontDecomposition(const geometry::ShortestPathMap& 
             collinear_chain_[s].push_back(w);
       }
     }
-    // The direction of each extension, the same double for bends on one ray from their
-    // predecessor (siblings exactly collinear): computed from the nearest of them.
+    // The direction of each extension: the same double for every bend of one straight
+    // chain (p -> s -> w collinear), so that the cuts they put on one circle coincide;
+    // taken from the chain's first step. Nearer roots first (a predecessor is nearer).
     ext_angle_.assign(slot_root_.size(), 0);
-    for (std::uint32_t s = 1; s < slot_root_.size(); ++s) {
+    std::vector<std::uint32_t> order;
+    for (std::uint32_t s = 1; s < slot_root_.size(); ++s)
+      if (slot_pred_[s] != kNoSlot) order.push_back(s);
+    std::sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) { return slot_dist_[x] < slot_dist_[y]; });
+    for (const std::uint32_t s : order) {
       const std::uint32_t p = slot_pred_[s];
-      if (p == kNoSlot) continue;
-      const Point& o = slot_point_[p];
-      std::uint32_t nearest = s;
-      for (const std::uint32_t c : children[p])
-        if (geometry::orientation(o, slot_point_[s], slot_point_[c]) == 0 &&
-            (slot_point_[c].x() - o.x()) * (slot_point_[s].x() - o.x()) + (slot_point_[c].y() - o.y()) * (slot_point_[s].y() - o.y()) > 0 &&
-            wf_length(o, slot_point_[c]) < wf_length(o, slot_point_[nearest]))
-          nearest = c;
-      ext_angle_[s] = wf_angle(o, slot_point_[nearest]);
+      const std::uint32_t pp = slot_pred_[p];
+      const Point &o = slot_point_[p], &S = slot_point_[s];
+      if (p != 0 && pp != kNoSlot && geometry::orientation(slot_point_[pp], o, S) == 0 &&
+          (o.x() - slot_point_[pp].x()) * (S.x() - o.x()) + (o.y() - slot_point_[pp].y()) * (S.y() - o.y()) > 0)
+        ext_angle_[s] = ext_angle_[p];
+      else
+        ext_angle_[s] = wf_angle(o, S);
     }
   }
   const auto box = env.bbox();
@@ -564,6 +655,26 @@ WavefrontDecomposition::WavefrontDecomposition(const geometry::ShortestPathMap& 
     top_ = std::max(top_, slot_dist_[s] + far);
   }
   top_ = top_ * (1 + 1e-6) + 1e-9;
+  // Ties (see ties_): every root s that sees root w with the segment tangent at w (a
+  // visibility-graph edge, or the start seeing w) and D(s) + |sw| = D(w) to within 1e-12
+  // of the range of h, other than w's predecessor (its extension is cut already).
+  tie_sources_.assign(slot_root_.size(), {});
+  for (std::uint32_t w = 1; w < slot_root_.size(); ++w) {
+    if (!slot_live_[w]) continue;
+    std::vector<std::uint32_t> from;
+    if (slot_pred_[w] != 0 && spm.index().visible_from_vertex(slot_root_[w], spm.source())) from.push_back(0);
+    for (const std::uint32_t v : slot_alias_[w])
+      for (const std::uint32_t u : spm.graph().neighbours(v))
+        if (root_slot_[u] != kNoSlot) from.push_back(root_slot_[u]);
+    std::sort(from.begin(), from.end());
+    from.erase(std::unique(from.begin(), from.end()), from.end());
+    for (const std::uint32_t s : from) {
+      if (s == w || s == slot_pred_[w] || slot_pred_[s] == w) continue;
+      if (std::fabs(slot_dist_[s] + wf_length(slot_point_[s], slot_point_[w]) - slot_dist_[w]) > 1e-12 * top_) continue;
+      ties_.push_back({s, w, wf_angle(slot_point_[s], slot_point_[w])});
+      tie_sources_[w].push_back(s);
+    }
+  }
 
   // Candidate critical values.
   std::vector<std::pair<double, Point>> cand{{0.0, spm.source()}};
@@ -602,7 +713,15 @@ WavefrontDecomposition::WavefrontDecomposition(const geometry::ShortestPathMap& 
       if (d >= top_) continue;
       // (the foot rounded to double may lie just inside the obstacle: ask a point nudged
       // into free space; this only places a candidate level)
-      if (spm.query(nudged(e, t)).root == slot_root_[s]) cand.emplace_back(d, f), minima[e].push_back(t);
+      // It is a minimum of h when this root's path is a shortest one there: the point's
+      // root, an alias of it (one point, several ring vertices), or a root tied with it
+      // (on lattice maps two paths often reach a wall's foot at once).
+      const Point n = nudged(e, t);
+      const auto q = spm.query(n);
+      const auto& al = slot_alias_[s];
+      if (q.root == slot_root_[s] || std::find(al.begin(), al.end(), q.root) != al.end() ||
+          q.distance >= slot_dist_[s] + wf_length(o, n) - 1e-12 * top_)
+        cand.emplace_back(d, f), minima[e].push_back(t);
     }
   }
   // Between two consecutive minima along an edge h (a minimum of convex functions of the

@@ -41,3 +41,13 @@ set_tests_properties(cli.wavefront_cells_houseexpo PROPERTIES DEPENDS cli.import
 add_test(NAME cli.wavefront_json_cells COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/cli/json_expect.py
   "len(d['cells']) == 16 and len(d['nodes']) == 14 and d['nodes'][0]['level'] == 0 and d['nodes'][0]['above'] == [0] and all(c['upper'] is not None for c in d['cells']) and all(c['h'][0] <= c['h'][1] for c in d['cells']) and all(b in d['adjacency'][a] for a in range(16) for b in d['adjacency'][a])"
   -- $<TARGET_FILE:preimage_cli> decompose ${EXAMPLES}/gallery.json --method wavefront --start 0.5,7.5 --json)
+# Holes touching at vertices (contacts). Checkerboard from (0.5, 0.5), on the diagonal: the
+# fronts round the lower-left square reach its contact with the middle one at once from both
+# free wedges and part again (a kiss: 2 cells in, 2 out); 20 cells - 16 slices + 1 = 5 holes.
+cli_test(wavefront_contacts_checkerboard 0 "wave-front decomposition: 20 cells, 16 critical slices" -
+         decompose ${FIX}/contacts/checkerboard.json --method wavefront --start 0.5,0.5)
+cli_test(wavefront_contacts_kiss 0 "at h 2\\.58114 near \\(2[.0-9]*, 2\\): 2 cell\\(s\\) end, 2 begin" -
+         decompose ${FIX}/contacts/checkerboard.json --method wavefront --start 0.5,0.5)
+# two diamonds closing a corridor at three contacts: 10 cells - 9 slices + 1 = 2 holes
+cli_test(wavefront_contacts_corridor 0 "wave-front decomposition: 10 cells, 9 critical slices" -
+         decompose ${FIX}/contacts/corridor_closed_at_points.json --method wavefront --start 1,1)

@@ -7,12 +7,12 @@
 //   boundary (brute-force clearance);
 // - random free points fall in a cell whose range of h holds theirs, and the fronts at a
 //   level are as many as the cells whose range spans it;
-// - nodes and cells are consistent (each cell starts and ends at a node, adjacency symmetric).
+// - nodes and cells are consistent (each cell starts and ends at a node, adjacency symmetric);
+// - the same on maps whose holes touch each other or the outer wall (contacts).
 #include <gtest/gtest.h>
 #include <preimage/decompose/wavefront.hpp>
 #include <preimage/geometry/generators.hpp>
 #include <preimage/geometry/queries.hpp>
-#include <preimage/error.hpp>
 #include <preimage/scene/import.hpp>
 #include <preimage/scene/scene.hpp>
 
@@ -279,19 +279,64 @@ TEST(WavefrontDecomposition, ReviewReproducers) {
   }
 }
 
-// Holes touching at vertices: refused with a one-line error (the fronts through a contact
-// point are not followed yet; see docs/decompose.md).
-TEST(WavefrontDecomposition, RefusesContacts) {
-  const Environment env = *preimage::scene::load_scene(std::string(PREIMAGE_FIXTURES).append("/contacts/checkerboard.json")).environment;
-  const VisibilityIndex index(env);
-  const VisibilityGraph graph(index);
-  const ShortestPathMap spm(graph, Point(0.5, 0.5));
-  try {
-    const WavefrontDecomposition wd(spm);
-    FAIL() << "accepted a map with contacts";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("contact"), std::string::npos) << e.what();
+// Holes touching at vertices (contacts): the three contact fixtures, the checkerboard from
+// a contact point and from the fixture's start on the diagonal, and touching squares
+// (generators::touching_squares(3 + seed % 4, 0.3 + 0.1 (seed % 5), seed, sheared = seed
+// odd)) from starts that each caught a bug while contacts were being admitted:
+// - touching-10: a sight line along two walls through a contact made the far vertex a
+//   sibling of the contact, not its child (circles touching on the ray never glued);
+// - checker-2, checker-13: ties (a vertex reached by two shortest paths on the lattice):
+//   the ray from the second predecessor was no cut, and then a sliver was claimed twice;
+// - checkerboard from (0.5, 0.5): two fronts kiss at a contact and part (a missed cycle);
+// - touching-13: a front through a contact merged into another and was overrun at once
+//   (it looked like a death);
+// - touching-9, touching-14: a point followed back along a wall into a contact lands on the
+//   circle of an earlier bend of a straight chain, or on an arc's rounded end;
+// - touching-3, touching-19: tiny circles at a vertex (the quadratic lost the crossing
+//   with the vertex's own edges) and a wall lying on an extension's ray (a zero-width piece);
+// - checker-37: a wall's foot from a root tied with another was not counted as a minimum of
+//   h, so a front born and gone on the top wall between two levels was missed.
+// Every node but the start has fronts below it (none from nothing).
+TEST(WavefrontDecomposition, TouchingHoles) {
+  struct Case {
+    std::string name;
+    Environment env;
+    Point start;
+  };
+  std::vector<Case> cases;
+  for (const char* f : {"checkerboard", "hole_touches_boundary", "corridor_closed_at_points"}) {
+    const auto sc = preimage::scene::load_scene(std::string(PREIMAGE_FIXTURES).append("/contacts/") + f + ".json");
+    cases.push_back({f, *sc.environment, *sc.start});
   }
+  const Environment checker = cases[0].env;
+  cases.push_back({"checkerboard from the contact (2, 2)", checker, Point(2, 2)});
+  cases.push_back({"checker-2", checker, Point(3.438895804034199, 0.649128101780545)});
+  cases.push_back({"checker-13", checker, Point(1.4123832757988941, 0.5409318965594683)});
+  cases.push_back({"checker-37", checker, Point(2.3560782000681577, 0.29630750502133724)});
+  const struct {
+    int seed;
+    Point start;
+  } squares[] = {{3, Point(6.2346403658110585, 14.165790517471578)}, {9, Point(5.995284763868163, 8.296305630202323)},
+                 {10, Point(4.568521817557741, 3.006415536704874)},  {13, Point(4.849222168098065, 9.76456381799049)},
+                 {14, Point(0.3807615772830805, 3.360491699828051)},  {19, Point(9.987649542781956, 17.62524011731912)}};
+  for (const auto& q : squares)
+    cases.push_back({"touching-" + std::to_string(q.seed),
+                     generators::touching_squares(static_cast<std::size_t>(3 + q.seed % 4), 0.3 + 0.1 * (q.seed % 5), static_cast<std::uint64_t>(q.seed), q.seed % 2 == 1),
+                     q.start});
+  std::size_t contacts = 0;
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.name);
+    for (std::size_t v = 0; v < c.env.num_vertices(); ++v) contacts += c.env.is_contact(v);
+    ASSERT_TRUE(locate(c.env, c.start).in_free_space());
+    const VisibilityIndex index(c.env);
+    const VisibilityGraph graph(index);
+    const ShortestPathMap spm(graph, c.start);
+    const WavefrontDecomposition wd(spm);
+    for (std::size_t i = 1; i < wd.nodes().size(); ++i) EXPECT_FALSE(wd.nodes()[i].below.empty()) << "a front from nothing at node " << i;
+    wft_check_graph(wd, c.env, c.name);
+    wft_check_fronts(wd, c.env, c.start, c.name, 8, 100);
+  }
+  EXPECT_GE(contacts, 2 * cases.size());  // every map has contacts
 }
 
 TEST(WavefrontDecomposition, RandomMapsOfficeAndFloorPlan) {

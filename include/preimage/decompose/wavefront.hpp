@@ -48,8 +48,21 @@
 // death that is not in the same interval (not seen on any map tried: random points all
 // find their cell). The independent check in the suite is homology: free space with k
 // holes has k independent cycles, each a cycle of the Reeb graph or carried by closed
-// fronts around holes. Events closer than 1e-9 of the range of h are one slice. Maps whose
-// holes touch at vertices (contacts) are refused (InputError).
+// fronts around holes. Events closer than 1e-9 of the range of h are one slice.
+//
+// Holes touching at vertices (contacts; free space is closed, so a front passes through
+// the point): the ring vertices there are one root, and a front reaching it from one free
+// wedge goes on into the others as that root's circle. Three things such maps (and
+// lattice-like plans) bring, each handled exactly by construction rather than by distance:
+//  - a root on the segment from another root's predecessor to it (a sight line along two
+//    walls through a contact) becomes its predecessor, so straight chains of bends share
+//    one extension angle and glue their circles;
+//  - ties: a root w reached by two shortest paths (through s and through its predecessor)
+//    has the ray from s through w as a cut of both circles, and s owns whatever it sees
+//    beyond w; fronts reaching w along both at one level meet there (at a contact they
+//    touch only at that point: a kiss, one slice with two fronts in and out);
+//  - a front merging into another whose part is then overrun within one interval looks
+//    like a death beside a change of the other front, and is bisected until the merge shows.
 //
 // Degeneracies of real floor plans: bends exactly in line (p -> s -> w all collinear; a
 // wall with notches) carry all their labels on one cut of p's circle; bends so nearly in
@@ -156,12 +169,26 @@ class WavefrontDecomposition {
   };
   std::vector<Sight> sight_;
   std::vector<double> ext_angle_;  // per slot: direction of its extension (from its predecessor)
+  // Ties: (s, w) where the path through root s to root w is as short as w's own (lattice
+  // maps, paths along walls through contacts). Beyond w, the ray from s through w bounds
+  // what s sees, and the two circles are tangent there, so it is a cut of both.
+  struct Tie {
+    std::uint32_t s, w;
+    double angle;
+  };
+  std::vector<Tie> ties_;
+  std::vector<std::vector<std::uint32_t>> tie_sources_;  // per slot w: the s of its ties
   std::vector<std::vector<std::uint32_t>> collinear_chain_;  // per slot: itself and the bends straight beyond it
 
   Level compute(double lambda) const;
   // Pairs (front at A, front at B) joined by following B's fronts back to A's level.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> relation(const Level& A, const Level& B) const;
   bool continues(const Level& A, std::uint32_t a, const Level& B, std::uint32_t b) const;
+  // The front of A holding the point of A's level on the path leaving slot s at `angle`
+  // (-1 if none).
+  std::int64_t front_on_path(const Level& A, std::uint32_t s, double angle) const;
+  // The arc of A holding that point (-1 if none).
+  std::int64_t arc_on_path(const Level& A, std::uint32_t s, double angle) const;
   // Whether a path can end at m with its last bend at (reflex) slot s.
   bool taut(std::uint32_t s, const Point& m) const;
   // Follows the fronts from A (the last level recorded) to B, creating nodes and cells.
