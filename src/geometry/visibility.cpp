@@ -7,6 +7,7 @@
 #include <array>
 #include <atomic>
 #include <bit>
+#include <chrono>
 #include <condition_variable>
 #include <deque>
 #include <functional>
@@ -896,7 +897,10 @@ VisibilityPolygon VisibilityIndex::compute(const ExactPoint& q) const {
 namespace {
 // Process-wide pool of helper threads for compute_many, started on first use and kept:
 // a batch of 500 queries lasts 0.5-2 ms on small maps, about what starting and joining
-// threads per call cost. Idle helpers sleep on a condition variable (no spinning). A batch
+// threads per call cost. A helper that runs out of work polls the queue for 1 ms (yielding
+// its core to anyone who wants it) before it sleeps on a condition variable: waking a
+// sleeping thread on a virtual machine takes long enough to be a visible share of such a
+// batch, and calls tend to come back to back (OpenMP runtimes poll for 200 ms). A batch
 // is queued; each helper that takes it runs its chunks until none are left; the caller
 // runs chunks too, then withdraws the batch from the queue (no helper can join after
 // that) and waits for the helpers that joined to leave, so the batch (on the caller's
@@ -925,6 +929,7 @@ class VisWorkerPool {
       while (workers_.size() < std::min<std::size_t>(b.max_helpers, kMaxWorkers))
         workers_.emplace_back([this] { serve(); });
       queue_.push_back(&b);
+      queued_.fetch_add(1, std::memory_order_release);
     }
     if (b.max_helpers == 1) wake_.notify_one();
     else wake_.notify_all();
@@ -949,16 +954,22 @@ class VisWorkerPool {
 
   void withdraw(Batch* b) {  // under m_
     const auto it = std::find(queue_.begin(), queue_.end(), b);
-    if (it != queue_.end()) queue_.erase(it);
+    if (it != queue_.end()) queue_.erase(it), queued_.fetch_sub(1, std::memory_order_relaxed);
   }
 
   void serve() {
     std::unique_lock<std::mutex> lock(m_);
     while (true) {
+      if (!stop_ && queue_.empty()) {  // poll before sleeping (see above)
+        lock.unlock();
+        const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(1);
+        while (queued_.load(std::memory_order_acquire) == 0 && std::chrono::steady_clock::now() < until) std::this_thread::yield();
+        lock.lock();
+      }
       wake_.wait(lock, [&] { return stop_ || !queue_.empty(); });
       if (stop_) return;
       Batch* b = queue_.front();
-      if (++b->helpers >= b->max_helpers) queue_.pop_front();  // enough helpers joined
+      if (++b->helpers >= b->max_helpers) queue_.pop_front(), queued_.fetch_sub(1, std::memory_order_relaxed);  // enough helpers joined
       lock.unlock();
       b->work();
       lock.lock();
@@ -970,6 +981,7 @@ class VisWorkerPool {
   std::mutex m_;
   std::condition_variable wake_;
   std::deque<Batch*> queue_;
+  std::atomic<std::size_t> queued_{0};  // queue_.size(), for polling without the mutex
   std::vector<std::thread> workers_;
   bool stop_ = false;
 };
