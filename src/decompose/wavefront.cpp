@@ -375,14 +375,27 @@ std::int64_t WavefrontDecomposition::arc_on_path(const Level& A, std::uint32_t s
     s = x;
     angle = ext_angle_[child];
   }
-  std::int64_t a = A.arc_at(s, angle);
-  // On a straight chain of bends (p -> s -> child in line) the circles of s and p touch on
-  // the ray and the front there may be p's: go back while the path arrives straight.
-  while (a < 0 && s != 0 && slot_pred_[s] != kNoSlot && ext_angle_[s] == angle) {
-    s = slot_pred_[s];
-    a = A.arc_at(s, angle);
+  // The circles of the roots behind s on the same ray touch s's there and the front may be
+  // theirs: on a straight chain of bends (p -> s -> child in line) p's, and beyond a root
+  // tied with s (ties_) the tie's source's (compute() gives it what it sees beyond s).
+  std::uint32_t todo[16] = {s};
+  std::size_t n = 1;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t x = todo[i];
+    if (const std::int64_t a = A.arc_at(x, angle); a >= 0) return a;
+    auto add = [&](std::uint32_t y) {
+      if (n < 16 && std::find(todo, todo + n, y) == todo + n) todo[n++] = y;
+    };
+    // (in line to 1e-9 rad: a start collinear with a chain only to rounding bends by 1e-16)
+    auto in_line = [&](double a) {
+      const double d = wf_offset(a, angle);
+      return d < 1e-9 || d > kTwoPi - 1e-9;
+    };
+    if (x != 0 && slot_pred_[x] != kNoSlot && in_line(ext_angle_[x])) add(slot_pred_[x]);
+    for (const std::uint32_t t : tie_sources_[x])
+      if (in_line(wf_angle(slot_point_[t], slot_point_[x]))) add(t);
   }
-  return a;
+  return -1;
 }
 
 std::vector<std::pair<std::uint32_t, std::uint32_t>> WavefrontDecomposition::relation(const Level& A, const Level& B) const {
@@ -576,17 +589,18 @@ WavefrontDecomposition::WavefrontDecomposition(const geometry::ShortestPathMap& 
   // path passes, at the same distance: it becomes the predecessor, so that the circles
   // along the ray are glued by the chain of extensions below (which follows predecessors).
   {
-    std::vector<std::vector<std::uint32_t>> kids(slot_root_.size());
-    for (std::uint32_t s = 1; s < slot_root_.size(); ++s)
-      if (slot_live_[s]) kids[slot_pred_[s]].push_back(s);
     for (std::uint32_t s = 1; s < slot_root_.size(); ++s) {
       if (!slot_live_[s]) continue;
       const std::uint32_t p = slot_pred_[s];
       const Point &P = slot_point_[p], &S = slot_point_[s];
       std::uint32_t via = p;
-      for (const std::uint32_t c : kids[p]) {
+      // (any root on the segment, not only p's children: the map may have hung it on
+      // another root of the same line, the rounding of a tie)
+      const double x0 = std::min(P.x(), S.x()), x1 = std::max(P.x(), S.x()), y0 = std::min(P.y(), S.y()), y1 = std::max(P.y(), S.y());
+      for (std::uint32_t c = 1; c < slot_root_.size(); ++c) {
         const Point& C = slot_point_[c];
-        if (c == s || geometry::orientation(P, C, S) != 0 || CGAL::compare_distance_to_point(P, C, S) != CGAL::SMALLER) continue;
+        if (!slot_live_[c] || c == p || c == s || C.x() < x0 || C.x() > x1 || C.y() < y0 || C.y() > y1) continue;
+        if (geometry::orientation(P, C, S) != 0 || CGAL::compare_distance_to_point(P, C, S) != CGAL::SMALLER) continue;
         if ((C.x() - P.x()) * (S.x() - P.x()) + (C.y() - P.y()) * (S.y() - P.y()) <= 0) continue;  // behind p
         if (via == p || CGAL::compare_distance_to_point(P, slot_point_[via], C) == CGAL::SMALLER) via = c;
       }

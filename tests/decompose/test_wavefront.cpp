@@ -295,7 +295,11 @@ TEST(WavefrontDecomposition, ReviewReproducers) {
 // - touching-3, touching-19: tiny circles at a vertex (the quadratic lost the crossing
 //   with the vertex's own edges) and a wall lying on an extension's ray (a zero-width piece);
 // - checker-37: a wall's foot from a root tied with another was not counted as a minimum of
-//   h, so a front born and gone on the top wall between two levels was missed.
+//   h, so a front born and gone on the top wall between two levels was missed;
+// - a review's reproducers (fixtures wavefront_*.json, each described there): a root on the
+//   segment to a root hung by the map on another root of that line; a point followed back
+//   beyond a tied root lands on the tie's source's circle; a start in line with a chain
+//   through a contact only to rounding.
 // Every node but the start has fronts below it (none from nothing).
 TEST(WavefrontDecomposition, TouchingHoles) {
   struct Case {
@@ -304,11 +308,12 @@ TEST(WavefrontDecomposition, TouchingHoles) {
     Point start;
   };
   std::vector<Case> cases;
-  for (const char* f : {"checkerboard", "hole_touches_boundary", "corridor_closed_at_points"}) {
+  for (const char* f : {"checkerboard", "hole_touches_boundary", "corridor_closed_at_points", "wavefront_sibling_chain",
+                        "wavefront_sibling_chain_wall_start", "wavefront_tie_followed_back", "wavefront_start_nearly_in_line"}) {
     const auto sc = preimage::scene::load_scene(std::string(PREIMAGE_FIXTURES).append("/contacts/") + f + ".json");
     cases.push_back({f, *sc.environment, *sc.start});
   }
-  const Environment checker = cases[0].env;
+  const Environment checker = cases[0].env;  // (the fixtures' own starts above)
   cases.push_back({"checkerboard from the contact (2, 2)", checker, Point(2, 2)});
   cases.push_back({"checker-2", checker, Point(3.438895804034199, 0.649128101780545)});
   cases.push_back({"checker-13", checker, Point(1.4123832757988941, 0.5409318965594683)});
