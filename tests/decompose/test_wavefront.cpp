@@ -344,6 +344,22 @@ TEST(WavefrontDecomposition, TouchingHoles) {
   EXPECT_GE(contacts, 2 * cases.size());  // every map has contacts
 }
 
+// Room 1451 (HouseExpo) from starts where its staircase walls (bends in line, and vertices
+// reached by two paths at once) left 3 ends without a partner and a spurious Reeb cycle,
+// before straight chains and ties were handled for contacts (same degeneracy).
+TEST(WavefrontDecomposition, FloorPlan1451StaircaseTies) {
+  const Environment env = *scene::import_houseexpo(std::string(PREIMAGE_FLOORPLANS).append("/house_expo_room_1451.json")).environment;
+  const VisibilityIndex index(env);
+  const VisibilityGraph graph(index);
+  for (const Point start : {Point(8.82, 1.88), Point(7.98, 4.16)}) {
+    SCOPED_TRACE(format_point(start));
+    const ShortestPathMap spm(graph, start);
+    const WavefrontDecomposition wd(spm);
+    wft_check_graph(wd, env, "house_expo_room_1451");
+    EXPECT_EQ(wd.snapped_ends(), 0u);
+  }
+}
+
 TEST(WavefrontDecomposition, RandomMapsOfficeAndFloorPlan) {
   struct Case {
     std::string name;
