@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <preimage/decompose/wavefront.hpp>
 
+#include <preimage/parallel_for.hpp>
 #include <preimage/union_find.hpp>
 
 #include "cell_graph.hpp"
@@ -12,8 +13,6 @@
 #include <limits>
 #include <map>
 #include <numeric>
-#include <exception>
-#include <mutex>
 #include <thread>
 #include <tuple>
 
@@ -47,26 +46,6 @@ struct WfSplit {
   double angle;
   std::uint64_t label;
 };
-
-// Runs body(k) for k in [0, n) on `threads` threads, strided; the first exception a
-// thread throws is rethrown here once all have joined.
-template <class Body>
-void wf_parallel(std::size_t n, unsigned threads, Body&& body) {
-  std::vector<std::thread> pool;
-  std::exception_ptr error;
-  std::mutex guard;
-  for (unsigned t = 0; t < threads; ++t)
-    pool.emplace_back([&, t] {
-      try {
-        for (std::size_t k = t; k < n; k += threads) body(k);
-      } catch (...) {
-        const std::lock_guard<std::mutex> lock(guard);
-        if (!error) error = std::current_exception();
-      }
-    });
-  for (auto& th : pool) th.join();
-  if (error) std::rethrow_exception(error);
-}
 
 }  // namespace
 
@@ -380,17 +359,17 @@ std::int64_t WavefrontDecomposition::arc_on_path(const Level& A, std::uint32_t s
   // tied with s (ties_) the tie's source's (compute() gives it what it sees beyond s).
   std::uint32_t todo[16] = {s};
   std::size_t n = 1;
+  auto add = [&](std::uint32_t y) {
+    if (n < 16 && std::find(todo, todo + n, y) == todo + n) todo[n++] = y;
+  };
+  // (in line to 1e-9 rad: a start collinear with a chain only to rounding bends by 1e-16)
+  auto in_line = [&](double a) {
+    const double d = wf_offset(a, angle);
+    return d < 1e-9 || d > kTwoPi - 1e-9;
+  };
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint32_t x = todo[i];
     if (const std::int64_t a = A.arc_at(x, angle); a >= 0) return a;
-    auto add = [&](std::uint32_t y) {
-      if (n < 16 && std::find(todo, todo + n, y) == todo + n) todo[n++] = y;
-    };
-    // (in line to 1e-9 rad: a start collinear with a chain only to rounding bends by 1e-16)
-    auto in_line = [&](double a) {
-      const double d = wf_offset(a, angle);
-      return d < 1e-9 || d > kTwoPi - 1e-9;
-    };
     if (x != 0 && slot_pred_[x] != kNoSlot && in_line(ext_angle_[x])) add(slot_pred_[x]);
     for (const std::uint32_t t : tie_sources_[x])
       if (in_line(wf_angle(slot_point_[t], slot_point_[x]))) add(t);
@@ -588,24 +567,22 @@ WavefrontDecomposition::WavefrontDecomposition(const geometry::ShortestPathMap& 
   // ray: a sight line along two walls through a contact, or grazing a notch) is where that
   // path passes, at the same distance: it becomes the predecessor, so that the circles
   // along the ray are glued by the chain of extensions below (which follows predecessors).
-  {
-    for (std::uint32_t s = 1; s < slot_root_.size(); ++s) {
-      if (!slot_live_[s]) continue;
-      const std::uint32_t p = slot_pred_[s];
-      const Point &P = slot_point_[p], &S = slot_point_[s];
-      std::uint32_t via = p;
-      // (any root on the segment, not only p's children: the map may have hung it on
-      // another root of the same line, the rounding of a tie)
-      const double x0 = std::min(P.x(), S.x()), x1 = std::max(P.x(), S.x()), y0 = std::min(P.y(), S.y()), y1 = std::max(P.y(), S.y());
-      for (std::uint32_t c = 1; c < slot_root_.size(); ++c) {
-        const Point& C = slot_point_[c];
-        if (!slot_live_[c] || c == p || c == s || C.x() < x0 || C.x() > x1 || C.y() < y0 || C.y() > y1) continue;
-        if (geometry::orientation(P, C, S) != 0 || CGAL::compare_distance_to_point(P, C, S) != CGAL::SMALLER) continue;
-        if ((C.x() - P.x()) * (S.x() - P.x()) + (C.y() - P.y()) * (S.y() - P.y()) <= 0) continue;  // behind p
-        if (via == p || CGAL::compare_distance_to_point(P, slot_point_[via], C) == CGAL::SMALLER) via = c;
-      }
-      slot_pred_[s] = via;
+  for (std::uint32_t s = 1; s < slot_root_.size(); ++s) {
+    if (!slot_live_[s]) continue;
+    const std::uint32_t p = slot_pred_[s];
+    const Point &P = slot_point_[p], &S = slot_point_[s];
+    std::uint32_t via = p;
+    // (any root on the segment, not only p's children: the map may have hung it on
+    // another root of the same line, the rounding of a tie)
+    const double x0 = std::min(P.x(), S.x()), x1 = std::max(P.x(), S.x()), y0 = std::min(P.y(), S.y()), y1 = std::max(P.y(), S.y());
+    for (std::uint32_t c = 1; c < slot_root_.size(); ++c) {
+      const Point& C = slot_point_[c];
+      if (!slot_live_[c] || c == p || c == s || C.x() < x0 || C.x() > x1 || C.y() < y0 || C.y() > y1) continue;
+      if (geometry::orientation(P, C, S) != 0 || CGAL::compare_distance_to_point(P, C, S) != CGAL::SMALLER) continue;
+      if ((C.x() - P.x()) * (S.x() - P.x()) + (C.y() - P.y()) * (S.y() - P.y()) <= 0) continue;  // behind p
+      if (via == p || CGAL::compare_distance_to_point(P, slot_point_[via], C) == CGAL::SMALLER) via = c;
     }
+    slot_pred_[s] = via;
   }
   // Each root's visibility polygon as segments (double: they only say where to look for
   // the feet of perpendiculars, each confirmed by a query).
@@ -613,7 +590,7 @@ WavefrontDecomposition::WavefrontDecomposition(const geometry::ShortestPathMap& 
   {
     const geometry::VisibilityIndex& index = spm.index();
     const unsigned threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
-    wf_parallel(slot_root_.size(), threads, [&](std::size_t s) {
+    parallel_for(slot_root_.size(), threads, [&](std::size_t s) {
       const auto V = index.compute(slot_point_[s]);
       auto& vb = sight_[s];
       for (std::size_t i = 0; i < V.edges.size(); ++i) {
@@ -802,7 +779,7 @@ WavefrontDecomposition::WavefrontDecomposition(const geometry::ShortestPathMap& 
   for (std::size_t i = 1; i < initial.size(); i += batch) {
     const std::size_t m = std::min(batch, initial.size() - i);
     std::vector<Level> next(m);
-    wf_parallel(m, threads, [&](std::size_t k) { next[k] = compute(initial[i + k]); });
+    parallel_for(m, threads, [&](std::size_t k) { next[k] = compute(initial[i + k]); });
     for (auto& L : next) {
       step(prev, L, 0);
       prev = std::move(L);

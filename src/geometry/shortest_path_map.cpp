@@ -2,6 +2,7 @@
 #include <preimage/geometry/shortest_path_map.hpp>
 
 #include <preimage/error.hpp>
+#include <preimage/parallel_for.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -19,21 +20,6 @@ unsigned spm_threads(unsigned threads, std::size_t work) {
   if (work < 64) return 1;
   if (threads == 0) threads = std::clamp(std::thread::hardware_concurrency(), 1u, 8u);
   return threads;
-}
-
-// Runs body(k) for k in [0, n) on `threads` threads, strided.
-template <class Body>
-void spm_parallel(std::size_t n, unsigned threads, Body&& body) {
-  if (threads <= 1) {
-    for (std::size_t k = 0; k < n; ++k) body(k);
-    return;
-  }
-  std::vector<std::thread> pool;
-  for (unsigned t = 0; t < threads; ++t)
-    pool.emplace_back([&, t] {
-      for (std::size_t k = t; k < n; k += threads) body(k);
-    });
-  for (auto& th : pool) th.join();
 }
 
 }  // namespace
@@ -56,7 +42,7 @@ ShortestPathMap::ShortestPathMap(const VisibilityGraph& graph, const Point& sour
   std::vector<std::uint32_t> slot(env.num_vertices(), kNone);
   for (std::size_t k = 0; k < reflex.size(); ++k) slot[reflex[k]] = static_cast<std::uint32_t>(k);
   std::vector<std::vector<std::uint32_t>> out(reflex.size());
-  spm_parallel(reflex.size(), spm_threads(threads, reflex.size()), [&](std::size_t k) {
+  parallel_for(reflex.size(), spm_threads(threads, reflex.size()), [&](std::size_t k) {
     const std::uint32_t u = reflex[k];
     for (std::uint32_t w : index.visible_vertices(env.vertex(u)))
       if (w != u && slot[w] != kNone && env.vertex(w) != env.vertex(u) && tangent_at(env, u, env.vertex(w))) out[k].push_back(w);
@@ -149,7 +135,7 @@ std::vector<ShortestPathMap::Extension> ShortestPathMap::extensions(double toler
     result.push_back({v, u, hit->point, hit->edge, to_double(hit->point), false, kNone});
   }
   // Collisions on the extensions, in double: one query each, a bisection for those that collide.
-  spm_parallel(result.size(), spm_threads(threads, result.size()), [&](std::size_t k) {
+  parallel_for(result.size(), spm_threads(threads, result.size()), [&](std::size_t k) {
     Extension& e = result[k];
     const std::uint32_t v = e.vertex;
     const Point& V = env.vertex(v);
@@ -233,7 +219,7 @@ ShortestPathMap::Samples ShortestPathMap::sample(std::size_t columns, unsigned t
   s.rows = static_cast<std::size_t>(std::floor(h / s.step)) + 1;
   s.x0 = box.xmin(), s.y0 = box.ymin();
   s.values.resize(s.columns * s.rows);
-  spm_parallel(s.rows, spm_threads(threads, s.values.size()), [&](std::size_t j) {
+  parallel_for(s.rows, spm_threads(threads, s.values.size()), [&](std::size_t j) {
     for (std::size_t i = 0; i < s.columns; ++i) s.values[j * s.columns + i] = query(s.point(i, j));
   });
   return s;

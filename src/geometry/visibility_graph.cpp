@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <preimage/geometry/visibility_graph.hpp>
 
+#include <preimage/parallel_for.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -48,14 +50,8 @@ std::span<const std::uint32_t> VisibilityGraph::neighbours(std::uint32_t v) cons
 }
 
 void VisibilityGraph::build_all() const {
-  const std::size_t threads = reflex_.size() < 64 ? 1 : std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, 8);
-  auto work = [&](std::size_t begin) {
-    for (std::size_t i = begin; i < reflex_.size(); i += threads) neighbours(reflex_[i]);
-  };
-  if (threads == 1) return work(0);
-  std::vector<std::thread> pool;
-  for (std::size_t k = 0; k < threads; ++k) pool.emplace_back(work, k);
-  for (auto& th : pool) th.join();
+  const unsigned threads = reflex_.size() < 64 ? 1 : std::clamp(std::thread::hardware_concurrency(), 1u, 8u);
+  parallel_for(reflex_.size(), threads, [&](std::size_t i) { neighbours(reflex_[i]); });
 }
 
 std::size_t VisibilityGraph::num_edges() const {
