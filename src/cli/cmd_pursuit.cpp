@@ -29,10 +29,11 @@ std::string plural(std::size_t n, const std::string& one, const std::string& man
 void run_cells(const std::string& file, bool as_json, const std::string& svg) {
   const scene::Scene s = scene::load_scene(file);
   const auto C = pursuit::ConservativeCells::build(s.require_environment());
-  std::size_t ext = 0, bit = 0, merged = 0, max_gaps = 0;
+  std::size_t ext = 0, bit = 0, contact = 0, merged = 0, max_gaps = 0;
+  using Kind = pursuit::CriticalGenerator::Kind;
   for (auto& seg : C.critical()) {
     if (seg.generators.size() > 1) ++merged;
-    for (auto& g : seg.generators) (g.kind == pursuit::CriticalGenerator::Kind::Extension ? ext : bit)++;
+    for (auto& g : seg.generators) (g.kind == Kind::Extension ? ext : g.kind == Kind::Bitangent ? bit : contact)++;
   }
   for (auto& c : C.cells()) max_gaps = std::max(max_gaps, c.shadows.gaps.size());
   if (!svg.empty()) {
@@ -46,7 +47,7 @@ void run_cells(const std::string& file, bool as_json, const std::string& svg) {
     for (auto& seg : C.critical()) {
       json gens = json::array();
       for (auto& g : seg.generators)
-        gens.push_back({{"kind", g.kind == pursuit::CriticalGenerator::Kind::Extension ? "extension" : "bitangent"},
+        gens.push_back({{"kind", g.kind == Kind::Extension ? "extension" : g.kind == Kind::Bitangent ? "bitangent" : "contact"},
                         {"vertex", geometry::describe_vertex(C.environment(), g.vertex)},
                         {"other", geometry::describe_vertex(C.environment(), g.other)}});
       segs.push_back({{"from", point_json(seg.from)}, {"to", point_json(seg.to)}, {"generators", gens}});
@@ -72,7 +73,8 @@ void run_cells(const std::string& file, bool as_json, const std::string& svg) {
   }
   std::cout << "conservative cells: " << plural(C.reflex_vertices(), "reflex vertex", "reflex vertices") << ", "
             << plural(C.critical().size(), "critical segment", "critical segments") << " (" << ext << " edge extensions, " << bit
-            << " bitangent rays, " << merged << " segments where rays coincide), " << plural(C.size(), "cell", "cells") << " ("
+            << " bitangent rays, " << (contact ? std::to_string(contact) + " contact rays, " : "") << merged
+            << " segments where rays coincide), " << plural(C.size(), "cell", "cells") << " ("
             << C.tiny_cells() << " thinner than double precision), " << plural(C.boundaries().size(), "boundary", "boundaries")
             << "; at most " << plural(max_gaps, "gap", "gaps") << " in a cell\n";
   if (!svg.empty()) std::cout << "wrote " << svg << "\n";
@@ -166,18 +168,22 @@ void run_plan(const PlanFlags& F) {
     std::vector<pursuit::SearchResult> attempts;
     const auto r = pursuit::least_pursuers(C, F.pursuers, {start, F.max_states, !F.any}, &attempts);
     json att = json::array();
+    // Cells meet at a contact point only there: the search's pursuers never pass through one
+    // (the evader does), so with contacts "no plan" is about such paths (docs/pursuit.md).
+    const std::string avoiding = env.has_contacts() ? " on paths that avoid contact points" : "";
     for (auto& a : attempts) {
       att.push_back({{"pursuers", a.pursuers}, {"outcome", pursuit::to_string(a.outcome)}, {"states", a.states}});
       if (a.outcome == pursuit::SearchResult::Outcome::NoPlan)
-        summary += (a.pursuers == 1 ? "no plan with one pursuer exists (complete search, " : "no plan with " +
-                                                                                                 plural(a.pursuers, "pursuer", "pursuers") +
-                                                                                                 " waiting at cell samples (") +
+        summary += (a.pursuers == 1 ? "no plan with one pursuer exists" + avoiding + " (complete search, "
+                                    : "no plan with " + plural(a.pursuers, "pursuer", "pursuers") + " waiting at cell samples" +
+                                          avoiding + " (") +
                    std::to_string(a.states) + " information states explored)\n";
       else if (a.outcome == pursuit::SearchResult::Outcome::Budget)
         summary += plural(a.pursuers, "pursuer", "pursuers") + ": search stopped after " + std::to_string(a.states) +
                    " information states (--max-states " + std::to_string(F.max_states) + ")\n";
     }
     out = {{"strategy", "search"}, {"cells", C.size()}, {"attempts", att}};
+    if (env.has_contacts()) out["paths_avoid_contacts"] = true;
     if (r.plan) {
       plan = r.plan;
       summary += "plan with " + plural(r.pursuers, "pursuer", "pursuers") + ": " + plural(r.plan->moves.size(), "crossing", "crossings") +

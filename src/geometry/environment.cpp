@@ -294,19 +294,6 @@ std::size_t Environment::edge_between(std::size_t a, std::size_t b) const {
   }
 }
 
-void require_no_contacts(const Environment& env, const std::string& who) {
-  for (std::size_t v = 0; v < env.num_vertices(); ++v) {
-    if (!env.is_contact(v)) continue;
-    std::string rings;
-    for (std::size_t w = v;;) {
-      rings.append(rings.empty() ? "" : ", ").append(env.ring_name(env.ring_of(w))).append(" vertex ").append(std::to_string(env.input_index(w)));
-      w = env.same_point_next(w);
-      if (w == v) break;
-    }
-    throw InputError(std::string(who).append(": rings touch at ").append(format_point(env.vertex(v))).append(" (").append(rings).append("), which ").append(who).append(" does not support yet"));
-  }
-}
-
 Ring Environment::ring(std::size_t r) const {
   return Ring(pts_.begin() + static_cast<std::ptrdiff_t>(ring_begin(r)),
               pts_.begin() + static_cast<std::ptrdiff_t>(ring_end(r)));

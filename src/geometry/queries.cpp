@@ -117,16 +117,29 @@ std::optional<RayHit> shoot_ray(const Environment& env, const ExactPoint& o, con
 }
 
 namespace {
+// Is the direction c -> t in the closed sector left of u -> c and of c -> w?
 template <class P>
-bool in_ring_free_wedge_as(const Environment& env, std::size_t v, const P& t) {
-  const P &u = vertex_as<P>(env, env.prev(v)), &c = vertex_as<P>(env, v), &w = vertex_as<P>(env, env.next(v));
-  // Free space is to the left of u->c and of c->w.
+bool in_sector_as(const P& u, const P& c, const P& w, const P& t) {
   const auto turn = CGAL::orientation(u, c, w);
   const bool left_of_out = CGAL::orientation(c, w, t) != CGAL::RIGHT_TURN;  // t on the free side of edge c->w
   const bool left_of_in = CGAL::orientation(u, c, t) != CGAL::RIGHT_TURN;   // t on the free side of edge u->c
   if (turn == CGAL::LEFT_TURN) return left_of_out && left_of_in;
   if (turn == CGAL::RIGHT_TURN) return left_of_out || left_of_in;
   return left_of_out;
+}
+template <class P>
+bool in_ring_free_wedge_as(const Environment& env, std::size_t v, const P& t) {
+  // Free space is to the left of prev(v) -> v and of v -> next(v).
+  return in_sector_as(vertex_as<P>(env, env.prev(v)), vertex_as<P>(env, v), vertex_as<P>(env, env.next(v)), t);
+}
+template <class P>
+std::size_t wedge_toward_as(const Environment& env, std::size_t v, const P& t) {
+  std::size_t w = v;
+  do {
+    if (in_sector_as(vertex_as<P>(env, env.wedge_prev(w)), vertex_as<P>(env, w), vertex_as<P>(env, env.next(w)), t)) return w;
+    w = env.same_point_next(w);
+  } while (w != v);
+  return SIZE_MAX;
 }
 // At a contact the free directions are those outside every ring's material sector there.
 template <class P>
@@ -178,6 +191,8 @@ bool visible_as(const Environment& env, const P& p, const P& q) {
 }  // namespace
 
 bool in_free_wedge(const Environment& env, std::size_t v, const Point& t) { return in_free_wedge_as(env, v, t); }
+std::size_t wedge_toward(const Environment& env, std::size_t v, const Point& t) { return wedge_toward_as(env, v, t); }
+std::size_t wedge_toward(const Environment& env, std::size_t v, const ExactPoint& t) { return wedge_toward_as(env, v, t); }
 
 double ray_range(const Environment& env, const Point& origin, double angle, double max_range) {
   const double dx = std::cos(angle), dy = std::sin(angle), ox = origin.x(), oy = origin.y();

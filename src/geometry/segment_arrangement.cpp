@@ -54,8 +54,9 @@ bool strictly_inside_face(const std::vector<ArrangementHalfEdge>& H, const std::
 
 class SegmentArrangementBuilder {
  public:
-  SegmentArrangementBuilder(SegmentArrangement& A, const std::vector<ExactPoint>& points, const ArrangementPolicy* policy)
-      : A(A), points_(points), policy_(policy) {}
+  SegmentArrangementBuilder(SegmentArrangement& A, const std::vector<ExactPoint>& points, const ArrangementPolicy* policy,
+                            bool glue)
+      : A(A), points_(points), policy_(policy), glue_(glue) {}
   void run();
 
  private:
@@ -70,6 +71,15 @@ class SegmentArrangementBuilder {
   SegmentArrangement& A;
   const std::vector<ExactPoint>& points_;
   const ArrangementPolicy* policy_;
+  bool glue_;
+  // The vertex an environment vertex's edges start from: itself, or with glue_ the
+  // smallest id at its point.
+  std::uint32_t glued(std::size_t v) const {
+    if (!glue_) return static_cast<std::uint32_t>(v);
+    std::size_t best = v;
+    for (std::size_t w = A.env_.same_point_next(v); w != v; w = A.env_.same_point_next(w)) best = std::min(best, w);
+    return static_cast<std::uint32_t>(best);
+  }
   struct X {
     std::uint32_t vertex;
     std::uint32_t other;
@@ -189,7 +199,7 @@ void SegmentArrangementBuilder::build_half_edges() {
       const ExactPoint& p = to ? S[i].to : S[i].from;
       std::uint32_t& slot = A.end_vertex_[2 * i + (to ? 1 : 0)];
       if (e.kind == SegmentEnd::Kind::AtVertex) {
-        slot = e.index;
+        slot = glued(e.index);
       } else if (e.kind == SegmentEnd::Kind::AtPoint) {
         if (point_vertex[e.index] == kNone) {
           point_vertex[e.index] = static_cast<std::uint32_t>(A.vertices_.size());
@@ -223,10 +233,12 @@ void SegmentArrangementBuilder::build_half_edges() {
     A.half_edges_.push_back({b, a, kNone, kNone, seg});
   };
   // Boundary pieces: the even half-edge runs in ring direction (free space on its left).
+  A.edge_he_.assign(E.num_vertices(), kNone);
   for (std::uint32_t e = 0; e < E.num_vertices(); ++e) {
-    std::uint32_t prev = e;
+    A.edge_he_[e] = static_cast<std::uint32_t>(A.half_edges_.size());
+    std::uint32_t prev = glued(e);
     for (std::uint32_t v : on_edge[e]) add(prev, v, kNone), prev = v;
-    add(prev, static_cast<std::uint32_t>(E.next(e)), kNone);
+    add(prev, glued(E.next(e)), kNone);
   }
   // Segment pieces: the even half-edge runs from -> to.
   for (std::uint32_t i = 0; i < S.size(); ++i) {
@@ -488,11 +500,12 @@ void SegmentArrangementBuilder::run() {
 }
 
 SegmentArrangement SegmentArrangement::build(Environment env, std::vector<ArrangementSegment> segments,
-                                             const std::vector<ExactPoint>& points, const ArrangementPolicy* policy) {
+                                             const std::vector<ExactPoint>& points, const ArrangementPolicy* policy,
+                                             bool glue_contacts) {
   SegmentArrangement A;
   A.env_ = std::move(env);
   A.segments_ = std::move(segments);
-  SegmentArrangementBuilder(A, points, policy).run();
+  SegmentArrangementBuilder(A, points, policy, glue_contacts && A.env_.has_contacts()).run();
   return A;
 }
 

@@ -76,6 +76,30 @@ void Triangulation::link() {
   if (!open.empty()) throw std::logic_error("triangulation: unmatched interior edge");
 }
 
+std::vector<std::uint32_t> Triangulation::edge_pieces() const {
+  const std::size_t n = env_->num_vertices();
+  std::vector<std::uint32_t> out(n, 0);
+  if (!env_->has_contacts()) return out;
+  // Flood fill across interior edges; numbered in the order edges first reach them.
+  std::vector<std::uint32_t> piece(tris_.size(), kNone), stack;
+  std::uint32_t next = 0;
+  for (std::size_t e = 0; e < n; ++e) {
+    const std::uint32_t t0 = edge_slot_[e].first;
+    if (piece[t0] == kNone) {
+      piece[t0] = next++;
+      stack.push_back(t0);
+      while (!stack.empty()) {
+        const std::uint32_t t = stack.back();
+        stack.pop_back();
+        for (std::uint32_t u : tris_[t].nbr)
+          if (u != kNone && piece[u] == kNone) piece[u] = piece[t], stack.push_back(u);
+      }
+    }
+    out[e] = piece[t0];
+  }
+  return out;
+}
+
 std::size_t Triangulation::non_delaunay_edges() const {
   std::size_t bad = 0;
   for (std::uint32_t t = 0; t < tris_.size(); ++t)

@@ -40,6 +40,8 @@ bool ConservativeCells::in_closed_cell(std::size_t c, const ExactPoint& p) const
   return true;
 }
 
+Shadows ConservativeCells::shadows_at(const Point& p) const { return shadows_of(vis_->compute(p), pieces_); }
+
 std::optional<std::uint32_t> ConservativeCells::locate(const Point& p) const {
   const ExactPoint q = geometry::to_exact(p);
   if (auto r = arr_->locate(q)) return *r;
@@ -86,19 +88,20 @@ std::optional<std::vector<ConservativeCells::Crossing>> ConservativeCells::walk(
 
 ConservativeCells ConservativeCells::build(const Environment& env) {
   ConservativeCells C;
-  for (std::size_t v = 0; v < env.num_vertices(); ++v) C.reflex_ += env.is_reflex(v);
+  for (std::size_t v = 0; v < env.num_vertices(); ++v) C.reflex_ += is_reflex_wedge(env, v);
   C.critical_ = critical_segments(env);
   std::vector<geometry::ArrangementSegment> segs;
   segs.reserve(C.critical_.size());
   for (const auto& s : C.critical_)
     segs.push_back({s.from, s.to, {geometry::SegmentEnd::Kind::AtVertex, s.origin}, s.end,
                     std::make_pair(env.vertex(s.partner), env.vertex(s.origin))});
-  C.arr_ = std::make_shared<geometry::SegmentArrangement>(geometry::SegmentArrangement::build(env, std::move(segs)));
+  C.arr_ = std::make_shared<geometry::SegmentArrangement>(geometry::SegmentArrangement::build(env, std::move(segs), {}, nullptr, true));
   const auto& A = *C.arr_;
   const auto& H = A.half_edges();
   const auto& V = A.vertices();
   const auto& P = A.approx_vertices();
   C.vis_ = std::make_shared<geometry::VisibilityIndex>(A.environment());
+  C.pieces_ = C.vis_->triangulation().edge_pieces();
 
   // Cells: convex (every corner is a convex vertex, a hit, a crossing, or a sector of a
   // reflex vertex cut by its two extension rays), sampled at a double point inside.
@@ -133,13 +136,13 @@ ConservativeCells ConservativeCells::build(const Environment& env) {
         break;
       }
     if (found) {
-      cell.shadows = shadows_of(C.vis_->compute(cell.sample));
+      cell.shadows = shadows_of(C.vis_->compute(cell.sample), C.pieces_);
     } else {
       // A cell thinner than double precision resolves (near-concurrent rays, e.g. from
       // decimal coordinates rounded to binary): its shadows from its exact sample.
       cell.sample = geometry::to_double(A.sample(r));
       cell.tiny = true;
-      cell.shadows = shadows_of(C.vis_->compute(A.sample(r)));
+      cell.shadows = shadows_of(C.vis_->compute(A.sample(r)), C.pieces_);
       ++C.tiny_;
     }
   }

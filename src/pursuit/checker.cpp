@@ -76,6 +76,7 @@ struct Moment {
   std::vector<std::vector<ExactPoint>> loops;  // V of each pursuer, exact
   std::vector<std::vector<ExactPoint>> vertices_of_v;  // the same, for event lines
   std::vector<FreeSeg> free;
+  std::vector<char> contact_seen;  // per vertex id at a contact: some pursuer sees the point
 };
 
 geometry::SegmentEnd end_of(const geometry::VisibilityPolygon& V, std::size_t i) {
@@ -94,12 +95,24 @@ geometry::SegmentEnd end_of(const geometry::VisibilityPolygon& V, std::size_t i)
 // double input paths are sampled (a rounded sample stays within its event interval).
 Moment take(const Environment& env, const geometry::VisibilityIndex& vis, std::size_t waypoint, double fraction,
             std::vector<ExactPoint> at, bool exact) {
-  Moment m{waypoint, fraction, std::move(at), {}, {}, {}, {}};
+  Moment m{waypoint, fraction, std::move(at), {}, {}, {}, {}, {}};
+  if (env.has_contacts()) m.contact_seen.assign(env.num_vertices(), 0);
+  auto see = [&](std::size_t v) {
+    if (!env.has_contacts() || !env.is_contact(v)) return;
+    for (std::size_t w = v;;) {
+      m.contact_seen[w] = 1;
+      w = env.same_point_next(w);
+      if (w == v) break;
+    }
+  };
   for (const ExactPoint& e : m.at_exact) {
     const Point q = geometry::to_double(e);
     m.at.push_back(q);
     const auto V = exact ? vis.compute(e) : vis.compute(q);
     m.loops.push_back(V.points());
+    for (const auto& x : V.vertices)
+      if (x.kind == geometry::VisibilityVertex::Kind::EnvironmentVertex) see(x.vertex);
+    if (V.location.kind == geometry::Location::Kind::AtVertex) see(V.location.index);
     const std::size_t n = V.vertices.size();
     for (std::size_t i = 0; i < n; ++i) {
       if (V.edges[i].kind != geometry::VisibilityEdge::Kind::Free) continue;
@@ -112,7 +125,7 @@ Moment take(const Environment& env, const geometry::VisibilityIndex& vis, std::s
         if (p.x() < box.xmin() || p.x() > box.xmax() || p.y() < box.ymin() || p.y() > box.ymax()) continue;
         const ExactPoint& e = env.exact_vertex(v);
         if (geometry::orientation(A, B, e) == 0 && CGAL::collinear_are_strictly_ordered_along_line(A, e, B))
-          cuts.push_back({e, v});
+          cuts.push_back({e, v}), see(v);
       }
       std::sort(cuts.begin(), cuts.end(), [&](auto& x, auto& y) {
         return CGAL::compare_distance_to_point(A, x.first, y.first) == CGAL::SMALLER;
@@ -125,10 +138,15 @@ Moment take(const Environment& env, const geometry::VisibilityIndex& vis, std::s
       auto add = [&](const ExactPoint& to, geometry::SegmentEnd to_end) {
         using K = geometry::SegmentEnd::Kind;
         const bool along = from_end.kind == K::AtVertex && to_end.kind == K::AtVertex &&
-                           (env.next(from_end.index) == to_end.index || env.next(to_end.index) == from_end.index);
+                           (env.edge_between(from_end.index, to_end.index) != SIZE_MAX ||
+                            env.edge_between(to_end.index, from_end.index) != SIZE_MAX);
         std::optional<std::pair<Point, Point>> carrier;
         if (!exact) carrier = std::make_pair(q, carrier_q);
-        if (!along) m.free.push_back({from, to, from_end, to_end, carrier});
+        // A free edge of no length: V passing from one ring to another at a contact point
+        // the pursuer's line of sight runs into along a wall (the pursuer at a vertex).
+        const bool empty = from_end.kind == K::AtVertex && to_end.kind == K::AtVertex &&
+                           env.vertex(from_end.index) == env.vertex(to_end.index);
+        if (!along && !empty) m.free.push_back({from, to, from_end, to_end, carrier});
         from = to, from_end = to_end;
       };
       for (auto& [p, v] : cuts) add(p, {geometry::SegmentEnd::Kind::AtVertex, v});
@@ -200,7 +218,7 @@ Contamination step(const Environment& env, const Moment* prev, const Contaminati
     }
     (it.in_prev ? of_prev : of_next).back() = 1;
   }
-  const auto A = geometry::SegmentArrangement::build(env, std::move(segs));
+  const auto A = geometry::SegmentArrangement::build(env, std::move(segs), {}, nullptr, true);
   const auto& H = A.half_edges();
   const std::size_t nr = A.num_regions();
   // Faces of each moment's own subdivision: join across the other moment's edges only.
@@ -217,6 +235,15 @@ Contamination step(const Environment& env, const Moment* prev, const Contaminati
     if (!of_prev[s]) f1.join(A.region_of(h), A.region_of(h + 1));
     if (!of_next[s]) f2.join(A.region_of(h), A.region_of(h + 1));
   }
+  // The faces meet at a contact point only there (the arrangement glues the rings): the
+  // evader passes through it while nobody sees it.
+  if (env.has_contacts())
+    for (std::uint32_t v = 0; v < env.num_vertices(); ++v) {
+      if (!env.is_contact(v)) continue;
+      const std::uint32_t a = A.region_of(A.first_piece(v)), b = A.region_of(A.first_piece(env.same_point_next(v)));
+      if (prev && !prev->contact_seen[v]) f1.join(a, b);
+      if (!next.contact_seen[v]) f2.join(a, b);
+    }
   // Contaminated faces of the previous moment: those holding a witness.
   std::vector<char> cont1(nr, 0), clear_shadow1(nr, 0);
   if (cont) {

@@ -16,9 +16,11 @@ using geometry::orientation;
 
 bool tangent_at(const Environment& env, std::size_t v, const Point& p) {
   const Point& c = env.vertex(v);
-  const int a = orientation(p, c, env.vertex(env.prev(v))), b = orientation(p, c, env.vertex(env.next(v)));
+  const int a = orientation(p, c, env.vertex(env.wedge_prev(v))), b = orientation(p, c, env.vertex(env.next(v)));
   return a * b >= 0;
 }
+
+bool is_reflex_wedge(const Environment& env, std::size_t v) { return env.wedge_turn(v) < 0; }
 
 namespace {
 
@@ -32,29 +34,37 @@ struct Direction {
   geometry::ExactKernel::Vector_2 vector() const { return geometry::to_exact(head) - geometry::to_exact(tail); }
 };
 
-// The obstacle side (relative to the look direction) of the boundary edge between vertex
-// v and its neighbour n lying on the line: free space is left of every edge in ring order.
-int wall_obstacle_side(const Environment& env, std::size_t v, std::size_t n, const Direction& d) {
-  const bool edge_from_v = env.next(v) == n;  // edge v -> n, else n -> v
-  const Point& a = env.vertex(edge_from_v ? v : n);
-  const Point& b = env.vertex(edge_from_v ? n : v);
-  return d.along(a, b) > 0 ? -1 : +1;  // obstacle on the edge's right
+// The obstacle side (relative to the look direction) of the boundary edge a -> b lying on
+// the line: free space is left of every edge in ring order.
+int wall_obstacle_side(const Environment& env, std::size_t a, std::size_t b, const Direction& d) {
+  return d.along(env.vertex(a), env.vertex(b)) > 0 ? -1 : +1;  // obstacle on the edge's right
 }
 
 // Classifies vertex v met by the sight line in direction d. Returns false for a stop.
-bool classify(const Environment& env, std::size_t v, const Direction& d, SightLine::Contact& c, std::size_t& wall_end) {
+// At a contact the line arrives in one free wedge and is classified against that wedge's
+// two edges (the wedge's id is what names the vertex): leaving into material or into
+// another wedge through the point is a stop, since visibility is regularised (a line of
+// sight through a contact point has no width).
+bool classify(const Environment& env, std::size_t& v, const Direction& d, SightLine::Contact& c, std::size_t& wall_end) {
+  if (env.is_contact(v)) {
+    const ExactPoint behind = env.exact_vertex(v) - d.vector();
+    const std::size_t w = geometry::wedge_toward(env, v, behind);
+    if (w == SIZE_MAX) throw std::logic_error("pursuit: a sight line reaches contact vertex " + std::to_string(v) + " from material");
+    v = w;
+  }
   const Point& x = env.vertex(v);
   int off_side = 0, off_count = 0, wall_side = 0;
   bool forward_wall = false, backward_wall = false;
   std::size_t forward_end = kNone;
-  for (std::size_t n : {env.prev(v), env.next(v)}) {
+  for (std::size_t n : {env.wedge_prev(v), env.next(v)}) {
     const int s = d.side(env.vertex(n));
     if (s != 0) {
       if (off_count && s != off_side) return false;  // neighbours on both sides: the line enters the obstacle
       off_side = s, ++off_count;
       continue;
     }
-    const int w = wall_obstacle_side(env, v, n, d);
+    const bool edge_from_v = n == env.next(v);  // edge v -> n, else n -> v (into the wedge's point)
+    const int w = edge_from_v ? wall_obstacle_side(env, v, n, d) : wall_obstacle_side(env, n, v, d);
     if (wall_side && w != wall_side) return false;  // cannot happen on a valid ring
     wall_side = w;
     if (d.along(x, env.vertex(n)) > 0) forward_wall = true, forward_end = n;
@@ -80,7 +90,7 @@ SightLine trace(const Environment& env, std::size_t first, const Direction& d) {
   for (std::size_t guard = 0; guard <= env.num_vertices(); ++guard) {
     SightLine::Contact c;
     std::size_t wall_end = kNone;
-    if (!classify(env, v, d, c, wall_end)) return out;
+    if (!classify(env, v, d, c, wall_end)) return out;  // (v: the wedge the line arrives in)
     out.contacts.push_back(c);
     if (c.wall_after) {
       v = wall_end;
@@ -96,12 +106,12 @@ SightLine trace(const Environment& env, std::size_t first, const Direction& d) {
 }  // namespace
 
 std::vector<CriticalSegment> critical_segments(const Environment& env) {
-  // Critical rays along a ring's edge would run into a touching ring's material.
-  geometry::require_no_contacts(env, "pursuit");
+  // Vertex ids name free wedges (at a contact, the wedge starting at the id's out-edge):
+  // "reflex", "tangent" and the extended edges are the wedge's.
   const std::size_t n = env.num_vertices();
   std::vector<std::uint32_t> reflex;
   for (std::size_t v = 0; v < n; ++v)
-    if (env.is_reflex(v)) reflex.push_back(static_cast<std::uint32_t>(v));
+    if (is_reflex_wedge(env, v)) reflex.push_back(static_cast<std::uint32_t>(v));
 
   // Rays as (origin, partner): the ray leaves `origin` in direction origin - partner.
   struct Ray {
@@ -110,24 +120,48 @@ std::vector<CriticalSegment> critical_segments(const Environment& env) {
   };
   std::vector<Ray> rays;
   for (std::uint32_t r : reflex)
-    for (std::size_t u : {env.prev(r), env.next(r)})
+    for (std::size_t u : {env.wedge_prev(r), env.next(r)})
       rays.push_back({r, static_cast<std::uint32_t>(u), {CriticalGenerator::Kind::Extension, r, static_cast<std::uint32_t>(u)}});
   // Does the ray from a away from b run along an edge at a (it then lies on the boundary)?
   auto along_own_edge = [&](std::size_t a, std::size_t b) {
-    for (std::size_t u : {env.prev(a), env.next(a)})
+    for (std::size_t u : {env.wedge_prev(a), env.next(a)})
       if (orientation(env.vertex(b), env.vertex(a), env.vertex(u)) == 0 &&
           geometry::dot_sign(env.vertex(b), env.vertex(a), env.vertex(a), env.vertex(u)) > 0)
         return true;
     return false;
   };
+  // The line from wedge a's point towards point p leaves within wedge a.
+  auto leaves_in = [&](std::size_t a, const Point& p) {
+    return !env.is_contact(a) || geometry::wedge_toward(env, a, p) == a;
+  };
   for (std::size_t i = 0; i < reflex.size(); ++i)
     for (std::size_t j = i + 1; j < reflex.size(); ++j) {
       const std::uint32_t u = reflex[i], w = reflex[j];
+      if (env.vertex(u) == env.vertex(w)) continue;  // two wedges of one contact
       if (!tangent_at(env, u, env.vertex(w)) || !tangent_at(env, w, env.vertex(u))) continue;
+      if (!leaves_in(u, env.vertex(w)) || !leaves_in(w, env.vertex(u))) continue;
       if (!geometry::visible(env, env.vertex(u), env.vertex(w))) continue;
       if (!along_own_edge(u, w)) rays.push_back({u, w, {CriticalGenerator::Kind::Bitangent, u, w}});
       if (!along_own_edge(w, u)) rays.push_back({w, u, {CriticalGenerator::Kind::Bitangent, w, u}});
     }
+  // Contact rays: a contact point c is seen from one wedge there at most, and a shadow
+  // pinched at c is one region only while c is hidden (the evader passes through the
+  // point). Whether c is seen changes where the line of sight to c grazes a reflex wedge u
+  // tangent to it: the ray from u away from c. (Where c's wedge is tangent too, this is a
+  // bitangent ray, merged below.)
+  for (std::size_t c = 0; c < n; ++c) {
+    if (!env.is_contact(c)) continue;
+    bool first = true;  // one id per contact point
+    for (std::size_t w = env.same_point_next(c); w != c; w = env.same_point_next(w)) first = first && c < w;
+    if (!first) continue;
+    for (std::uint32_t u : reflex) {
+      if (env.vertex(u) == env.vertex(c)) continue;
+      if (!tangent_at(env, u, env.vertex(c)) || !leaves_in(u, env.vertex(c))) continue;
+      if (geometry::wedge_toward(env, c, env.vertex(u)) == SIZE_MAX) continue;  // the line arrives at c from material
+      if (along_own_edge(u, c) || !geometry::visible(env, env.vertex(u), env.vertex(c))) continue;
+      rays.push_back({u, static_cast<std::uint32_t>(c), {CriticalGenerator::Kind::Contact, u, static_cast<std::uint32_t>(c)}});
+    }
+  }
 
   std::vector<CriticalSegment> segs;
   segs.reserve(rays.size());

@@ -38,6 +38,7 @@ ShadowOverlay overlay_shadows(const geometry::Environment& env, std::span<const 
   std::vector<Item> items;
   for (std::uint32_t l = 0; l < shadows.size(); ++l)
     for (const Gap& g : shadows[l]->gaps) {
+      if (g.pinch) continue;  // no edge: labelled by its wedge's face below
       // Canonical direction: lexicographically smaller end first, so equal gaps compare equal.
       const ExactPoint pa = shadows[l]->end(env, g.a), pb = shadows[l]->end(env, g.b);
       const bool fwd = CGAL::compare_xy(pa, pb) == CGAL::SMALLER;
@@ -60,7 +61,7 @@ ShadowOverlay overlay_shadows(const geometry::Environment& env, std::span<const 
     segs.push_back(std::move(it.seg));
     owners.push_back({it.owner});
   }
-  ShadowOverlay out{geometry::SegmentArrangement::build(env, std::move(segs)), {}};
+  ShadowOverlay out{geometry::SegmentArrangement::build(env, std::move(segs), {}, nullptr, true), {}};
   const auto& A = out.arrangement;
   const auto& H = A.half_edges();
   const std::size_t nr = A.num_regions(), k = shadows.size();
@@ -90,6 +91,15 @@ ShadowOverlay overlay_shadows(const geometry::Environment& env, std::span<const 
       const std::uint32_t c = in_v ? kNone : o->component;
       if (known[root] && label[root] != c) throw std::logic_error("pursuit: a face is on both sides of a pursuer's gaps");
       known[root] = 1, label[root] = c;
+    }
+    // A shadow region pinched at a contact point (or a wedge of a hidden one) starts at the
+    // face beside its wedge's first edge.
+    for (const Gap& g : shadows[l]->gaps) {
+      if (!g.pinch) continue;
+      const std::uint32_t root = uf.find(A.region_of(A.first_piece(g.reflex)));
+      if (known[root] && label[root] != g.component)
+        throw std::logic_error("pursuit: a face beside contact vertex " + std::to_string(g.reflex) + " is in two components");
+      known[root] = 1, label[root] = g.component;
     }
     for (std::uint32_t r = 0; r < nr; ++r) out.component[r][l] = label[uf.find(r)];  // no gap at all: all visible
   }

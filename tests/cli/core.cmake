@@ -142,7 +142,17 @@ cli_test(contacts_plan_disc_robot_blocked 0 "no path .* different components of 
 cli_test(contacts_boustrophedon_euler 0 "N_cells = N_critical \\+ N_obstacles - 1 - N_merges: 6 = 6 \\+ 5 - 1 - 4" - decompose ${CONTACTS}/checkerboard.json --method boustrophedon)
 cli_test(contacts_cover 0 "covered 100% of the configuration space" - cover ${CONTACTS}/checkerboard.json --width 0.2 --radius 0)
 cli_test(contacts_overlap_rejected fail "obstacles.1. vertex 0 and .*obstacles.0. vertex 2 overlap at .4, 4." - validate ${CONTACTS}/overlap_at_contact.json)
-cli_test(contacts_pursuit_says_unsupported fail "pursuit: rings touch at .2, 2. .* which pursuit does not support yet" - pursuit plan ${CONTACTS}/checkerboard.json)
+# Pursuit with contacts: rays where a contact point's visibility changes; the pocket under
+# the chevron is reached only through contact points, which the search's pursuers do not
+# pass (so "no plan" says so), while the checker follows a pursuer through one.
+cli_test(contacts_pursuit_cells 0 "28 critical segments .24 edge extensions, 48 bitangent rays, 24 contact rays, 28 segments where rays coincide., 28 cells" -
+         pursuit cells ${CONTACTS}/checkerboard.json)
+cli_test(contacts_pursuit_pocket_no_plan_avoiding_contacts 0 "no plan with 2 pursuers waiting at cell samples on paths that avoid contact points" -
+         pursuit plan ${CONTACTS}/pocket_under_chevron.json --pursuers 2)
+cli_test(contacts_pursuit_pocket_entered_through_contact 0 "2 pursuers, 3 waypoints: cleared .from waypoint 1 on." -
+         pursuit check ${CONTACTS}/pocket_under_chevron.json --path ${CONTACTS}/pocket_under_chevron_path.json)
+cli_test(contacts_pursuit_pocket_recontaminated_alone 0 "NOT cleared: 1 region contaminated at the end .area 10." -
+         pursuit check ${CONTACTS}/pocket_under_chevron.json --path ${CONTACTS}/pocket_under_chevron_alone.json)
 
 # Issue 29: range-limited visibility, batches of viewpoints, full visibility graphs.
 cli_test(visibility_range_text 0 "visibility from \\(4, 4\\) \\(interior\\) within range 3: [0-9]+ segments and [0-9]+ arcs, area [0-9.]+ \\(unlimited: [0-9.]+\\)" -

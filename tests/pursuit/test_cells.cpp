@@ -49,6 +49,11 @@ std::vector<Case> cases() {
   out.push_back({"room with pillar", pursuit::examples::room_with_pillar()});
   out.push_back({"degenerate fixture",
                  *scene::load_scene(std::string(PREIMAGE_FIXTURES) + "/scenes/pursuit_degenerate.json").environment});
+  // Rings touching at vertices (contacts).
+  for (const char* f : {"checkerboard", "corridor_closed_at_points", "hole_touches_boundary"})
+    out.push_back({f, *scene::load_scene(std::string(PREIMAGE_FIXTURES) + "/contacts/" + f + ".json").environment});
+  for (std::uint64_t s = 1; s <= 4; ++s)
+    out.push_back({"touching squares " + std::to_string(s), g::touching_squares(3 + s % 2, 0.5 + 0.1 * s, s, s % 2 == 0)});
   return out;
 }
 
@@ -71,7 +76,7 @@ TEST(PursuitCells, CriticalSegmentsLeaveReflexVerticesThroughFreeSpace) {
   for (auto& [name, env] : cases()) {
     const auto segs = pursuit::critical_segments(env);
     for (auto& s : segs) {
-      ASSERT_TRUE(env.is_reflex(s.origin)) << name;
+      ASSERT_TRUE(pursuit::is_reflex_wedge(env, s.origin)) << name;
       EXPECT_FALSE(s.generators.empty());
       for (std::size_t e = 0; e < env.num_vertices(); ++e) {
         const auto &a = env.exact_vertex(e), &b = env.exact_vertex(env.next(e));
@@ -127,7 +132,7 @@ TEST(PursuitCells, EveryCellIsConservative) {
     std::size_t checked = 0;
     for (std::size_t c = 0; c < C.size(); ++c)
       for (const Point& p : points_in(C, c, 4, rng)) {
-        const auto sh = pursuit::shadows_of(C.visibility().compute(p));
+        const auto sh = C.shadows_at(p);
         ASSERT_TRUE(sh == C.cell(c).shadows) << name << ": cell " << c << " sampled at " << geometry::format_point(C.cell(c).sample)
                                              << " differs at " << geometry::format_point(p);
         ++checked;
@@ -212,4 +217,41 @@ TEST(PursuitCells, HouseExpoPlanThroughThinCellsPassesTheChecker) {
   for (auto& m : r.plan->moves) thin += C.cell(m.to).tiny;
   EXPECT_GT(thin, 0u) << "the shortest plan crosses a thin cell (drawn by one straight segment)";
   EXPECT_TRUE(pursuit::check_paths(*s.environment, r.plan->paths).cleared);
+}
+
+// Rings touching at vertices: the pocket under the chevron touches the room only at the
+// contact points (1, 0) and (3, 0). A region beyond a contact point the pursuer sees is
+// pinched off (a pinch entry, no free edge); beyond a hidden one it joins what lies there.
+TEST(PursuitCells, ShadowsArePinchedAtSeenContactPoints) {
+  const auto env = *scene::load_scene(std::string(PREIMAGE_FIXTURES) + "/contacts/pocket_under_chevron.json").environment;
+  const auto C = ConservativeCells::build(env);
+  auto count = [](const pursuit::Shadows& sh, bool pinch) {
+    return std::count_if(sh.gaps.begin(), sh.gaps.end(), [&](const pursuit::Gap& g) { return g.pinch == pinch; });
+  };
+  // In the pocket: the whole room is one region, beyond both (seen) contact points.
+  const auto in_pocket = C.shadows_at(Point(2, 0.3));
+  EXPECT_EQ(in_pocket.num_components, 1u);
+  EXPECT_EQ(count(in_pocket, false), 0);
+  EXPECT_EQ(count(in_pocket, true), 2);
+  // Above the chevron the pursuer sees the room and both points: the pocket is a region
+  // of its own with no gap.
+  const auto above = C.shadows_at(Point(2, 2.9));
+  EXPECT_EQ(above.num_components, 1u);
+  EXPECT_EQ(count(above, false), 0);
+  EXPECT_EQ(count(above, true), 2);
+  // Left of the chevron (3, 0) is hidden: the pocket and the room right of the chevron are
+  // one region, behind the apex's gap.
+  const auto left = C.shadows_at(Point(0.5, 0.5));
+  EXPECT_EQ(left.num_components, 1u);
+  EXPECT_EQ(count(left, false), 1);
+  EXPECT_EQ(count(left, true), 3);
+  for (auto& g : left.gaps) EXPECT_EQ(g.component, 0u);
+  // Two touching squares seen from inside the diamond they enclose with two more: the
+  // outside is one region although no ring joins its parts (found through the pieces of
+  // free space).
+  const auto sq = geometry::generators::touching_squares(6, 0.6, 3, false);
+  const auto D = ConservativeCells::build(sq);
+  const auto diamond = D.shadows_at(Point(3.5, 2.5));
+  EXPECT_EQ(diamond.num_components, 1u);
+  EXPECT_EQ(count(diamond, false), 0);
 }

@@ -6,6 +6,7 @@
 #include <preimage/pursuit/checker.hpp>
 #include <preimage/pursuit/examples.hpp>
 #include <preimage/pursuit/search.hpp>
+#include <preimage/scene/scene.hpp>
 
 #include <gtest/gtest.h>
 
@@ -137,4 +138,31 @@ TEST(PursuitSearch, AnyPlanOrderAgreesOnExistence) {
     EXPECT_EQ(any.outcome, shortest.outcome) << "environment " << i;
     if (any.plan) expect_checked(envs[i], any, "any plan, environment " + std::to_string(i));
   }
+}
+
+// Rings touching at vertices (contacts): every plan found (one or two pursuers, paths
+// that avoid contact points) clears the environment by the independent checker, which
+// joins shadow faces at a contact point only while nobody sees it. The pocket under the
+// chevron is reached only through contact points: no plan avoids them, for any number of
+// pursuers the search tries (docs/pursuit.md).
+TEST(PursuitSearch, ContactMapPlansPassTheChecker) {
+  std::vector<Environment> envs;
+  for (const char* f : {"checkerboard", "corridor_closed_at_points", "hole_touches_boundary"})
+    envs.push_back(*scene::load_scene(std::string(PREIMAGE_FIXTURES).append("/contacts/").append(f).append(".json")).environment);
+  for (std::uint64_t s = 1; s <= 16; ++s) envs.push_back(g::touching_squares(3 + s % 4, 0.3 + 0.1 * (s % 6), s, s % 2 == 0));
+  std::size_t plans = 0;
+  for (std::size_t i = 0; i < envs.size(); ++i) {
+    const auto C = ConservativeCells::build(envs[i]);
+    for (std::size_t k : {1, 2}) {
+      const auto r = pursuit::search(C, k);
+      if (r.outcome != SearchResult::Outcome::Plan) continue;
+      ++plans;
+      expect_checked(envs[i], r, "contact map " + std::to_string(i) + ", " + std::to_string(k) + " pursuers");
+      break;
+    }
+  }
+  EXPECT_GE(plans, 6u);
+  const auto pocket = *scene::load_scene(std::string(PREIMAGE_FIXTURES).append("/contacts/pocket_under_chevron.json")).environment;
+  const auto C = ConservativeCells::build(pocket);
+  for (std::size_t k : {1, 2, 3}) EXPECT_EQ(pursuit::search(C, k).outcome, SearchResult::Outcome::NoPlan) << k << " pursuers";
 }

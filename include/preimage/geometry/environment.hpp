@@ -88,6 +88,9 @@ class Environment {
   std::size_t wedge_start(std::size_t u) const { return wedge_start_[u]; }
   /// Turn of the free wedge starting at v: orientation(prev(wedge_end(v)), v, next(v)).
   int wedge_turn(std::size_t v) const { return orientation(pts_[prev(wedge_end_[v])], pts_[v], pts_[next(v)]); }
+  /// The neighbour before the free wedge starting at v (the tail of the in-edge ending it);
+  /// the one after it is next(v). Without contacts prev(v).
+  std::size_t wedge_prev(std::size_t v) const { return prev(wedge_end_[v]); }
   /// Is there an environment edge from the point of a to the point of b? Its id, or
   /// SIZE_MAX. O(1) without contacts (next(a) == b), O(rings at the point) with.
   std::size_t edge_between(std::size_t a, std::size_t b) const;
@@ -111,10 +114,5 @@ class Environment {
   std::vector<std::uint32_t> same_next_, wedge_end_, wedge_start_;
   std::size_t num_contacts_ = 0, contact_merges_ = 0;
 };
-
-/// Throws InputError ("<who>: rings touch at (x, y) (obstacles[1] vertex 0, boundary
-/// vertex 3), which <who> does not support yet") when env has a contact; for the modules
-/// whose method assumes disjoint rings.
-void require_no_contacts(const Environment& env, const std::string& who);
 
 }  // namespace preimage::geometry

@@ -53,6 +53,12 @@ bool visible(const Environment& env, const ExactPoint& p, const ExactPoint& q);
 
 /// Is direction towards t, from boundary vertex v, inside the closed free-space wedge at v?
 bool in_free_wedge(const Environment& env, std::size_t v, const Point& t);  // at a contact: outside every ring there
+/// At boundary vertex v's point (t elsewhere): the vertex id w there whose free wedge (from
+/// w's out-edge counter-clockwise to the in-edge of wedge_end(w), both edges included)
+/// holds the direction towards t; SIZE_MAX when that direction points into material.
+/// Without contacts: v or SIZE_MAX.
+std::size_t wedge_toward(const Environment& env, std::size_t v, const Point& t);
+std::size_t wedge_toward(const Environment& env, std::size_t v, const ExactPoint& t);
 
 /// Winding number of the closed polyline `loop` (last point joined to the first) about
 /// c, counter-clockwise positive. Exact (crossings of the ray from c to +x, decided by

@@ -65,8 +65,16 @@ class SegmentArrangement {
  public:
   /// `points`: isolated points segments may end at (SegmentEnd::AtPoint); one vertex is made
   /// for each point some segment uses. Throws std::logic_error on contacts the policy accepts.
+  ///
+  /// Where rings touch at a point (Environment contacts) each ring's vertex there is its own
+  /// arrangement vertex by default: the rings are unglued, and the free wedges around the
+  /// point belong to faces that pass it (right for a sensor that sees nothing there, e.g.
+  /// beams). With `glue_contacts` every edge and segment at the point meets at one vertex
+  /// (the smallest id there), so each wedge's faces end at the point; the vertices of the
+  /// other ids there are left without edges.
   static SegmentArrangement build(Environment env, std::vector<ArrangementSegment> segments,
-                                  const std::vector<ExactPoint>& points = {}, const ArrangementPolicy* policy = nullptr);
+                                  const std::vector<ExactPoint>& points = {}, const ArrangementPolicy* policy = nullptr,
+                                  bool glue_contacts = false);
 
   /// The environment the subdivision lives in (a copy owned by the arrangement).
   const Environment& environment() const { return env_; }
@@ -98,6 +106,9 @@ class SegmentArrangement {
   std::span<const std::uint32_t> region_half_edges(std::size_t r) const {
     return {region_he_.data() + region_he_begin_[r], region_he_.data() + region_he_begin_[r + 1]};
   }
+  /// The even half-edge of boundary edge e's first piece (from vertex e, or from the glued
+  /// vertex at its point): the region on its left is the face of e's free wedge there.
+  std::uint32_t first_piece(std::size_t e) const { return edge_he_[e]; }
   /// Region on the left of half-edge h, kNone for obstacle interiors and the outside.
   std::uint32_t region_of(std::uint32_t h) const { return face_region_[half_edges_[h].face]; }
   /// Number of vertices where two or more segments cross.
@@ -121,6 +132,7 @@ class SegmentArrangement {
   std::vector<Point> approx_;
   std::vector<ArrangementHalfEdge> half_edges_;
   std::vector<std::uint32_t> end_vertex_;
+  std::vector<std::uint32_t> edge_he_;
   std::vector<std::uint32_t> seg_he_;
   std::vector<std::uint32_t> out_begin_, out_;
   std::vector<std::uint32_t> face_region_;

@@ -38,6 +38,12 @@ class Triangulation {
   /// Triangle and slot holding boundary edge e (environment edge id).
   std::pair<std::uint32_t, std::uint8_t> boundary_slot(std::size_t e) const { return edge_slot_[e]; }
 
+  /// Pieces of free space: the connected components of free space minus its contact
+  /// points (triangles joined across shared edges, never at a point alone). Per environment
+  /// edge e, the piece on its free side, numbered from 0 in edge order. Without contacts
+  /// every entry is 0. O(n).
+  std::vector<std::uint32_t> edge_pieces() const;
+
   /// Throws std::logic_error if any structural invariant fails (tests use this):
   /// positive orientation, symmetric adjacency, boundary edges exactly the
   /// environment's, triangle count n - 2c + 2h - 2 (c vertices merged at contacts), exact

@@ -65,6 +65,8 @@ class ConservativeCells {
   const std::vector<CellBoundary>& boundaries() const { return boundaries_; }
   /// Boundaries of cell c (indices into boundaries()).
   const std::vector<std::uint32_t>& boundaries_of(std::size_t c) const { return adjacent_[c]; }
+  /// Shadows of V(p) (p in free space), as the cells' are computed.
+  Shadows shadows_at(const Point& p) const;
   /// Number of reflex vertices of free space.
   std::size_t reflex_vertices() const { return reflex_; }
   /// Number of cells no double-precision point lies in (see Cell::tiny).
@@ -95,6 +97,7 @@ class ConservativeCells {
   std::vector<CellBoundary> boundaries_;
   std::vector<std::vector<std::uint32_t>> adjacent_;
   std::vector<std::uint32_t> boundary_of_;
+  std::vector<std::uint32_t> pieces_;  // per environment edge: its piece of free space (contacts)
   std::size_t reflex_ = 0, tiny_ = 0;
 };
 

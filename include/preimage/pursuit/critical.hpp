@@ -27,10 +27,11 @@ using geometry::kNone;
 
 /// Why a critical segment exists.
 struct CriticalGenerator {
-  enum class Kind : std::uint8_t { Extension, Bitangent };
+  enum class Kind : std::uint8_t { Extension, Bitangent, Contact };
   Kind kind;
   std::uint32_t vertex;  // the reflex vertex the ray leaves
-  std::uint32_t other;   // Extension: the other end of the extended edge; Bitangent: the partner vertex
+  std::uint32_t other;   // Extension: the other end of the extended edge; Bitangent: the partner vertex;
+                         // Contact: a vertex at the contact point whose visibility changes on the ray
 };
 
 /// What the line of sight meets, from a point of a critical segment looking along it past
@@ -57,8 +58,11 @@ struct CriticalSegment {
 };
 
 /// Is reflex vertex v's boundary tangent to the line through v and p (both neighbours on
-/// one closed side)? Exact.
+/// one closed side)? Exact. At a contact, v names the free wedge starting at its out-edge,
+/// and the neighbours are that wedge's (Environment::wedge_prev, next).
 bool tangent_at(const Environment& env, std::size_t v, const Point& p);
+/// Is the free wedge starting at v (v's own at a vertex that is no contact) reflex?
+bool is_reflex_wedge(const Environment& env, std::size_t v);
 
 /// All critical segments of the environment, duplicates merged, with their sight lines.
 /// O(r^2 n) for r reflex vertices (bitangent candidates are tested with exact visibility).
