@@ -108,7 +108,10 @@ Moment take(const Environment& env, const geometry::VisibilityIndex& vis, std::s
   for (const ExactPoint& e : m.at_exact) {
     const Point q = geometry::to_double(e);
     m.at.push_back(q);
-    const auto V = exact ? vis.compute(e) : vis.compute(q);
+    // A sample of a double path on a sloping wall may round into the obstacle: take V at
+    // the exact sample then (V's free edges then have no double carrier).
+    const bool at_exact = exact || !vis.in_free_space(q);
+    const auto V = at_exact ? vis.compute(e) : vis.compute(q);
     m.loops.push_back(V.points());
     for (const auto& x : V.vertices)
       if (x.kind == geometry::VisibilityVertex::Kind::EnvironmentVertex) see(x.vertex);
@@ -141,7 +144,7 @@ Moment take(const Environment& env, const geometry::VisibilityIndex& vis, std::s
                            (env.edge_between(from_end.index, to_end.index) != SIZE_MAX ||
                             env.edge_between(to_end.index, from_end.index) != SIZE_MAX);
         std::optional<std::pair<Point, Point>> carrier;
-        if (!exact) carrier = std::make_pair(q, carrier_q);
+        if (!at_exact) carrier = std::make_pair(q, carrier_q);
         // A free edge of no length: V passing from one ring to another at a contact point
         // the pursuer's line of sight runs into along a wall (the pursuer at a vertex).
         const bool empty = from_end.kind == K::AtVertex && to_end.kind == K::AtVertex &&

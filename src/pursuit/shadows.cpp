@@ -180,7 +180,9 @@ Shadows shadows_of(const geometry::VisibilityPolygon& V, std::span<const std::ui
         const std::size_t first = V.vertices[end].kind == K::EnvironmentVertex ? env.next(env.next(p.edge)) : env.next(p.edge);
         const std::size_t stop = V.vertices[nx.index].kind == K::EnvironmentVertex ? nx.edge : env.next(nx.edge);
         std::size_t count = (stop + size - first) % size;
-        if (count == 0 && ps.size() == 1) count = size;  // one piece inside one edge: the rest of the ring
+        // Both ends inside one edge with nx before p along it (only the last piece in ring
+        // order, when every piece lies on that edge): the stretch is the rest of the ring.
+        if (count == 0 && k + 1 == ps.size() && nx.edge == p.edge) count = size;
         for (std::size_t x = first, c = 0; c < count; ++c, x = x + 1 == base + size ? base : x + 1) through_contact(cur, x);
       }
       uf.join(cur, b);
@@ -243,6 +245,9 @@ Shadows shadows_of(const geometry::VisibilityPolygon& V, std::span<const std::ui
   out.query = q;
   for (std::size_t f = 0; f < free_edges.size(); ++f) {
     const std::size_t i = free_edges[f];
+    // A pursuer standing at a contact point looks along a wall through the next point: V
+    // has a free edge of no length there, bounding no region (the checker drops it too).
+    if (contacts && V.location.kind == geometry::Location::Kind::AtVertex && V.exact(i) == V.exact((i + 1) % m)) continue;
     out.gaps.push_back({gap_name[f], V.vertices[i], V.vertices[(i + 1) % m], uf.find(static_cast<std::uint32_t>(f))});
   }
   // Pinches: wedges at a contact point other than the one q sees into, or all of them at

@@ -50,7 +50,7 @@ std::vector<Case> cases() {
   out.push_back({"degenerate fixture",
                  *scene::load_scene(std::string(PREIMAGE_FIXTURES) + "/scenes/pursuit_degenerate.json").environment});
   // Rings touching at vertices (contacts).
-  for (const char* f : {"checkerboard", "corridor_closed_at_points", "hole_touches_boundary"})
+  for (const char* f : {"checkerboard", "corridor_closed_at_points", "hole_touches_boundary", "pursuit_wrapping_stretch"})
     out.push_back({f, *scene::load_scene(std::string(PREIMAGE_FIXTURES) + "/contacts/" + f + ".json").environment});
   for (std::uint64_t s = 1; s <= 4; ++s)
     out.push_back({"touching squares " + std::to_string(s), g::touching_squares(3 + s % 2, 0.5 + 0.1 * s, s, s % 2 == 0)});
@@ -254,4 +254,34 @@ TEST(PursuitCells, ShadowsArePinchedAtSeenContactPoints) {
   const auto diamond = D.shadows_at(Point(3.5, 2.5));
   EXPECT_EQ(diamond.num_components, 1u);
   EXPECT_EQ(count(diamond, false), 0);
+}
+
+// Fixture from review: between two triangles touching the bottom wall at (6, 0), the
+// pursuer sees two pieces of the wall right of the contact, the later one first in ring
+// order. The hidden stretch between them wraps around the whole outer ring and passes the
+// contact point; counting it as empty merged two shadows at the second point.
+TEST(PursuitCells, HiddenStretchWrappingAroundTheRingPassesItsContact) {
+  const auto env = *scene::load_scene(std::string(PREIMAGE_FIXTURES) + "/contacts/pursuit_wrapping_stretch.json").environment;
+  const auto C = ConservativeCells::build(env);
+  const auto a = C.shadows_at(Point(6.12921301042, 0.851866884874));
+  const auto b = C.shadows_at(Point(6.02677412377, 0.690126543254));
+  EXPECT_EQ(a.num_components, 3u);
+  EXPECT_EQ(b.num_components, 3u);
+  EXPECT_TRUE(a == b);
+}
+
+// Fixture from review: a pursuer standing at the checkerboard's contact point (2, 2)
+// looks along the walls through it, and V has free edges of no length there. They bound
+// no region: counting them as gaps made a third shadow that does not exist (the checker,
+// which drops them, sees the two corner pockets' shadows only).
+TEST(PursuitCells, PursuerAtAContactPointHasNoGapOfNoLength) {
+  const auto env = *scene::load_scene(std::string(PREIMAGE_FIXTURES) + "/contacts/checkerboard.json").environment;
+  const auto C = ConservativeCells::build(env);
+  const auto sh = C.shadows_at(Point(2, 2));
+  EXPECT_EQ(sh.num_components, 2u);
+  for (auto& g : sh.gaps) {
+    if (!g.pinch) {
+      EXPECT_FALSE(g.a.approx == g.b.approx) << "gap of vertex " << g.reflex;
+    }
+  }
 }

@@ -175,3 +175,25 @@ TEST(PursuitChecker, ShadowsBesideASlidingWindowAreNotConfused) {
     for (int k = 1; k <= 16; ++k) fine.push_back(p + geometry::ExactFT(k) / 16 * (q - p));
   EXPECT_TRUE(pursuit::check_exact_paths(env, {fine}).cleared);
 }
+
+// Found while reviewing contacts: a pursuer walking down the lower diamond's sloping wall
+// to the contact point (5, 0). A sample of that segment rounded to doubles lands inside the
+// diamond, and V there was refused ("not in free space"). Such a sample is now taken at
+// its exact position, so the double path is checked as its exact twin is.
+TEST(PursuitChecker, SampleOnASlopingWallRoundingIntoTheObstacle) {
+  const auto env = *scene::load_scene(std::string(PREIMAGE_FIXTURES) + "/contacts/corridor_closed_at_points.json").environment;
+  const pursuit::Paths paths{{{3, 1}, {4, 0.5}, {5, 0}, {8, 1}}};
+  bool rounds_off = false;
+  const geometry::VisibilityIndex vis(env);
+  for (int s = 1; s < 97 && !rounds_off; ++s) {
+    const geometry::ExactFT f = geometry::ExactFT(s) / 97;  // a sample as the checker takes it: exact, then rounded
+    rounds_off = !vis.in_free_space(geometry::to_double(geometry::ExactPoint(4 + f, geometry::ExactFT(0.5) - f / 2)));
+  }
+  ASSERT_TRUE(rounds_off) << "the fixture lost its point: some sample of the wall must round into the diamond";
+  const auto r = pursuit::check_paths(env, paths);
+  pursuit::ExactPaths exact(1);
+  for (const Point& p : paths[0]) exact[0].push_back(geometry::to_exact(p));
+  const auto e = pursuit::check_exact_paths(env, exact);
+  EXPECT_EQ(r.cleared, e.cleared);
+  EXPECT_EQ(r.contaminated_at_end.size(), e.contaminated_at_end.size());
+}
