@@ -36,7 +36,8 @@ ExactPoint exact_vertex(const Environment* environment, const ExactPoint& query,
 }
 
 // Double rounding of a visibility vertex seen from o, for drawing only; decisions never read it.
-Point approx_vertex(const Environment& E, const Point& o, const VisibilityVertex& v) {
+// Inlined into the output loop, so the divisions of consecutive ray hits overlap.
+[[gnu::always_inline]] inline Point approx_vertex(const Environment& E, const Point& o, const VisibilityVertex& v) {
   switch (v.kind) {
     case VisibilityVertex::Kind::EnvironmentVertex: return E.vertex(v.vertex);
     case VisibilityVertex::Kind::Query: return o;
@@ -834,6 +835,9 @@ struct Sym {
   bool operator==(const Sym&) const = default;
 };
 
+// Slot arithmetic of the hot loop by table (an integer % 3 is a multiply and shifts).
+constexpr int kNext3[3] = {1, 2, 0}, kPrev3[3] = {2, 0, 1};
+
 struct Piece {  // visible part of one boundary edge, between two cone rays
   std::uint32_t edge;
   std::uint32_t ray_r, ray_l;  // vertices defining the rays bounding it (kNone: through the query)
@@ -1083,7 +1087,7 @@ void VisibilityIndex::compute_at(const Q& q, const Point& approx, VisibilityPoly
       // the right one (the order of the pieces is that of a plain stack).
       while (true) {
         const Triangle& tr = T[it.t];
-        const std::uint32_t r = tr.v[it.slot], l = tr.v[(it.slot + 1) % 3];
+        const std::uint32_t r = tr.v[it.slot], l = tr.v[kNext3[it.slot]];
         if (tr.nbr[it.slot] == kNone) {  // boundary: emit the visible piece of this edge
           // Written field by field into the list: a piece composed on the stack and copied
           // was reloaded wider than it was stored, stalling store forwarding (profiled).
@@ -1105,8 +1109,8 @@ void VisibilityIndex::compute_at(const Q& q, const Point& approx, VisibilityPoly
         const std::uint32_t u = tr.nbr[it.slot];
         const Triangle& nt = T[u];
         const int j = back_[it.t][it.slot];  // entry edge in u runs l -> r
-        const std::uint32_t c = nt.v[(j + 2) % 3];
-        const int right_slot = (j + 1) % 3, left_slot = (j + 2) % 3;  // (r, c) and (c, l)
+        const int right_slot = kNext3[j], left_slot = kPrev3[j];  // (r, c) and (c, l)
+        const std::uint32_t c = nt.v[left_slot];
         if constexpr (std::is_same_v<Q, Point>) {
           // vis_orient(q, R, c) and vis_orient(q, L, c) with the differences from q shared
           // (c's computed once, R's and L's kept while the cone is followed).
