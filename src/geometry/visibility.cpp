@@ -347,15 +347,20 @@ VisibilityIndex::VisibilityIndex(const Environment& env) : env_(&env), tri_(env)
     pass(sorted, runs, gy_, [](const Run& r) { return r.row; });
   }
 
-  // For the expansion: the slot of each triangle edge in the neighbour across it.
-  back_.assign(T.size(), {0, 0, 0, 0});
+  // For the expansion: one step record per half-edge (HalfStep).
+  steps_.resize(3 * T.size());
   for (std::uint32_t t = 0; t < T.size(); ++t)
     for (int s = 0; s < 3; ++s) {
+      HalfStep& st = steps_[3 * t + s];
       const std::uint32_t u = T[t].nbr[s];
-      if (u == kNone) continue;
-      std::uint8_t j = 0;
+      if (u == kNone) {
+        st = {kNone, T[t].v[s], T[t].v[(s + 1) % 3], T[t].edge[s], 0, 0};
+        continue;
+      }
+      std::uint32_t j = 0;  // the slot of this edge in u, where it runs l -> r
       while (T[u].v[j] != T[t].v[(s + 1) % 3]) ++j;
-      back_[t][s] = j;
+      const std::uint32_t c = T[u].v[(j + 2) % 3];
+      st = {c, 3 * u + (j + 1) % 3, 3 * u + (j + 2) % 3, kNone, P[c].x(), P[c].y()};
     }
 
   // 4. Slabs (see kSlabCell) for the heavy cells, by sweeps along the rows (edges crossing
@@ -815,7 +820,8 @@ namespace {
 struct Rel {
   double x = 0, y = 0, ax = 0, ay = 0;
   Rel() = default;
-  Rel(const Point& a, const Point& q) : x(a.x() - q.x()), y(a.y() - q.y()), ax(std::abs(x)), ay(std::abs(y)) {}
+  Rel(const Point& a, const Point& q) : Rel(a.x(), a.y(), q) {}
+  Rel(double a_x, double a_y, const Point& q) : x(a_x - q.x()), y(a_y - q.y()), ax(std::abs(x)), ay(std::abs(y)) {}
 };
 // vis_orient(q, a, b) given a - q and b - q: the same filter on the same differences.
 inline int orient_rel(const Rel& a, const Rel& b, const Point& q, const Point& pa, const Point& pb) {
@@ -835,9 +841,6 @@ struct Sym {
   bool operator==(const Sym&) const = default;
 };
 
-// Slot arithmetic of the hot loop by table (an integer % 3 is a multiply and shifts).
-constexpr int kNext3[3] = {1, 2, 0}, kPrev3[3] = {2, 0, 1};
-
 struct Piece {  // visible part of one boundary edge, between two cone rays
   std::uint32_t edge;
   std::uint32_t ray_r, ray_l;  // vertices defining the rays bounding it (kNone: through the query)
@@ -846,8 +849,7 @@ struct Piece {  // visible part of one boundary edge, between two cone rays
 
 // Work item: cross edge `slot` of triangle `t` inside the cone between rays q->R and q->L.
 struct VisItem {
-  std::uint32_t t;
-  int slot;
+  std::uint32_t h;  // half-edge 3t + s
   std::uint32_t R, L;
 };
 
@@ -1077,8 +1079,9 @@ void VisibilityIndex::compute_at(const Q& q, const Point& approx, VisibilityPoly
     }
     stack[top++] = item;
   };
+  const HalfStep* const S = steps_.data();
   auto run = [&](std::uint32_t t0, int s0, std::uint32_t R0, std::uint32_t L0) {
-    push({t0, s0, R0, L0});
+    push({3 * t0 + static_cast<std::uint32_t>(s0), R0, L0});
     while (top > 0) {
       VisItem it = stack[--top];
       Rel rd, ld;  // R - q and L - q (double queries)
@@ -1086,12 +1089,12 @@ void VisibilityIndex::compute_at(const Q& q, const Point& approx, VisibilityPoly
       // Follow one cone across triangles; a split pushes its left part and goes on with
       // the right one (the order of the pieces is that of a plain stack).
       while (true) {
-        const Triangle& tr = T[it.t];
-        const std::uint32_t r = tr.v[it.slot], l = tr.v[kNext3[it.slot]];
-        if (tr.nbr[it.slot] == kNone) {  // boundary: emit the visible piece of this edge
+        const HalfStep& st = S[it.h];
+        const std::uint32_t c = st.c;
+        if (c == kNone) {  // boundary edge (r, l): emit the visible piece of it
           // Written field by field into the list: a piece composed on the stack and copied
           // was reloaded wider than it was stored, stalling store forwarding (profiled).
-          const std::uint32_t e = tr.edge[it.slot];
+          const std::uint32_t e = st.edge, r = st.right, l = st.left;
           Piece& pc = pieces.emplace_back();
           pc.edge = e, pc.ray_r = it.R, pc.ray_l = it.L;
           if (it.R == r || vis_orient(q, Pq(it.R), Pq(r)) == 0) {
@@ -1106,31 +1109,27 @@ void VisibilityIndex::compute_at(const Q& q, const Point& approx, VisibilityPoly
           }
           break;
         }
-        const std::uint32_t u = tr.nbr[it.slot];
-        const Triangle& nt = T[u];
-        const int j = back_[it.t][it.slot];  // entry edge in u runs l -> r
-        const int right_slot = kNext3[j], left_slot = kPrev3[j];  // (r, c) and (c, l)
-        const std::uint32_t c = nt.v[left_slot];
+        // Across the diagonal into the neighbour, whose apex c lies beyond it.
         if constexpr (std::is_same_v<Q, Point>) {
           // vis_orient(q, R, c) and vis_orient(q, L, c) with the differences from q shared
           // (c's computed once, R's and L's kept while the cone is followed).
-          const Rel cd(P[c], q);
+          const Rel cd(st.cx, st.cy, q);
           if (orient_rel(rd, cd, q, P[it.R], P[c]) <= 0) {
-            it = {u, left_slot, it.R, it.L};
+            it.h = st.left;
           } else if (orient_rel(ld, cd, q, P[it.L], P[c]) >= 0) {
-            it = {u, right_slot, it.R, it.L};
+            it.h = st.right;
           } else {  // c splits the cone; right part first (counter-clockwise output)
-            push({u, left_slot, c, it.L});
-            it = {u, right_slot, it.R, c};
+            push({st.left, c, it.L});
+            it = {st.right, it.R, c};
             ld = cd;
           }
         } else if (vis_orient(q, Pq(it.R), Pq(c)) <= 0) {
-          it = {u, left_slot, it.R, it.L};
+          it.h = st.left;
         } else if (vis_orient(q, Pq(it.L), Pq(c)) >= 0) {
-          it = {u, right_slot, it.R, it.L};
+          it.h = st.right;
         } else {
-          push({u, left_slot, c, it.L});
-          it = {u, right_slot, it.R, c};
+          push({st.left, c, it.L});
+          it = {st.right, it.R, c};
         }
       }
     }

@@ -183,7 +183,18 @@ class VisibilityIndex {
   std::uint32_t gx_, gy_;
   std::vector<std::uint32_t> cell_off_, cell_tris_;
   std::vector<Slab> slabs_;
-  std::vector<std::array<std::uint8_t, 4>> back_;  // back_[t][s]: the slot of edge s of t in its neighbour
+  // The expansion's step across half-edge h = 3t + s (edge s of triangle t) in one record,
+  // so following a cone is one load per triangle (not the triangle, its neighbour, the
+  // slot there and the apex's point). Across a diagonal: the neighbour's apex c (id and
+  // coordinates) and the half-edges (r, c) and (c, l) the cone goes on through. On the
+  // boundary (c == kNone): the edge's ends r, l and its environment edge id.
+  struct HalfStep {
+    std::uint32_t c;
+    std::uint32_t right, left;  // diagonal: half-edges of the neighbour; boundary: vertices r, l
+    std::uint32_t edge;         // boundary: environment edge
+    double cx, cy;
+  };
+  std::vector<HalfStep> steps_;
   std::vector<SlabEdge> slab_edges_;
   std::vector<std::uint32_t> slab_others_;
 };
