@@ -36,7 +36,7 @@ ExactPoint exact_vertex(const Environment* environment, const ExactPoint& query,
 }
 
 // Double rounding of a visibility vertex seen from o, for drawing only; decisions never read it.
-// Inlined into the output loop, so the divisions of consecutive ray hits overlap.
+// Inlined into compute's pass over the ray hits, so the divisions of consecutive hits overlap.
 [[gnu::always_inline]] inline Point approx_vertex(const Environment& E, const Point& o, const VisibilityVertex& v) {
   switch (v.kind) {
     case VisibilityVertex::Kind::EnvironmentVertex: return E.vertex(v.vertex);
@@ -1221,12 +1221,13 @@ void VisibilityIndex::compute_at(const Q& q, const Point& approx, VisibilityPoly
   };
   // Output records are written field by field in place (as the pieces above: a record
   // composed on the stack and copied stalled store forwarding).
-  auto emit_vertex = [&](const Sym& sv) {
+  // A ray hit's coordinates wait for a pass of their own after the loop: each needs a
+  // division, which stalled every emission here (profiled); in their own loop the
+  // divisions of consecutive hits overlap.
+  auto emit_vertex = [&](const Sym& sv) __attribute__((always_inline)) {
     VisibilityVertex& v = out.vertices.emplace_back();
     v.kind = sv.kind, v.vertex = sv.vertex, v.edge = sv.edge;
-    if (!coordinates) v.approx = no_coordinates;
-    else if (sv.kind == VisibilityVertex::Kind::EnvironmentVertex) v.approx = P[sv.vertex];
-    else v.approx = approx_vertex(E, approx, v);
+    v.approx = !coordinates ? no_coordinates : sv.kind == VisibilityVertex::Kind::EnvironmentVertex ? P[sv.vertex] : approx;
   };
   auto emit_edge = [&](VisibilityEdge::Kind kind, std::uint32_t edge, std::uint32_t reflex, bool left) {
     VisibilityEdge& d = out.edges.emplace_back();
@@ -1239,7 +1240,7 @@ void VisibilityIndex::compute_at(const Q& q, const Point& approx, VisibilityPoly
     const Piece& pc = pieces[k];
     emit_vertex(pc.start);
     emit_edge(VisibilityEdge::Kind::Solid, pc.edge, kNone, false);
-    const Sym &X = pc.end, &Y = pieces[(k + 1) % m].start;
+    const Sym &X = pc.end, &Y = pieces[k + 1 == m ? 0 : k + 1].start;  // not % m: a 64-bit division per piece (profiled)
     if (X == Y) continue;
     // A gap along the shared cone ray q -> c between the two hits X (end of this piece)
     // and Y (start of the next).
@@ -1269,6 +1270,9 @@ void VisibilityIndex::compute_at(const Q& q, const Point& approx, VisibilityPoly
     }
     emit_edge(VisibilityEdge::Kind::Free, kNone, pc.ray_l, !outward);
   }
+  if (coordinates)
+    for (VisibilityVertex& v : out.vertices)
+      if (v.kind == VisibilityVertex::Kind::RayHit) v.approx = approx_vertex(E, approx, v);
 }
 
 // ---------------------------------------------------------------- walks along a line
