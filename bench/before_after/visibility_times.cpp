@@ -1,0 +1,77 @@
+// Per-query visibility time on bench_visibility's maps, for before/after comparisons of
+// two commits in one run (interleaved by compare.py). Uses only API that commit 73df79e
+// (the code issue 29 found) already had, so it builds against either library:
+//   g++ -std=c++20 -O3 -DNDEBUG [-DREUSED] -I <tree>/include visibility_times.cpp \
+//       <tree>/build/libpreimage.a -lpolyclipping -lgmp -lmpfr -o times_<name>
+// -DREUSED times compute(q, out) into one polygon (not in 73df79e); without it compute(q)
+// by value. `times gen MAP...` writes 500 interior queries per map (uniform in the box,
+// fixed seed) to $PREIMAGE_QUERIES (default /tmp), `times time MAP...` prints
+// "map us_per_query checksum" (the checksum, of the output sizes, must agree).
+#include <preimage/geometry/generators.hpp>
+#include <preimage/geometry/visibility.hpp>
+#include <preimage/geometry/queries.hpp>
+#include <preimage/scene/import.hpp>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <random>
+#include <string>
+using namespace preimage::geometry;
+namespace gen = preimage::geometry::generators;
+#include <cstdlib>
+std::string env_or(const char* k, const char* d) { const char* v = std::getenv(k); return v ? v : d; }
+std::string fp(const char* n) { return env_or("PREIMAGE_EXAMPLES", "examples") + "/floorplans/" + n; }
+int main(int argc, char** argv) {
+  std::map<std::string, std::function<Environment()>> maps = {
+      {"houseexpo-0000", [] { return *preimage::scene::import_houseexpo(fp("house_expo_room_0000.json")).environment; }},
+      {"houseexpo-1451", [] { return *preimage::scene::import_houseexpo(fp("house_expo_room_1451.json")).environment; }},
+      {"office-3x3", [] { return gen::office(3, 3); }},
+      {"office-5x5", [] { return gen::office(5, 5); }},
+      {"comb-25", [] { return Environment::make(gen::comb(25), {}); }},
+      {"comb-120", [] { return Environment::make(gen::comb(120), {}); }},
+      {"random-1000-h20", [] { return gen::random_environment(1000, 20, 1062); }},
+      {"office-35x35", [] { return gen::office(35, 35); }},
+      {"comb-7500", [] { return Environment::make(gen::comb(7500), {}); }},
+  };
+  const std::string mode = argv[1];  // gen | time
+  for (int a = 2; a < argc; ++a) {
+    const std::string name = argv[a];
+    const Environment env = maps.at(name)();
+    const VisibilityIndex vis(env);
+    std::vector<Point> qs;
+    const std::string qf = env_or("PREIMAGE_QUERIES", "/tmp") + "/q-" + name + ".txt";
+    if (mode == "gen") {
+      std::mt19937 rng(7);
+      const auto b = env.bbox();
+      std::uniform_real_distribution<double> X(b.xmin(), b.xmax()), Y(b.ymin(), b.ymax());
+      std::ofstream o(qf);
+      o.precision(17);
+      while (qs.size() < 500) {
+        Point q(X(rng), Y(rng));
+        if (locate(env, q).kind != Location::Kind::Interior) continue;
+        qs.push_back(q);
+        o << q.x() << " " << q.y() << "\n";
+      }
+      continue;
+    }
+    std::ifstream in(qf);
+    double x, y;
+    while (in >> x >> y) qs.push_back(Point(x, y));
+    std::size_t sum = 0;
+    for (auto& q : qs) sum += vis.compute(q).vertices.size();
+    const int reps = std::max<int>(1, static_cast<int>(200000 / (env.num_vertices() * qs.size() / 100 + 1)));
+    auto t0 = std::chrono::steady_clock::now();
+#ifdef REUSED
+    VisibilityPolygon out;
+    for (int r = 0; r < reps; ++r)
+      for (auto& q : qs) vis.compute(q, out), sum += out.vertices.size();
+#else
+    for (int r = 0; r < reps; ++r)
+      for (auto& q : qs) sum += vis.compute(q).vertices.size();
+#endif
+    auto t1 = std::chrono::steady_clock::now();
+    std::printf("%s %.4f %zu\n", name.c_str(), std::chrono::duration<double, std::micro>(t1 - t0).count() / (reps * qs.size()), sum % 1000);
+  }
+}
