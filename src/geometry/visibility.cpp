@@ -847,7 +847,7 @@ struct Piece {  // visible part of one boundary edge, between two cone rays
   Sym start, end;
 };
 
-// Work item: cross edge `slot` of triangle `t` inside the cone between rays q->R and q->L.
+// Work item: cross half-edge h (steps_[h]) inside the cone between rays q->R and q->L.
 struct VisItem {
   std::uint32_t h;  // half-edge 3t + s
   std::uint32_t R, L;

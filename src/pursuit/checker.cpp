@@ -46,7 +46,6 @@ void validate_paths(const Environment& env, const ExactPaths& paths) {
   }
 }
 
-namespace {
 ExactPaths to_exact(const Paths& paths) {
   ExactPaths out;
   for (auto& p : paths) {
@@ -55,7 +54,6 @@ ExactPaths to_exact(const Paths& paths) {
   }
   return out;
 }
-}  // namespace
 
 void validate_paths(const Environment& env, const Paths& paths) { validate_paths(env, to_exact(paths)); }
 

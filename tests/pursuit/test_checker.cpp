@@ -191,9 +191,7 @@ TEST(PursuitChecker, SampleOnASlopingWallRoundingIntoTheObstacle) {
   }
   ASSERT_TRUE(rounds_off) << "the fixture lost its point: some sample of the wall must round into the diamond";
   const auto r = pursuit::check_paths(env, paths);
-  pursuit::ExactPaths exact(1);
-  for (const Point& p : paths[0]) exact[0].push_back(geometry::to_exact(p));
-  const auto e = pursuit::check_exact_paths(env, exact);
+  const auto e = pursuit::check_exact_paths(env, pursuit::to_exact(paths));
   EXPECT_EQ(r.cleared, e.cleared);
   EXPECT_EQ(r.contaminated_at_end.size(), e.contaminated_at_end.size());
 }

@@ -62,6 +62,9 @@ struct CheckResult {
   std::vector<CheckFrame> frames;
 };
 
+/// The same paths with exact waypoints (the doubles as they are).
+ExactPaths to_exact(const Paths& paths);
+
 /// Throws InputError naming the pursuer and point or segment when the paths are not
 /// polylines in free space with equally many points.
 void validate_paths(const geometry::Environment& env, const Paths& paths);
