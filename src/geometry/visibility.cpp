@@ -193,6 +193,18 @@ VisibilityIndex::VisibilityIndex(const Environment& env) : env_(&env), tri_(env)
   const auto& T = tri_.triangles();
   CGAL::Bbox_2 box = env.bbox();
   x0_ = box.xmin(), y0_ = box.ymin();
+  {
+    // |a - q| <= the box's extent in each coordinate for a vertex a and a query q in the box,
+    // and rounding is monotone, so the computed differences are bounded by the rounded
+    // extents dx, dy. CGAL's semi-static bound 8.8872057372592798e-16 * maxx * maxy grows
+    // with maxx and maxy, so it holds with dx, dy in their place; 8.9e-16 leaves room for
+    // the rounding of this product and for underflow in the determinant (extents kept in
+    // CGAL's own safe range [1e-146, 1e153)).
+    const double dx = box.xmax() - box.xmin(), dy = box.ymax() - box.ymin();
+    orient_eps_ = std::min(dx, dy) >= 1e-140 && std::max(dx, dy) < 1e150
+                      ? 8.9e-16 * dx * dy
+                      : std::numeric_limits<double>::infinity();
+  }
   const double w = std::max(box.xmax() - box.xmin(), 1e-300), h = std::max(box.ymax() - box.ymin(), 1e-300);
   const double cells = std::max<double>(1.0, 2.0 * static_cast<double>(T.size()));
   const double aspect = w / h;
@@ -815,22 +827,20 @@ std::size_t VisibilityIndex::locate_tests(const Point& q) const {
 namespace {
 
 
-// A point relative to the query: its differences and their magnitudes, for vis_orient's
-// filter with the differences shared between tests.
+// A point relative to the query: its coordinate differences, shared between tests.
 struct Rel {
-  double x = 0, y = 0, ax = 0, ay = 0;
+  double x = 0, y = 0;
   Rel() = default;
   Rel(const Point& a, const Point& q) : Rel(a.x(), a.y(), q) {}
-  Rel(double a_x, double a_y, const Point& q) : x(a_x - q.x()), y(a_y - q.y()), ax(std::abs(x)), ay(std::abs(y)) {}
+  Rel(double a_x, double a_y, const Point& q) : x(a_x - q.x()), y(a_y - q.y()) {}
 };
-// vis_orient(q, a, b) given a - q and b - q: the same filter on the same differences.
-inline int orient_rel(const Rel& a, const Rel& b, const Point& q, const Point& pa, const Point& pb) {
-  const double maxx = std::max(a.ax, b.ax), maxy = std::max(a.ay, b.ay);
-  if (std::min(maxx, maxy) >= 1e-146 && std::max(maxx, maxy) < 1e153) {
-    const double det = a.x * b.y - a.y * b.x, eps = 8.8872057372592798e-16 * maxx * maxy;
-    if (det > eps) return 1;
-    if (det < -eps) return -1;
-  }
+// orientation(q, a, b) given a - q and b - q, with the index's static filter bound eps
+// (VisibilityIndex::orient_eps_): one product pair and two comparisons; CGAL decides the
+// rare determinants within eps of zero.
+inline int orient_rel(const Rel& a, const Rel& b, double eps, const Point& q, const Point& pa, const Point& pb) {
+  const double det = a.x * b.y - a.y * b.x;
+  if (det > eps) return 1;
+  if (det < -eps) return -1;
   return orientation(q, pa, pb);
 }
 
@@ -915,7 +925,10 @@ namespace {
 class VisWorkerPool {
  public:
   struct Batch {
-    std::function<void()> work;  // runs chunks until the batch's counter is exhausted
+    // Runs chunks until the batch's counter is exhausted: a plain function and its context
+    // (a std::function of the caller's lambda would allocate once per batch).
+    void (*work)(void*) = nullptr;
+    void* context = nullptr;
     std::size_t max_helpers = 0;
     std::size_t helpers = 0;     // joined and not yet left (guarded by the pool's mutex)
     std::condition_variable left;
@@ -939,7 +952,7 @@ class VisWorkerPool {
     }
     if (b.max_helpers == 1) wake_.notify_one();
     else wake_.notify_all();
-    b.work();
+    b.work(b.context);
     std::unique_lock<std::mutex> lock(m_);
     withdraw(&b);
     b.left.wait(lock, [&] { return b.helpers == 0; });
@@ -977,7 +990,7 @@ class VisWorkerPool {
       Batch* b = queue_.front();
       if (++b->helpers >= b->max_helpers) queue_.pop_front(), queued_.fetch_sub(1, std::memory_order_relaxed);  // enough helpers joined
       lock.unlock();
-      b->work();
+      b->work(b->context);
       lock.lock();
       withdraw(b);  // its work is exhausted: nobody else need join
       if (--b->helpers == 0) b->left.notify_all();
@@ -993,25 +1006,27 @@ class VisWorkerPool {
 };
 }  // namespace
 
-std::vector<VisibilityPolygon> VisibilityIndex::compute_many(std::span<const Point> queries, unsigned threads,
-                                                             bool abstract) const {
-  std::vector<VisibilityPolygon> out(queries.size());
+namespace {
+// Runs one(i) for i in [0, count) on `threads` threads (0: one per hardware thread), the
+// caller and the pool's helpers; rethrows the exception of the lowest failing i after all
+// have ended.
+template <class One>
+void run_batch(std::size_t count, unsigned threads, One&& one) {
   std::size_t n = threads ? threads : std::max(1u, std::thread::hardware_concurrency());
-  // Chunks small enough that the threads finish together (about 8 per thread), large
-  // enough that taking one (an atomic add) is negligible next to its queries.
-  const std::size_t chunk = std::clamp<std::size_t>(queries.size() / (8 * n), 1, 64);
-  n = std::max<std::size_t>(1, std::min(n, (queries.size() + chunk - 1) / chunk));
+  // Chunks small enough that the threads finish together (about 32 per thread: the last
+  // chunk's time is what one thread may wait for the other), large enough that taking one
+  // (an atomic add) is negligible next to its queries (each takes a microsecond or more).
+  const std::size_t chunk = std::clamp<std::size_t>(count / (32 * n), 1, 16);
+  n = std::max<std::size_t>(1, std::min(n, (count + chunk - 1) / chunk));
   std::atomic<std::size_t> next{0};
   std::mutex failed;
-  std::size_t failed_at = queries.size();
+  std::size_t failed_at = count;
   std::exception_ptr error;
   auto work = [&] {
-    for (std::size_t b; (b = next.fetch_add(chunk, std::memory_order_relaxed)) < queries.size();) {
-      for (std::size_t i = b; i < std::min(queries.size(), b + chunk); ++i) {
+    for (std::size_t b; (b = next.fetch_add(chunk, std::memory_order_relaxed)) < count;) {
+      for (std::size_t i = b; i < std::min(count, b + chunk); ++i) {
         try {
-          VisibilityPolygon& scratch = vis_result_scratch();
-          compute_at(queries[i], queries[i], scratch, !abstract);
-          out[i] = scratch;  // exactly sized
+          one(i);
         } catch (...) {
           std::lock_guard<std::mutex> lock(failed);
           if (i < failed_at) failed_at = i, error = std::current_exception();
@@ -1023,12 +1038,30 @@ std::vector<VisibilityPolygon> VisibilityIndex::compute_many(std::span<const Poi
     work();
   } else {
     VisWorkerPool::Batch batch;
-    batch.work = work;
+    batch.work = [](void* w) { (*static_cast<decltype(work)*>(w))(); };
+    batch.context = &work;
     batch.max_helpers = n - 1;
     VisWorkerPool::instance().run(batch);
   }
   if (error) std::rethrow_exception(error);
+}
+}  // namespace
+
+std::vector<VisibilityPolygon> VisibilityIndex::compute_many(std::span<const Point> queries, unsigned threads,
+                                                             bool abstract) const {
+  std::vector<VisibilityPolygon> out(queries.size());
+  run_batch(queries.size(), threads, [&](std::size_t i) {
+    VisibilityPolygon& scratch = vis_result_scratch();
+    compute_at(queries[i], queries[i], scratch, !abstract);
+    out[i] = scratch;  // exactly sized
+  });
   return out;
+}
+
+void VisibilityIndex::compute_many(std::span<const Point> queries, std::vector<VisibilityPolygon>& out,
+                                   unsigned threads, bool abstract) const {
+  out.resize(queries.size());
+  run_batch(queries.size(), threads, [&](std::size_t i) { compute_at(queries[i], queries[i], out[i], !abstract); });
 }
 
 template <class Q>
@@ -1080,6 +1113,12 @@ void VisibilityIndex::compute_at(const Q& q, const Point& approx, VisibilityPoly
     stack[top++] = item;
   };
   const HalfStep* const S = steps_.data();
+  const double eps = orient_eps_;
+  // Does the end x of a boundary edge lie on the cone ray q -> a (a - q is ad)?
+  auto on_ray = [&](std::uint32_t a, const Rel& ad, std::uint32_t x) __attribute__((always_inline)) {
+    if constexpr (std::is_same_v<Q, Point>) return orient_rel(ad, Rel(P[x], q), eps, q, P[a], P[x]) == 0;
+    else return vis_orient(q, Pq(a), Pq(x)) == 0;
+  };
   auto run = [&](std::uint32_t t0, int s0, std::uint32_t R0, std::uint32_t L0) {
     push({3 * t0 + static_cast<std::uint32_t>(s0), R0, L0});
     while (top > 0) {
@@ -1097,12 +1136,12 @@ void VisibilityIndex::compute_at(const Q& q, const Point& approx, VisibilityPoly
           const std::uint32_t e = st.edge, r = st.right, l = st.left;
           Piece& pc = pieces.emplace_back();
           pc.edge = e, pc.ray_r = it.R, pc.ray_l = it.L;
-          if (it.R == r || vis_orient(q, Pq(it.R), Pq(r)) == 0) {
+          if (it.R == r || on_ray(it.R, rd, r)) {
             pc.start.kind = VisibilityVertex::Kind::EnvironmentVertex, pc.start.vertex = r, pc.start.edge = kNone;
           } else {
             pc.start.kind = VisibilityVertex::Kind::RayHit, pc.start.vertex = it.R, pc.start.edge = e;
           }
-          if (it.L == l || vis_orient(q, Pq(it.L), Pq(l)) == 0) {
+          if (it.L == l || on_ray(it.L, ld, l)) {
             pc.end.kind = VisibilityVertex::Kind::EnvironmentVertex, pc.end.vertex = l, pc.end.edge = kNone;
           } else {
             pc.end.kind = VisibilityVertex::Kind::RayHit, pc.end.vertex = it.L, pc.end.edge = e;
@@ -1114,9 +1153,9 @@ void VisibilityIndex::compute_at(const Q& q, const Point& approx, VisibilityPoly
           // vis_orient(q, R, c) and vis_orient(q, L, c) with the differences from q shared
           // (c's computed once, R's and L's kept while the cone is followed).
           const Rel cd(st.cx, st.cy, q);
-          if (orient_rel(rd, cd, q, P[it.R], P[c]) <= 0) {
+          if (orient_rel(rd, cd, eps, q, P[it.R], P[c]) <= 0) {
             it.h = st.left;
-          } else if (orient_rel(ld, cd, q, P[it.L], P[c]) >= 0) {
+          } else if (orient_rel(ld, cd, eps, q, P[it.L], P[c]) >= 0) {
             it.h = st.right;
           } else {  // c splits the cone; right part first (counter-clockwise output)
             push({st.left, c, it.L});
@@ -1203,7 +1242,8 @@ void VisibilityIndex::compute_at(const Q& q, const Point& approx, VisibilityPoly
       if (kept > 0 && pieces[kept - 1].edge == pieces[k].edge && pieces[kept - 1].end == pieces[k].start) {
         pieces[kept - 1].end = pieces[k].end, pieces[kept - 1].ray_l = pieces[k].ray_l;
       } else {
-        pieces[kept++] = pieces[k];
+        if (kept != k) pieces[kept] = pieces[k];  // merges are rare: most pieces stay put
+        ++kept;
       }
     }
     pieces.resize(kept);
@@ -1224,18 +1264,24 @@ void VisibilityIndex::compute_at(const Q& q, const Point& approx, VisibilityPoly
   // A ray hit's coordinates wait for a pass of their own after the loop: each needs a
   // division, which stalled every emission here (profiled); in their own loop the
   // divisions of consecutive hits overlap.
+  // The output is sized for its largest case (a gap after every piece) and written through
+  // plain pointers, then cut to what was written: emplace_back reloaded and stored the
+  // vectors' ends around every record (profiled, 8% of a query on comb-120).
+  const std::size_t m = pieces.size();
+  out.vertices.resize(2 * m);
+  out.edges.resize(2 * m);
+  VisibilityVertex* const vout = out.vertices.data();
+  VisibilityEdge* const eout = out.edges.data();
+  std::size_t nv = 0, ne = 0;
   auto emit_vertex = [&](const Sym& sv) __attribute__((always_inline)) {
-    VisibilityVertex& v = out.vertices.emplace_back();
+    VisibilityVertex& v = vout[nv++];
     v.kind = sv.kind, v.vertex = sv.vertex, v.edge = sv.edge;
     v.approx = !coordinates ? no_coordinates : sv.kind == VisibilityVertex::Kind::EnvironmentVertex ? P[sv.vertex] : approx;
   };
   auto emit_edge = [&](VisibilityEdge::Kind kind, std::uint32_t edge, std::uint32_t reflex, bool left) {
-    VisibilityEdge& d = out.edges.emplace_back();
+    VisibilityEdge& d = eout[ne++];
     d.kind = kind, d.edge = edge, d.reflex = reflex, d.occluder_on_left = left;
   };
-  const std::size_t m = pieces.size();
-  out.vertices.reserve(2 * m);
-  out.edges.reserve(2 * m);
   for (std::size_t k = 0; k < m; ++k) {
     const Piece& pc = pieces[k];
     emit_vertex(pc.start);
@@ -1265,11 +1311,13 @@ void VisibilityIndex::compute_at(const Q& q, const Point& approx, VisibilityPoly
       outward = false;
     } else {
       const ExactPoint eq = exact_of(q);
-      outward = CGAL::compare_distance_to_point(eq, exact_vertex(env_, eq, out.vertices.back()),
+      outward = CGAL::compare_distance_to_point(eq, exact_vertex(env_, eq, vout[nv - 1]),
                                                 exact_vertex(env_, eq, realise(Y))) == CGAL::SMALLER;
     }
     emit_edge(VisibilityEdge::Kind::Free, kNone, pc.ray_l, !outward);
   }
+  out.vertices.resize(nv);
+  out.edges.resize(ne);
   if (coordinates)
     for (VisibilityVertex& v : out.vertices)
       if (v.kind == VisibilityVertex::Kind::RayHit) v.approx = approx_vertex(E, approx, v);

@@ -72,6 +72,54 @@ TEST(Visibility, MatchesCgalOnDegenerateFloorPlans) {
   EXPECT_GE(n, 200);
 }
 
+// The expansion's static filter bound is the largest determinant error any query in the
+// bounding box can see; below extents of 1e-140, where underflow breaks that bound, every
+// test goes to CGAL instead (coordinates above 1e12 are refused at input). Scaling by a power
+// of two is exact, so the same map (extents about 1e3) at 2^-1000 and 2^-480 (bound off),
+// 2^-470 (on, just) and 2^29 (near the largest coordinates) must still match CGAL.
+TEST(Visibility, MatchesCgalAtExtremeScales) {
+  const Environment base = preimage::testing::snapped_random_environment(120, 4, 31);
+  int n = 0;
+  for (int e : {-1000, -480, -470, 29}) {
+    auto scaled = [&](std::size_t r) {
+      Ring ring;
+      for (const Point& p : base.ring(r)) ring.push_back(Point(std::ldexp(p.x(), e), std::ldexp(p.y(), e)));
+      return ring;
+    };
+    std::vector<Ring> holes;
+    for (std::size_t h = 1; h < base.num_rings(); ++h) holes.push_back(scaled(h));
+    n += compare_with_cgal(Environment::make(scaled(0), holes), 40, 10, 10, static_cast<std::uint64_t>(e + 2000));
+  }
+  EXPECT_GE(n, 200);
+}
+
+// Queries within rounding of the line through two vertices a and b, beyond b: seen from
+// there, b and a lie in one direction (b may hide a or graze it), and their determinant is
+// far below the static bound, so CGAL decides it.
+// Unsnapped coordinates (full mantissas), so a determinant's double sign can be wrong there.
+TEST(Visibility, NearlyCollinearQueriesMatchCgal) {
+  for (const Environment& env : {generators::random_environment(200, 5, 41), generators::office(3, 3)}) {
+  VisibilityIndex ours(env);
+  CgalVisibility cgal(env);
+  std::mt19937_64 rng(5);
+  std::uniform_int_distribution<std::size_t> V(0, env.num_vertices() - 1);
+  std::uniform_real_distribution<double> T(1.02, 2.0);  // q beyond b: sees b and a in one direction
+  int compared = 0, tries = 0;
+  while (compared < 300 && ++tries < 100000) {
+    const Point& a = env.vertex(V(rng));
+    const Point& b = env.vertex(V(rng));
+    const double t = T(rng);
+    const Point q(a.x() + t * (b.x() - a.x()), a.y() + t * (b.y() - a.y()));
+    const Location loc = locate(env, q);
+    if (!loc.in_free_space()) continue;
+    EXPECT_EQ(canonical_cycle(ours.compute(q).points()), canonical_cycle(cgal.compute(q, loc)))
+        << "query " << format_point(q) << " on the line through " << format_point(a) << " and " << format_point(b);
+    ++compared;
+  }
+  EXPECT_EQ(compared, 300);
+  }
+}
+
 TEST(Visibility, RejectsQueriesOutsideFreeSpace) {
   auto env = generators::office(2, 2);
   VisibilityIndex index(env);
@@ -195,6 +243,20 @@ TEST(Visibility, ComputeManyEqualsSequentialCompute) {
       EXPECT_TRUE(abstract[i].abstract);
       expect_same_polygon(index.compute(qs[i]), abstract[i], false, name + " abstract query " + std::to_string(i));
     }
+    // Into reused polygons: batches of other sizes, other queries and the other mode in
+    // between leave nothing behind (every polygon is rewritten whole).
+    std::vector<VisibilityPolygon> reused;
+    const std::span<const Point> all_qs(qs);
+    for (auto [from, count, threads, abstract_mode] : {std::tuple{0, 330, 2u, false}, std::tuple{100, 50, 1u, true},
+                                                       std::tuple{7, 300, 2u, true}, std::tuple{29, 301, 0u, false}}) {
+      index.compute_many(all_qs.subspan(from, count), reused, threads, abstract_mode);
+      ASSERT_EQ(reused.size(), static_cast<std::size_t>(count));
+      for (int i = 0; i < count; ++i) {
+        EXPECT_EQ(reused[i].abstract, abstract_mode);
+        expect_same_polygon(index.compute(qs[from + i]), reused[i], !abstract_mode,
+                            name + " reused, query " + std::to_string(from + i) + " threads " + std::to_string(threads));
+      }
+    }
   }
   // A query outside free space: the first one's error, after every thread has finished.
   const auto env = generators::office(2, 2);
@@ -207,6 +269,14 @@ TEST(Visibility, ComputeManyEqualsSequentialCompute) {
   } catch (const preimage::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("(-1, -1)"), std::string::npos) << e.what();
   }
+  std::vector<VisibilityPolygon> reused;
+  try {
+    index.compute_many(qs, reused, 2);
+    ADD_FAILURE() << "no error for a query outside free space (reused output)";
+  } catch (const preimage::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("(-1, -1)"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(reused[0].location.kind, Location::Kind::Interior) << "the other queries are computed";
 }
 
 // compute_many from several callers at once (the helper pool is shared by the process):

@@ -111,6 +111,12 @@ class VisibilityIndex {
   /// the InputError of the first such query (lowest index) is rethrown after all threads end.
   std::vector<VisibilityPolygon> compute_many(std::span<const Point> queries, unsigned threads = 0,
                                               bool abstract = false) const;
+  /// The same into `out` (resized to the number of queries), each polygon reusing its
+  /// vectors' capacity: a batch repeated over reused polygons allocates nothing once they
+  /// have grown, and its threads then share no allocator and take no page faults. Errors
+  /// as above; a failing query's polygon is left as it was.
+  void compute_many(std::span<const Point> queries, std::vector<VisibilityPolygon>& out, unsigned threads = 0,
+                    bool abstract = false) const;
 
   /// Does the closed segment pq lie in closed free space (grazing the boundary allowed)?
   /// The same answer as geometry::visible, by a walk through the triangles the segment
@@ -195,6 +201,11 @@ class VisibilityIndex {
     double cx, cy;
   };
   std::vector<HalfStep> steps_;
+  // The expansion's static filter bound (CGAL's Orientation_2 error bound with the largest
+  // coordinate differences any query in the bounding box can have): a determinant beyond
+  // it has a certain sign; otherwise CGAL decides. +inf when the box's extent is outside
+  // the range where that bound holds (every test then goes to CGAL).
+  double orient_eps_ = 0;
   std::vector<SlabEdge> slab_edges_;
   std::vector<std::uint32_t> slab_others_;
 };
