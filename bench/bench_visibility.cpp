@@ -13,6 +13,7 @@
 //   compute+exact-points/preimage   ... plus every vertex's lazy-exact coordinates
 //   batch-{1,2}-threads/<map>       compute_many over the map's 500 queries (real time)
 //   batch-speedup/<map>             both, interleaved: median 1-thread time / median 2-thread time
+//   batch-speedup-reused/<map>      the same into polygons reused across batches (no allocation)
 // Breakdown per query: locate = locate/, expand = abstract - locate, output = compute -
 // abstract. Counters: allocs_per_query (global operator new in this binary, steady state),
 // preprocess_ms (building the index, once), vertices, out_vertices.
@@ -185,18 +186,30 @@ void bm_batch(benchmark::State& state, const std::string& name, unsigned threads
 // The two batch runs interleaved in one loop (1 thread, then 2, each timed in real time),
 // so a load change on the machine hits both alike: speedup = the median over the pairs of
 // 1-thread time / 2-thread time; best_speedup = best over best (the quietest moments).
-void bm_batch_speedup(benchmark::State& state, const std::string& name) {
+// By value (compute_many returning new polygons) or, `reused`, into polygons kept across
+// iterations (one set per thread count), where the batch allocates nothing once grown:
+// allocs_per_batch counts global operator new over the timed iterations after the first.
+void bm_batch_speedup(benchmark::State& state, const std::string& name, bool reused) {
   Case& c = get_case(name);
   std::vector<Point> qs;
   for (const auto& q : c.queries) qs.push_back(q.p);
   std::vector<double> one, two;
+  std::vector<VisibilityPolygon> kept[2];
+  std::size_t allocs = 0, counted = 0;
   for (auto _ : state) {
     for (unsigned threads : {1u, 2u}) {
+      const std::size_t a0 = g_allocations.load();
       const auto t0 = std::chrono::steady_clock::now();
-      auto all = c.ours->compute_many(qs, threads);
-      benchmark::DoNotOptimize(all.data());
+      if (reused) {
+        c.ours->compute_many(qs, kept[threads - 1], threads);
+        benchmark::DoNotOptimize(kept[threads - 1].data());
+      } else {
+        auto all = c.ours->compute_many(qs, threads);
+        benchmark::DoNotOptimize(all.data());
+      }
       const double us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
       (threads == 1 ? one : two).push_back(us);
+      if (one.size() > 1) allocs += g_allocations.load() - a0, ++counted;
     }
   }
   auto median = [](std::vector<double> v) {
@@ -209,6 +222,7 @@ void bm_batch_speedup(benchmark::State& state, const std::string& name) {
   state.counters["us_2_threads"] = median(two);
   state.counters["speedup"] = median(ratio);
   state.counters["best_speedup"] = two.empty() ? 0 : *std::min_element(one.begin(), one.end()) / *std::min_element(two.begin(), two.end());
+  state.counters["allocs_per_batch"] = counted ? static_cast<double>(allocs) / static_cast<double>(counted) : 0;
 }
 
 void bm_compute_exact_points(benchmark::State& state, const std::string& name) {
@@ -254,7 +268,8 @@ void register_all() {
     reg("compute+exact-points/reference/", bm_reference, name);
     reg("batch-1-thread/", bm_batch, name, 1u)->UseRealTime();
     reg("batch-2-threads/", bm_batch, name, 2u)->UseRealTime();
-    reg("batch-speedup/", bm_batch_speedup, name)->UseRealTime();
+    reg("batch-speedup/", bm_batch_speedup, name, false)->UseRealTime();
+    reg("batch-speedup-reused/", bm_batch_speedup, name, true)->UseRealTime();
   }
 }
 

@@ -6,12 +6,14 @@
 // -DREUSED times compute(q, out) into one polygon (not in 73df79e); without it compute(q)
 // by value. `times gen MAP...` writes 500 interior queries per map (uniform in the box,
 // fixed seed) to $PREIMAGE_QUERIES (default /tmp), `times time MAP...` prints
-// "map us_per_query checksum" (the checksum, of the output sizes, must agree).
+// "map us_per_query checksum" (the checksum, of the output sizes, must agree). Time is the
+// thread's CPU time (as the issue measured), which leaves out time the virtual machine
+// takes the core away; wall time on this machine varied up to 1.7x between rounds.
 #include <preimage/geometry/generators.hpp>
 #include <preimage/geometry/visibility.hpp>
 #include <preimage/geometry/queries.hpp>
 #include <preimage/scene/import.hpp>
-#include <chrono>
+#include <ctime>
 #include <cstdio>
 #include <fstream>
 #include <functional>
@@ -23,6 +25,11 @@ namespace gen = preimage::geometry::generators;
 #include <cstdlib>
 std::string env_or(const char* k, const char* d) { const char* v = std::getenv(k); return v ? v : d; }
 std::string fp(const char* n) { return env_or("PREIMAGE_EXAMPLES", "examples") + "/floorplans/" + n; }
+double thread_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
 int main(int argc, char** argv) {
   std::map<std::string, std::function<Environment()>> maps = {
       {"houseexpo-0000", [] { return *preimage::scene::import_houseexpo(fp("house_expo_room_0000.json")).environment; }},
@@ -62,7 +69,7 @@ int main(int argc, char** argv) {
     std::size_t sum = 0;
     for (auto& q : qs) sum += vis.compute(q).vertices.size();
     const int reps = std::max<int>(1, static_cast<int>(200000 / (env.num_vertices() * qs.size() / 100 + 1)));
-    auto t0 = std::chrono::steady_clock::now();
+    const double t0 = thread_seconds();
 #ifdef REUSED
     VisibilityPolygon out;
     for (int r = 0; r < reps; ++r)
@@ -71,7 +78,7 @@ int main(int argc, char** argv) {
     for (int r = 0; r < reps; ++r)
       for (auto& q : qs) sum += vis.compute(q).vertices.size();
 #endif
-    auto t1 = std::chrono::steady_clock::now();
-    std::printf("%s %.4f %zu\n", name.c_str(), std::chrono::duration<double, std::micro>(t1 - t0).count() / (reps * qs.size()), sum % 1000);
+    const double t1 = thread_seconds();
+    std::printf("%s %.4f %zu\n", name.c_str(), 1e6 * (t1 - t0) / (reps * qs.size()), sum % 1000);
   }
 }
