@@ -877,7 +877,7 @@ VisScratch& vis_scratch() {
 }  // namespace
 
 // A polygon returned by value is computed into this thread's reused polygon and then
-// copied out with exactly sized vectors: compute_at's reservation (twice the piece count)
+// copied out with exactly sized vectors: compute_at's working size (twice the piece count)
 // would otherwise be allocated, and its pages touched, for every result.
 namespace {
 VisibilityPolygon& vis_result_scratch() {
