@@ -95,28 +95,28 @@ TEST(Visibility, MatchesCgalAtExtremeScales) {
 
 // Queries within rounding of the line through two vertices a and b, beyond b: seen from
 // there, b and a lie in one direction (b may hide a or graze it), and their determinant is
-// far below the static bound, so CGAL decides it.
-// Unsnapped coordinates (full mantissas), so a determinant's double sign can be wrong there.
+// far below the static bound, so CGAL decides it. Maps with unsnapped coordinates (full
+// mantissas), where the double sign of such a determinant can be wrong.
 TEST(Visibility, NearlyCollinearQueriesMatchCgal) {
   for (const Environment& env : {generators::random_environment(200, 5, 41), generators::office(3, 3)}) {
-  VisibilityIndex ours(env);
-  CgalVisibility cgal(env);
-  std::mt19937_64 rng(5);
-  std::uniform_int_distribution<std::size_t> V(0, env.num_vertices() - 1);
-  std::uniform_real_distribution<double> T(1.02, 2.0);  // q beyond b: sees b and a in one direction
-  int compared = 0, tries = 0;
-  while (compared < 300 && ++tries < 100000) {
-    const Point& a = env.vertex(V(rng));
-    const Point& b = env.vertex(V(rng));
-    const double t = T(rng);
-    const Point q(a.x() + t * (b.x() - a.x()), a.y() + t * (b.y() - a.y()));
-    const Location loc = locate(env, q);
-    if (!loc.in_free_space()) continue;
-    EXPECT_EQ(canonical_cycle(ours.compute(q).points()), canonical_cycle(cgal.compute(q, loc)))
-        << "query " << format_point(q) << " on the line through " << format_point(a) << " and " << format_point(b);
-    ++compared;
-  }
-  EXPECT_EQ(compared, 300);
+    VisibilityIndex ours(env);
+    CgalVisibility cgal(env);
+    std::mt19937_64 rng(5);
+    std::uniform_int_distribution<std::size_t> V(0, env.num_vertices() - 1);
+    std::uniform_real_distribution<double> T(1.02, 2.0);  // q beyond b: sees b and a in one direction
+    int compared = 0, tries = 0;
+    while (compared < 300 && ++tries < 100000) {
+      const Point& a = env.vertex(V(rng));
+      const Point& b = env.vertex(V(rng));
+      const double t = T(rng);
+      const Point q(a.x() + t * (b.x() - a.x()), a.y() + t * (b.y() - a.y()));
+      const Location loc = locate(env, q);
+      if (!loc.in_free_space()) continue;
+      EXPECT_EQ(canonical_cycle(ours.compute(q).points()), canonical_cycle(cgal.compute(q, loc)))
+          << "query " << format_point(q) << " on the line through " << format_point(a) << " and " << format_point(b);
+      ++compared;
+    }
+    EXPECT_EQ(compared, 300);
   }
 }
 
