@@ -4,32 +4,20 @@
 // median and best over 30 interleaved pairs of 1-thread/2-thread runs per map:
 //   g++ -std=c++20 -O2 -DNDEBUG -I include bench/before_after/batch_ceiling.cpp \
 //       build/libpreimage.a -lpolyclipping -lgmp -lmpfr -pthread -o batch_ceiling
-//   ./batch_ceiling QUERIES MAP...   (from the repository root; QUERIES per batch, e.g. 500)
-#include <preimage/geometry/generators.hpp>
+//   ./batch_ceiling QUERIES MAP...   (QUERIES per batch, e.g. 500; floor plans as in maps.hpp)
 #include <preimage/geometry/visibility.hpp>
 #include <preimage/geometry/queries.hpp>
-#include <preimage/scene/import.hpp>
+#include "maps.hpp"
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <functional>
-#include <map>
 #include <random>
 #include <thread>
 using namespace preimage::geometry;
-namespace gen = preimage::geometry::generators;
 double now() { return std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 double median(std::vector<double> v) { std::sort(v.begin(), v.end()); return v[v.size() / 2]; }
 int main(int argc, char** argv) {
-  std::map<std::string, std::function<Environment()>> maps = {
-      {"houseexpo-0000", [] { return *preimage::scene::import_houseexpo("examples/floorplans/house_expo_room_0000.json").environment; }},
-      {"houseexpo-1451", [] { return *preimage::scene::import_houseexpo("examples/floorplans/house_expo_room_1451.json").environment; }},
-      {"office-3x3", [] { return gen::office(3, 3); }},
-      {"office-5x5", [] { return gen::office(5, 5); }},
-      {"comb-25", [] { return Environment::make(gen::comb(25), {}); }},
-      {"comb-120", [] { return Environment::make(gen::comb(120), {}); }},
-      {"random-1000-h20", [] { return gen::random_environment(1000, 20, 1062); }},
-  };
+  const auto maps = before_after::maps();
   const std::size_t N = std::stoul(argv[1]);
   for (int a = 2; a < argc; ++a) {
     const Environment env = maps.at(argv[a])();

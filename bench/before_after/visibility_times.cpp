@@ -9,46 +9,29 @@
 // "map us_per_query checksum" (the checksum, of the output sizes, must agree). Time is the
 // thread's CPU time (as the issue measured), which leaves out time the virtual machine
 // takes the core away; wall time on this machine varied up to 1.7x between rounds.
-#include <preimage/geometry/generators.hpp>
 #include <preimage/geometry/visibility.hpp>
 #include <preimage/geometry/queries.hpp>
-#include <preimage/scene/import.hpp>
+#include "maps.hpp"
 #include <ctime>
 #include <cstdio>
 #include <fstream>
-#include <functional>
-#include <map>
 #include <random>
 #include <string>
 using namespace preimage::geometry;
-namespace gen = preimage::geometry::generators;
-#include <cstdlib>
-std::string env_or(const char* k, const char* d) { const char* v = std::getenv(k); return v ? v : d; }
-std::string fp(const char* n) { return env_or("PREIMAGE_EXAMPLES", "examples") + "/floorplans/" + n; }
 double thread_seconds() {
   timespec t{};
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 int main(int argc, char** argv) {
-  std::map<std::string, std::function<Environment()>> maps = {
-      {"houseexpo-0000", [] { return *preimage::scene::import_houseexpo(fp("house_expo_room_0000.json")).environment; }},
-      {"houseexpo-1451", [] { return *preimage::scene::import_houseexpo(fp("house_expo_room_1451.json")).environment; }},
-      {"office-3x3", [] { return gen::office(3, 3); }},
-      {"office-5x5", [] { return gen::office(5, 5); }},
-      {"comb-25", [] { return Environment::make(gen::comb(25), {}); }},
-      {"comb-120", [] { return Environment::make(gen::comb(120), {}); }},
-      {"random-1000-h20", [] { return gen::random_environment(1000, 20, 1062); }},
-      {"office-35x35", [] { return gen::office(35, 35); }},
-      {"comb-7500", [] { return Environment::make(gen::comb(7500), {}); }},
-  };
+  const auto maps = before_after::maps();
   const std::string mode = argv[1];  // gen | time
   for (int a = 2; a < argc; ++a) {
     const std::string name = argv[a];
     const Environment env = maps.at(name)();
     const VisibilityIndex vis(env);
     std::vector<Point> qs;
-    const std::string qf = env_or("PREIMAGE_QUERIES", "/tmp") + "/q-" + name + ".txt";
+    const std::string qf = before_after::env_or("PREIMAGE_QUERIES", "/tmp") + "/q-" + name + ".txt";
     if (mode == "gen") {
       std::mt19937 rng(7);
       const auto b = env.bbox();
