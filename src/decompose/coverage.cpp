@@ -318,16 +318,21 @@ CoverageReport plan_coverage(const Environment& env, const CoverageOptions& o) {
 
 CoverageMetrics measure_coverage(const Environment& env, const CoverageReport& rep, double cell) {
   CoverageMetrics m;
-  if (rep.path.size() < 2) return m;
+  if (rep.path.empty()) return m;
   const double w = rep.width, half = w / 2;
   const ConfigurationSpace cs(env, rep.robot_radius);
-  const auto comp = cs.component_of(rep.path.front()) ? cs.component_of(rep.path.front()) : cs.component_of(rep.path[1]);
+  const auto comp = cs.component_of(rep.path.front()) ? cs.component_of(rep.path.front())
+                    : rep.path.size() > 1        ? cs.component_of(rep.path[1])
+                                                 : std::nullopt;
   if (!comp) return m;
   const Environment& E = cs.components()[*comp];
   const VisibilityIndex index(E);
   const auto box = E.bbox();
-  // w/8 by default, coarser where that would take more than 4 million samples.
-  if (!(cell > 0)) cell = std::max(w / 8, std::sqrt((box.xmax() - box.xmin()) * (box.ymax() - box.ymin()) / 4e6));
+  // w/8 by default, but at least 256 samples across the box (a tool wider than the plan
+  // would otherwise leave no sample in it: issue 47), and coarser where that would take more
+  // than 4 million samples.
+  const double extent = std::max(box.xmax() - box.xmin(), box.ymax() - box.ymin());
+  if (!(cell > 0)) cell = std::max(std::min(w / 8, extent / 256), std::sqrt((box.xmax() - box.xmin()) * (box.ymax() - box.ymin()) / 4e6));
   const std::size_t nx = static_cast<std::size_t>(std::ceil((box.xmax() - box.xmin()) / cell)) + 1;
   const std::size_t ny = static_cast<std::size_t>(std::ceil((box.ymax() - box.ymin()) / cell)) + 1;
   if (nx * ny > 50'000'000) throw InputError("coverage metrics: the raster would need more than 5e7 samples; give a coarser cell");
@@ -371,8 +376,9 @@ CoverageMetrics measure_coverage(const Environment& env, const CoverageReport& r
     if (blo <= bhi) lo = std::min(lo, blo), hi = std::max(hi, bhi);
   };
   const double inner = std::max(0.0, half - cell / 2);
-  for (std::size_t seg = 0; seg + 1 < rep.path.size(); ++seg) {
-    const Point &a = rep.path[seg], &b = rep.path[seg + 1];
+  // A path of one point is the tool standing still: the disc of radius w/2 around it.
+  for (std::size_t seg = 0; seg + 1 < std::max<std::size_t>(rep.path.size(), 2); ++seg) {
+    const Point &a = rep.path[seg], &b = rep.path[std::min(seg + 1, rep.path.size() - 1)];
     const std::uint32_t stamp = static_cast<std::uint32_t>(seg);
     const long j0 = std::max(0L, static_cast<long>(std::floor((std::min(a.y(), b.y()) - half - box.ymin()) / cell)));
     const long j1 = std::min<long>(static_cast<long>(ny) - 1, static_cast<long>(std::ceil((std::max(a.y(), b.y()) + half - box.ymin()) / cell)));
@@ -399,6 +405,10 @@ CoverageMetrics measure_coverage(const Environment& env, const CoverageReport& r
     if (!target[id]) continue;
     ++total, once += covered[id], twice += visits[id] > 1;
   }
+  // No sample in the free space: a fraction of nothing is no answer (refuse, never print 0).
+  if (total == 0)
+    throw InputError("coverage metrics: no raster sample (cell " + geometry::format_number(cell) +
+                     ") falls in the free space; give a finer cell");
   m.samples = total;
   m.covered_fraction = total ? static_cast<double>(once) / static_cast<double>(total) : 0;
   m.overlap = total ? static_cast<double>(twice) / static_cast<double>(total) : 0;

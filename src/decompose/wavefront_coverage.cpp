@@ -159,7 +159,15 @@ CoverageReport plan_wavefront(const Planning& P) {
       laps += !first;
     }
   }
-  if (laps == 0) throw InputError("coverage: no wave front fits in the free space at this width");
+  // No front fits: the tool standing at the anchor is the whole path when its disc holds
+  // every vertex of the free space, hence (a disc is convex) all of it; decided exactly.
+  if (laps == 0) {
+    const geometry::ExactFT r2 = geometry::ExactFT(w / 2) * geometry::ExactFT(w / 2);
+    const auto anchor = geometry::to_exact(*P.start);
+    for (std::size_t v = 0; v < P.E.num_vertices(); ++v)
+      if (CGAL::compare_squared_distance(anchor, geometry::to_exact(P.E.vertex(v)), r2) == CGAL::LARGER)
+        throw InputError("coverage: no wave front fits in the free space at this width");
+  }
 
   CoverageReport rep;
   finish_path(P, std::move(path), rep);

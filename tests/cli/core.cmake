@@ -261,3 +261,14 @@ cli_test(cover_online_obstacles_starting_on_one_slice_isomorphic 0 "offline bous
 cli_test(cover_online_wide_tool fail "^preimage: --width 0.5: online coverage needs 0 < w <= 2r = 0.4" - cover ${EXAMPLES}/gallery.json --radius 0.2 --width 0.5 --online)
 cli_test(cover_online_bad_sensors fail "^preimage: --sensors 10: the ring needs a multiple of 4 sensors" - cover ${EXAMPLES}/gallery.json --radius 0.2 --online --sensors 10)
 cli_test(cover_online_flags_need_online fail "^preimage: --sensors/--range/--noise/--raster: only with --online" - cover ${EXAMPLES}/gallery.json --radius 0.2 --noise 0.1)
+# A tool wider than the plan (issue 47): the metrics' raster had no sample in the free space and
+# said "covered 0%" while the path covered everything; brushfire's path is the start alone and
+# wave-front refused. Every pattern must now report the whole configuration space covered.
+foreach(pattern boustrophedon brushfire wavefront spiral spike concentric squarel)
+  cli_test(cover_huge_width_metrics_${pattern} 0 "covered 100% of the configuration space" -
+           cover ${EXAMPLES}/gallery.json --width 1e12 --pattern ${pattern})
+endforeach()
+cli_test(cover_huge_width_wavefront_anchor_alone 0 "wavefront pattern: length 0 \\(transits 0. bound [0-9.]+\\), 0 laps" -
+         cover ${EXAMPLES}/gallery.json --width 1e3 --pattern wavefront --start 1,1)
+cli_test(cover_wide_wavefront_still_needs_fronts 0 "covered (99\\.[5-9][0-9]*|100)% of the configuration space" -
+         cover ${EXAMPLES}/gallery.json --width 8 --pattern wavefront --start 0.5,7.5)

@@ -208,6 +208,27 @@ TEST(Coverage, MetricsAgreeWithTheRasterOracle) {
   EXPECT_LT(m.overlap, 0.5);
 }
 
+TEST(Coverage, MetricsOfAToolWiderThanThePlan) {
+  // Issue 47: at --width 1e12 the raster's cell was w/8, so no sample fell in the plan and
+  // the metrics said 0% covered. Now at least 256 samples span the box, a one-point path is
+  // the disc around it, and a raster with no sample in the free space is refused.
+  CoverageOptions o;
+  o.width = 1e12, o.robot_radius = 0.3, o.angle_deg = 0.0;
+  auto rep = decompose::plan_coverage(gallery, o);
+  const auto m = decompose::measure_coverage(gallery, rep);
+  EXPECT_GT(m.samples, 1000u);
+  EXPECT_EQ(m.covered_fraction, 1.0);
+  rep.path.resize(1);  // the tool standing at the first point still covers everything
+  EXPECT_EQ(decompose::measure_coverage(gallery, rep).covered_fraction, 1.0);
+  o.width = 0.6;  // a point tool of width 0.6 standing still covers a disc of it: about 0.28 / 75
+  auto small = decompose::plan_coverage(gallery, o);
+  small.path.resize(1);
+  const auto ms = decompose::measure_coverage(gallery, small, 0.05);
+  EXPECT_GT(ms.covered_fraction, 0.0);
+  EXPECT_LT(ms.covered_fraction, 0.01);
+  EXPECT_THROW(decompose::measure_coverage(gallery, small, 1e6), InputError);  // no sample inside
+}
+
 TEST(Coverage, HouseExpoFixtureStaysInsideTheConfigurationSpace) {
   // Issue 24: at width 0.3 the path passed outside the boundary by up to 5 mm.
   for (const char* name : {"house_expo_room_0000.json", "house_expo_room_1451.json"}) {
