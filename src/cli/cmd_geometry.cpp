@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
-// preimage validate | import | render (visibility: cmd_visibility.cpp)
+// preimage validate | import | export | render (visibility: cmd_visibility.cpp)
 #include "common.hpp"
 
 #include <preimage/error.hpp>
 #include <preimage/geometry/general_position.hpp>
 #include <preimage/geometry/visibility.hpp>
 #include <preimage/render/figures.hpp>
+#include <preimage/scene/geojson.hpp>
 #include <preimage/scene/import.hpp>
+#include <preimage/scene/wkt.hpp>
 
+#include <fstream>
 #include <iostream>
 
 namespace preimage::cli {
@@ -86,6 +89,24 @@ void run_import(const std::string& in, const std::string& from, const std::strin
   std::cout << "\n";
 }
 
+// The environment as GIS tools read it: GeoJSON (one Feature named after the scene) or WKT.
+// Both read back through `import` to the same environment (coordinates round-trip exactly).
+void run_export(const std::string& in, const std::string& to, const std::string& out) {
+  const scene::Scene s = scene::load_scene(in);
+  const auto& env = s.require_environment();
+  std::string text;
+  if (to == "geojson") text = scene::GeoJsonWriter().environment(env, {{"name", s.name}}).json().dump() + "\n";
+  else if (to == "wkt") text = scene::to_wkt(env) + "\n";
+  else throw InputError("--to: unknown format '" + to + "' (expected geojson or wkt)");
+  if (out.empty() || out == "-") {
+    std::cout << text;
+    return;
+  }
+  std::ofstream f(out, std::ios::binary);
+  if (!(f << text) || !f.flush()) throw InputError(out + ": cannot write file");
+  std::cout << "wrote " << out << ": " << count_of(env.num_vertices(), "vertex", "vertices") << ", " << count_of(env.num_holes(), "obstacle") << "\n";
+}
+
 void run_render(const std::string& path, const std::string& out, bool triangulation) {
   const scene::Scene s = scene::load_scene(path);
   render::SvgCanvas canvas(render::scene_box(s));
@@ -125,6 +146,17 @@ void add_geometry_commands(CLI::App& app) {
                   "Replace holes that overlap (share an edge, cross, nest) by their union, snapped to a power-of-two grid "
                   "2^-49 of the largest coordinate (without it they are an error naming both; holes touching at a vertex are accepted either way)");
     cmd->callback([=] { run_import(*in, *from, *out, *merge); });
+  }
+  {
+    auto* cmd = app.add_subcommand("export", "Write a scene's environment as GeoJSON or WKT (reads back through import)");
+    set_examples(cmd, {"preimage export examples/gallery.json --to geojson -o gallery.geojson", "preimage export examples/pursuit/pillar.json --to wkt"});
+    auto in = std::make_shared<std::string>();
+    auto to = std::make_shared<std::string>();
+    auto out = std::make_shared<std::string>();
+    cmd->add_option("scene", *in, "Scene JSON file")->required();
+    cmd->add_option("--to", *to, "Output format: geojson | wkt")->required();
+    cmd->add_option("-o,--output", *out, "File to write (default: standard output)");
+    cmd->callback([=] { run_export(*in, *to, *out); });
   }
   {
     auto* cmd = app.add_subcommand("render", "Draw a scene to SVG");

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// WKT POLYGON / MULTIPOLYGON (one polygon) in: a small recursive-descent reader.
+// WKT POLYGON / MULTIPOLYGON (one polygon) in: a small recursive-descent reader; POLYGON out.
 #include <preimage/error.hpp>
 #include <preimage/scene/import.hpp>
+#include <preimage/scene/wkt.hpp>
 
 #include <cctype>
 #include <charconv>
@@ -128,5 +129,27 @@ Scene import_wkt(const std::string& text, const std::string& source, const Impor
 }
 
 Scene import_wkt(const std::string& path, const ImportOptions& options) { return import_wkt(read_file(path), path, options); }
+
+std::string to_wkt(const geometry::Environment& env) {
+  std::string out = "POLYGON (";
+  auto number = [&out](double v) {
+    char buf[32];
+    // std::to_chars without a precision: the shortest text that reads back to v.
+    const auto end = std::to_chars(buf, buf + sizeof buf, v + 0.0).ptr;
+    out.append(buf, end);
+  };
+  for (std::size_t r = 0; r < env.num_rings(); ++r) {
+    out += r ? ", (" : "(";
+    for (std::size_t v = env.ring_begin(r); v <= env.ring_end(r); ++v) {  // the first vertex again closes the ring
+      const auto& p = env.vertex(v < env.ring_end(r) ? v : env.ring_begin(r));
+      if (v > env.ring_begin(r)) out += ", ";
+      number(p.x());
+      out += ' ';
+      number(p.y());
+    }
+    out += ')';
+  }
+  return out + ")";
+}
 
 }  // namespace preimage::scene
