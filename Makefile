@@ -8,7 +8,8 @@ JOBS       ?= $(shell nproc)
 BUILD_TYPE ?= Release
 CMAKE_ARGS ?=
 
-.PHONY: all deps deps-test build demo test bench install clean test-sanitize test-sanitize-ci fuzz
+.PHONY: all deps deps-test build demo test test-build bench install clean test-sanitize test-sanitize-ci \
+        test-sanitize-ci-build fuzz fuzz-long
 
 all: build
 
@@ -31,9 +32,11 @@ demo: build
 	$(BUILD)/preimage demo --out $(BUILD)/demo
 
 # Everything (tests included), then the whole suite.
-test: deps-test
+test-build: deps-test
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DPREIMAGE_BUILD_TESTS=ON $(CMAKE_ARGS)
 	cmake --build $(BUILD) -j $(JOBS)
+
+test: test-build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 # Benchmarks build in Release in their own tree; results go to build/bench/*.json.
@@ -50,7 +53,7 @@ bench: deps-test
 # AddressSanitizer + UndefinedBehaviorSanitizer on everything and the libFuzzer harnesses
 # of tests/fuzz: the sanitizer suite and the fuzzers share its (slow) library build.
 SAN_TESTS    = preimage_cli preimage_large_scenes
-FUZZERS      = scene_json houseexpo visilibity geojson wkt beam_word beam_stream laser_log
+FUZZERS      = scene_json houseexpo visilibity geojson wkt export beam_word beam_stream laser_log
 SAN_ENV      = ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 
 $(SAN_BUILD)/CMakeCache.txt:
@@ -64,21 +67,32 @@ test-sanitize: $(SAN_BUILD)/CMakeCache.txt
 	cmake --build $(SAN_BUILD) -j $(JOBS)
 	cd $(SAN_BUILD) && $(SAN_ENV) ctest --output-on-failure -j $(JOBS) -E '^install\.'
 
-# CI's share: every command-line test (each module's commands, the bad-input cases, the
-# demo, the 10^5-vertex scenes) under the sanitizers; the unit-test binary is not built.
-# Left out: cli.doc_examples and cli.help_examples, which run again the commands of the
-# docs and of --help (the module tests run the same commands) and took 830 of the 1,780 s.
-test-sanitize-ci: $(SAN_BUILD)/CMakeCache.txt
+# CI's share (docs/reliability.md): for every command the cheapest command-line test that
+# must succeed and the cheapest that must fail (scripts/sanitize-subset, costs from the
+# Release suite's last run in $(BUILD)), and the generator of the 10^5-vertex scenes; the
+# unit-test binary is not built. `make test-sanitize` runs everything.
+test-sanitize-ci-build: $(SAN_BUILD)/CMakeCache.txt
 	cmake --build $(SAN_BUILD) -j $(JOBS) --target $(SAN_TESTS)
-	cd $(SAN_BUILD) && $(SAN_ENV) ctest --output-on-failure -j $(JOBS) -R '^(cli\.|large\.)' \
-	  -E '^cli\.(doc|help)_examples$$'
+
+test-sanitize-ci: test-sanitize-ci-build
+	cd $(SAN_BUILD) && $(SAN_ENV) ctest --output-on-failure -j $(JOBS) \
+	  -R "$$($(CURDIR)/scripts/sanitize-subset . $(abspath $(BUILD)))"
 
 # Each harness for FUZZ_SECONDS on a corpus seeded from tests/fixtures and examples,
-# copied to $(FUZZ_DIR) (never written into the repository). A crash leaves its input in
-# $(FUZZ_DIR)/artifacts and fails the target.
+# copied to $(FUZZ_DIR) (never written into the repository), FUZZ_PARALLEL at a time. A
+# crash leaves its input in $(FUZZ_DIR)/artifacts and fails the target.
+FUZZ_PARALLEL ?= 1
 fuzz: $(SAN_BUILD)/CMakeCache.txt
 	cmake --build $(SAN_BUILD) -j $(JOBS) --target $(addprefix fuzz_,$(FUZZERS))
-	scripts/fuzz-run $(SAN_BUILD) $(FUZZ_DIR) $(FUZZ_SECONDS) $(FUZZERS)
+	FUZZ_PARALLEL=$(FUZZ_PARALLEL) scripts/fuzz-run $(SAN_BUILD) $(FUZZ_DIR) $(FUZZ_SECONDS) $(FUZZERS)
+
+# Beyond CI: each harness to FUZZ_RUNS executions or FUZZ_LONG_SECONDS, whichever comes
+# first, continuing from the corpus earlier runs left in $(FUZZ_DIR).
+FUZZ_RUNS ?= 10000000
+FUZZ_LONG_SECONDS ?= 3600
+fuzz-long: $(SAN_BUILD)/CMakeCache.txt
+	cmake --build $(SAN_BUILD) -j $(JOBS) --target $(addprefix fuzz_,$(FUZZERS))
+	FUZZ_PARALLEL=$(FUZZ_PARALLEL) FUZZ_RUNS=$(FUZZ_RUNS) scripts/fuzz-run $(SAN_BUILD) $(FUZZ_DIR) $(FUZZ_LONG_SECONDS) $(FUZZERS)
 
 install: build
 	cmake --install $(BUILD)
