@@ -27,6 +27,7 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 namespace preimage::cli {
@@ -273,7 +274,7 @@ void run_completeness(const CompletenessFlags& F) {
   // A status line while a terminal watches (redrawn between the robot's actions too, so a
   // large polygon shows it is alive), and a running tally on stderr every 100 polygons, so
   // that a long run can be read (or stopped) part way.
-  Progress progress("wallfollow completeness", "polygons");
+  std::optional<Progress> progress(std::in_place, "wallfollow completeness", "polygons");
   auto report_progress = [&] {
     if (t.tried % 100 != 0) return;
     std::ostringstream o;
@@ -281,10 +282,10 @@ void run_completeness(const CompletenessFlags& F) {
       << " over budget; Strategy 2 solves " << t.gap << ", Strategy 6 " << t.none << "; Strategy 6 plans not clearing "
       << t.none_wrong << "/" << t.none_checked << "; free pursuer missing " << t.free_missing << "; solved by 2 only:";
     for (auto& c : counter) o << " " << c["seed"].get<std::uint64_t>();
-    progress.note(o.str());
+    progress->note(o.str());
   };
   for (std::size_t k = 0; k < F.polygons; ++k, report_progress()) {
-    progress(k, F.polygons);
+    (*progress)(k, F.polygons);
     const std::uint64_t seed = F.seed + k;
     const std::size_t n = F.min_vertices + static_cast<std::size_t>(seed % (F.max_vertices - F.min_vertices + 1));
     ++t.tried;
@@ -307,7 +308,7 @@ void run_completeness(const CompletenessFlags& F) {
     PursuitOptions o;
     o.max_states = F.max_states;
     o.deadline = deadline;
-    o.on_action = [&] { progress(k, F.polygons); };
+    o.on_action = [&] { (*progress)(k, F.polygons); };
     auto over_budget = [&](const char* strategy, const PursuitReport& r) {
       ++t.budget;
       over.push_back({{"seed", seed}, {"vertices", n}, {"strategy", strategy}, {"limit", r.out_of_time ? "time" : "states"}});
@@ -352,6 +353,7 @@ void run_completeness(const CompletenessFlags& F) {
       }
     }
   }
+  progress.reset();  // erases the status line before the tally
   const std::size_t used = t.tried - t.rejected - t.budget;
   if (F.as_json)
     return print_json({{"polygons", t.tried}, {"rejected_general_position", t.rejected}, {"budget", t.budget}, {"over_budget", over},
