@@ -441,7 +441,7 @@ void add_wallfollow_commands(CLI::App& app) {
         ->check(number_in(0, 1e9))
         ->capture_default_str();
     c2->add_flag("--check-all", F->check_all, "Also check Strategy 2's plans (Strategy 6's always are)");
-    c2->add_option("--save", F->save, "Write every counter-example scene into this directory");
+    c2->add_option("--save", F->save, "Write every counter-example scene into this directory (created if missing; checked before any polygon)");
     add_json_flag(c2, F->as_json, "JSON output");
     c2->callback([F] { run_completeness(*F); });
   }
