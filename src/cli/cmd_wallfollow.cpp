@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // preimage wallfollow simulate | count | cut-ordering | pursue | completeness
 #include "common.hpp"
+#include "progress.hpp"
 #include "wallfollow_pursuit_run.hpp"
 
 #include <preimage/error.hpp>
@@ -17,11 +18,17 @@
 #include <preimage/wallfollow/robot.hpp>
 #include <preimage/wallfollow/sensors.hpp>
 
+#include <cerrno>
+#include <chrono>
 #include <cmath>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <sstream>
 
 namespace preimage::cli {
 namespace {
@@ -230,59 +237,93 @@ void run_pursue(const PursueFlags& F) {
 // ---------------------------------------------------------------- completeness
 struct CompletenessFlags {
   std::size_t polygons = 1000, min_vertices = 6, max_vertices = 40, max_states = 5'000'000;
+  double time_limit = 0;  // seconds per polygon; 0: none
   std::uint64_t seed = 1;
   std::string save;
   bool as_json = false, check_all = false;
 };
 
+// --save DIR exists (created if missing) and takes a file, before any polygon is tried.
+void prepare_save_dir(const std::string& dir) {
+  try {
+    make_dirs(dir);
+  } catch (const InputError& e) {
+    throw InputError(std::string("--save: ") + e.what());
+  }
+  if (!std::filesystem::is_directory(dir)) throw InputError("--save: " + dir + ": not a directory");
+  const std::string probe = dir + "/.preimage-save-probe";
+  if (!std::ofstream(probe)) throw InputError("--save: " + dir + ": cannot write a file there (" + std::strerror(errno) + ")");
+  std::error_code ec;
+  std::filesystem::remove(probe, ec);
+}
+
 void run_completeness(const CompletenessFlags& F) {
   if (F.min_vertices > F.max_vertices) throw InputError("--min-vertices: more than --max-vertices");
+  if (!F.save.empty()) prepare_save_dir(F.save);
   struct Tally {
     std::size_t tried = 0, rejected = 0, gap = 0, none = 0, both = 0, budget = 0, none_checked = 0, none_wrong = 0,
-                gap_checked = 0, gap_wrong = 0, free_missing = 0;
+                gap_checked = 0, gap_wrong = 0, free_missing = 0, free_budget = 0;
   } t;
-  json counter = json::array();
+  json counter = json::array(), over = json::array();
   auto plan_clears = [](const geometry::Environment& env, Simulator& sim, const PursuitReport& rep) {
     const std::size_t from = sim.path().size() - 1;
     execute(sim, rep.plan);
     std::vector<geometry::ExactPoint> path(sim.path().begin() + static_cast<long>(from), sim.path().end());
     return pursuit::check_exact_paths(env, pursuit::ExactPaths{path}).cleared;
   };
-  // A running tally on stderr every 100 polygons, so that a long run can be read (or
-  // stopped) part way.
+  // A status line while a terminal watches (redrawn between the robot's actions too, so a
+  // large polygon shows it is alive), and a running tally on stderr every 100 polygons, so
+  // that a long run can be read (or stopped) part way.
+  std::optional<Progress> progress(std::in_place, "wallfollow completeness", "polygons");
   auto report_progress = [&] {
     if (t.tried % 100 != 0) return;
-    std::cerr << "completeness: " << t.tried << "/" << F.polygons << " tried, " << t.rejected << " rejected, " << t.budget
-              << " over budget; Strategy 2 solves " << t.gap << ", Strategy 6 " << t.none << "; Strategy 6 plans not clearing "
-              << t.none_wrong << "/" << t.none_checked << "; free pursuer missing " << t.free_missing << "; solved by 2 only:";
-    for (auto& c : counter) std::cerr << " " << c["seed"].get<std::uint64_t>();
-    std::cerr << std::endl;
+    std::ostringstream o;
+    o << "completeness: " << t.tried << "/" << F.polygons << " tried, " << t.rejected << " rejected, " << t.budget
+      << " over budget; Strategy 2 solves " << t.gap << ", Strategy 6 " << t.none << "; Strategy 6 plans not clearing "
+      << t.none_wrong << "/" << t.none_checked << "; free pursuer missing " << t.free_missing << "; solved by 2 only:";
+    for (auto& c : counter) o << " " << c["seed"].get<std::uint64_t>();
+    progress->note(o.str());
   };
   for (std::size_t k = 0; k < F.polygons; ++k, report_progress()) {
+    (*progress)(k, F.polygons);
     const std::uint64_t seed = F.seed + k;
     const std::size_t n = F.min_vertices + static_cast<std::size_t>(seed % (F.max_vertices - F.min_vertices + 1));
     ++t.tried;
+    // The time limit counts from here: the general-position checks below are not
+    // interrupted (n^2 log n), everything the robot does after them is.
+    Deadline deadline;
+    if (F.time_limit > 0)
+      deadline = std::chrono::steady_clock::now() +
+                 std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(F.time_limit));
     auto env = geometry::Environment::make(geometry::generators::random_simple_polygon(n, seed, 100.0), {});
+    Simulator s2(env, env.vertex(0), geometry::Vector(1, 0));
     try {
       require_general_position(env);
       true_cut_ordering(env);
-      Simulator probe(env, env.vertex(0), geometry::Vector(1, 0));
-      probe.enable(sensors_of(PursuitSensor::Gap));  // rejects bitangents ending at cut endpoints
+      s2.enable(sensors_of(PursuitSensor::Gap));  // rejects bitangents ending at cut endpoints
     } catch (const InputError&) {
       ++t.rejected;
       continue;
     }
     PursuitOptions o;
     o.max_states = F.max_states;
-    Simulator s2(env, env.vertex(0), geometry::Vector(1, 0));
-    s2.enable(sensors_of(PursuitSensor::Gap));
+    o.deadline = deadline;
+    o.on_action = [&] { (*progress)(k, F.polygons); };
+    auto over_budget = [&](const char* strategy, const PursuitReport& r) {
+      ++t.budget;
+      over.push_back({{"seed", seed}, {"vertices", n}, {"strategy", strategy}, {"limit", r.out_of_time ? "time" : "states"}});
+    };
     o.sensor = PursuitSensor::Gap;
     const auto r2 = pursue(s2, o);
+    if (r2.outcome == PursuitReport::Outcome::Budget) {
+      over_budget("2", r2);
+      continue;
+    }
     Simulator s6(env, env.vertex(0), geometry::Vector(1, 0));
     o.sensor = PursuitSensor::None;
     const auto r6 = pursue(s6, o);
-    if (r2.outcome == PursuitReport::Outcome::Budget || r6.outcome == PursuitReport::Outcome::Budget) {
-      ++t.budget;
+    if (r6.outcome == PursuitReport::Outcome::Budget) {
+      over_budget("6", r6);
       continue;
     }
     const bool p2 = r2.outcome == PursuitReport::Outcome::Plan, p6 = r6.outcome == PursuitReport::Outcome::Plan;
@@ -295,7 +336,11 @@ void run_completeness(const CompletenessFlags& F) {
       ++t.gap_checked;
       if (!plan_clears(env, s2, r2)) ++t.gap_wrong;
     }
-    if (p2 && pursuit::search(pursuit::ConservativeCells::build(env), 1).outcome != pursuit::SearchResult::Outcome::Plan) ++t.free_missing;
+    if (p2) {
+      const auto free = pursuit::search(pursuit::ConservativeCells::build(env), 1).outcome;
+      t.free_missing += free == pursuit::SearchResult::Outcome::NoPlan;
+      t.free_budget += free == pursuit::SearchResult::Outcome::Budget;
+    }
     if (p2 && !p6) {
       counter.push_back({{"seed", seed}, {"vertices", n}, {"gap_istates", r2.states}, {"none_istates", r6.states}});
       if (!F.save.empty()) {
@@ -308,21 +353,28 @@ void run_completeness(const CompletenessFlags& F) {
       }
     }
   }
+  progress.reset();  // erases the status line before the tally
   const std::size_t used = t.tried - t.rejected - t.budget;
   if (F.as_json)
-    return print_json({{"polygons", t.tried}, {"rejected_general_position", t.rejected}, {"budget", t.budget}, {"compared", used},
-                       {"strategy2_solves", t.gap}, {"strategy6_solves", t.none}, {"both", t.both},
+    return print_json({{"polygons", t.tried}, {"rejected_general_position", t.rejected}, {"budget", t.budget}, {"over_budget", over},
+                       {"compared", used}, {"strategy2_solves", t.gap}, {"strategy6_solves", t.none}, {"both", t.both},
                        {"strategy6_plans_checked", t.none_checked}, {"strategy6_plans_not_clearing", t.none_wrong},
                        {"strategy2_plans_checked", t.gap_checked}, {"strategy2_plans_not_clearing", t.gap_wrong},
-                       {"free_pursuer_missing", t.free_missing}, {"counterexamples", counter}});
+                       {"free_pursuer_missing", t.free_missing}, {"free_pursuer_budget", t.free_budget},
+                       {"counterexamples", counter}});
   std::cout << t.tried << " random polygons (" << F.min_vertices << "-" << F.max_vertices << " vertices, seeds " << F.seed << "-"
             << F.seed + F.polygons - 1 << "): " << t.rejected << " not in general position, " << t.budget
-            << " over --max-states; " << used << " compared\n"
-            << "Strategy 2 (gap sensor, complete) solves " << t.gap << "; Strategy 6 (no special sensor) solves " << t.none << "\n"
+            << " over budget; " << used << " compared\n";
+  for (auto& b : over)
+    std::cout << "budget exceeded: seed " << b["seed"].get<std::uint64_t>() << " (" << b["vertices"].get<std::size_t>()
+              << " vertices), Strategy " << b["strategy"].get<std::string>() << " over "
+              << (b["limit"] == "time" ? "--time-limit" : "--max-states") << "\n";
+  std::cout << "Strategy 2 (gap sensor, complete) solves " << t.gap << "; Strategy 6 (no special sensor) solves " << t.none << "\n"
             << "Strategy 6 plans checked: " << t.none_checked << ", not clearing: " << t.none_wrong << "\n";
   if (F.check_all) std::cout << "Strategy 2 plans checked: " << t.gap_checked << ", not clearing: " << t.gap_wrong << "\n";
-  std::cout << "solved by the wall-follower but not by the free pursuer of module pursuit: " << t.free_missing << "\n"
-            << counter.size() << " solved by Strategy 2 and not by Strategy 6";
+  std::cout << "solved by the wall-follower but not by the free pursuer of module pursuit: " << t.free_missing;
+  if (t.free_budget) std::cout << " (" << t.free_budget << " more where it ran out of I-states)";
+  std::cout << "\n" << counter.size() << " solved by Strategy 2 and not by Strategy 6";
   for (auto& c : counter) std::cout << (&c == &counter[0] ? ": seed " : ", ") << c["seed"].get<std::uint64_t>() << " (" << c["vertices"].get<std::size_t>() << " vertices)";
   std::cout << "\n";
 }
@@ -382,9 +434,14 @@ void add_wallfollow_commands(CLI::App& app) {
     c2->add_option("--seed", F->seed, "First seed (one polygon per seed)")->capture_default_str();
     add_count(c2, "--min-vertices", F->min_vertices, 4, 10'000, "Fewest vertices");
     add_count(c2, "--max-vertices", F->max_vertices, 4, 10'000, "Most vertices");
-    add_count(c2, "--max-states", F->max_states, 1, 1'000'000'000, "I-states per search before giving up (the polygon is skipped)");
+    add_count(c2, "--max-states", F->max_states, 1, 1'000'000'000, "I-states per search before giving up (the polygon is counted over budget)");
+    c2->add_option("--time-limit", F->time_limit,
+                   "Seconds per polygon for Strategies 2 and 6 (learning, exploring, searching) before giving up (the polygon is "
+                   "counted over budget); 0: none")
+        ->check(number_in(0, 1e9))
+        ->capture_default_str();
     c2->add_flag("--check-all", F->check_all, "Also check Strategy 2's plans (Strategy 6's always are)");
-    c2->add_option("--save", F->save, "Write every counter-example scene into this directory");
+    c2->add_option("--save", F->save, "Write every counter-example scene into this directory (created if missing; checked before any polygon)");
     add_json_flag(c2, F->as_json, "JSON output");
     c2->callback([F] { run_completeness(*F); });
   }

@@ -40,6 +40,12 @@ void Progress::operator()(std::size_t done, std::size_t total) {
   draw(what_ + ": " + std::to_string(done) + " of " + std::to_string(total) + (unit_.empty() ? "" : " " + unit_) + tail);
 }
 
+void Progress::note(const std::string& line) {
+  if (shown_) std::fprintf(stderr, "\r\033[K"), shown_ = false;
+  std::fprintf(stderr, "%s\n", line.c_str());
+  std::fflush(stderr);
+}
+
 void Progress::operator()(double fraction) {
   if (!due()) return;
   char line[32];

@@ -20,6 +20,9 @@ class Progress {
 
   void operator()(std::size_t done, std::size_t total);
   void operator()(double fraction);
+  /// Prints a line of its own on stderr (always, terminal or not), erasing the status line
+  /// first; the status is drawn again at the next update.
+  void note(const std::string& line);
 
  private:
   bool due();

@@ -46,7 +46,8 @@ std::string describe(const OrderingMap& m, const BitState& b) {
 }
 
 template <class Crossings>
-void search(const Position& start, const OrderingMap& m, Crossings&& crossings, std::size_t max_states, PursuitReport& rep) {
+void search(const Position& start, const OrderingMap& m, Crossings&& crossings, std::size_t max_states, const Deadline& deadline,
+            PursuitReport& rep) {
   const std::size_t a0 = m.active(start.at).size();
   CompoundState s0{std::vector<std::uint16_t>(a0), filter::ShadowLabels(a0, true)};
   for (std::size_t k = 0; k < a0; ++k) s0.compound[k] = static_cast<std::uint16_t>(k);
@@ -59,8 +60,9 @@ void search(const Position& start, const OrderingMap& m, Crossings&& crossings, 
           emit(u, BitState{*q, compound_transition(m, b.p.at, b.s, q->at, crossings(b.p, u, *q))});
         }
       },
-      [](const BitState& b) { return b.s.labels.all_clear(); }, max_states);
+      [](const BitState& b) { return b.s.labels.all_clear(); }, max_states, deadline);
   rep.outcome = r.outcome;
+  rep.out_of_time = r.out_of_time;
   rep.plan = r.plan;
   rep.states = r.states;
   rep.labels_along.clear();
@@ -70,7 +72,7 @@ void search(const Position& start, const OrderingMap& m, Crossings&& crossings, 
 }  // namespace
 
 void search_compounds(const Position& start, const OrderingMap& m, const std::vector<KnownBitangent>& bitangents,
-                      std::size_t max_states, PursuitReport& rep) {
+                      std::size_t max_states, PursuitReport& rep, const Deadline& deadline) {
   rep.bitangents = bitangents.size();
   rep.known = bitangents;
   // The crossings of each move depend on its ends only: decided once.
@@ -79,10 +81,11 @@ void search_compounds(const Position& start, const OrderingMap& m, const std::ve
     auto [it, fresh] = memo.try_emplace({from.at, to.at});
     if (fresh) it->second = crossings_of(m, bitangents, from.at, to.at);
     return it->second;
-  }, max_states, rep);
+  }, max_states, deadline, rep);
 }
 
-void bitangent_sensor_strategy(Navigator& nav, const OrderingMap& m, std::size_t max_states, PursuitReport& rep) {
+void bitangent_sensor_strategy(Navigator& nav, const OrderingMap& m, std::size_t max_states, const Deadline& deadline,
+                               PursuitReport& rep) {
   const std::size_t n = m.n();
   std::map<Motion, std::vector<RayCrossing>> table;
   std::set<std::pair<std::uint32_t, std::uint32_t>> pairs;
@@ -108,7 +111,7 @@ void bitangent_sensor_strategy(Navigator& nav, const OrderingMap& m, std::size_t
   rep.bitangents = pairs.size();
   search(nav.at(), m, [&](const Position& from, Action u, const Position&) -> const std::vector<RayCrossing>& {
     return table.at(motion_of(from, u));
-  }, max_states, rep);
+  }, max_states, deadline, rep);
 }
 
 }  // namespace preimage::wallfollow

@@ -47,7 +47,7 @@ filter::ShadowEvent compose(std::size_t before, const std::vector<filter::Shadow
 
 }  // namespace
 
-void gap_strategy(Navigator& nav, const OrderingMap& m, std::size_t max_states, PursuitReport& rep) {
+void gap_strategy(Navigator& nav, const OrderingMap& m, std::size_t max_states, const Deadline& deadline, PursuitReport& rep) {
   std::vector<long> gaps_at(m.size(), -1);
   auto note = [&](std::uint32_t k, std::size_t g) {
     if (gaps_at[k] >= 0 && gaps_at[k] != static_cast<long>(g))
@@ -70,11 +70,12 @@ void gap_strategy(Navigator& nav, const OrderingMap& m, std::size_t max_states, 
     if (e.after != static_cast<std::size_t>(gaps_at[to.at])) throw std::runtime_error("gap sensor: a motion ends with a wrong count");
     table->transitions.emplace(mo, filter::ShadowTransition(e));
   }
-  search_gap(nav.at(), m, *table, max_states, rep);
+  search_gap(nav.at(), m, *table, max_states, rep, deadline);
   rep.gap_table = std::move(table);
 }
 
-void search_gap(const Position& start_at, const OrderingMap& m, const GapTable& table, std::size_t max_states, PursuitReport& rep) {
+void search_gap(const Position& start_at, const OrderingMap& m, const GapTable& table, std::size_t max_states, PursuitReport& rep,
+                const Deadline& deadline) {
   const GapState start{start_at, filter::ShadowLabels(static_cast<std::size_t>(table.gaps_at.at(start_at.at)), true)};
   auto r = breadth_first<GapState, GapStateHash>(
       start,
@@ -85,8 +86,9 @@ void search_gap(const Position& start_at, const OrderingMap& m, const GapTable& 
           emit(u, GapState{*q, table.transitions.at(motion_of(s.p, u)).apply(s.labels)});
         }
       },
-      [](const GapState& s) { return s.labels.all_clear(); }, max_states);
+      [](const GapState& s) { return s.labels.all_clear(); }, max_states, deadline);
   rep.outcome = r.outcome;
+  rep.out_of_time = r.out_of_time;
   rep.plan = r.plan;
   rep.states = r.states;
   rep.labels_along.clear();

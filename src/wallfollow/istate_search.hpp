@@ -16,11 +16,13 @@ struct IStateSearch {
   std::vector<Action> plan;
   std::vector<State> along;  // the I-states after each plan action (start first)
   std::size_t states = 0;
+  bool out_of_time = false;  // Budget because the deadline passed
 };
 
-/// `next(s, emit)` calls emit(u, s') for each action u applicable in s; `goal(s)`.
+/// `next(s, emit)` calls emit(u, s') for each action u applicable in s; `goal(s)`. Gives
+/// up (Budget) with `max_states` I-states stored or, checked every 256, at `deadline`.
 template <class State, class Hash, class Next, class Goal>
-IStateSearch<State> breadth_first(const State& start, Next&& next, Goal&& goal, std::size_t max_states) {
+IStateSearch<State> breadth_first(const State& start, Next&& next, Goal&& goal, std::size_t max_states, const Deadline& deadline) {
   IStateSearch<State> r;
   std::vector<State> states{start};
   std::vector<long> parent{-1};
@@ -41,9 +43,11 @@ IStateSearch<State> breadth_first(const State& start, Next&& next, Goal&& goal, 
       finish(head);
       return r;
     }
-    if (states.size() >= max_states) {
+    const bool late = deadline && head % 256 == 0 && std::chrono::steady_clock::now() >= *deadline;
+    if (states.size() >= max_states || late) {
       r.states = states.size();
       r.outcome = PursuitReport::Outcome::Budget;
+      r.out_of_time = late;
       return r;
     }
     const State s = states[head];

@@ -125,7 +125,7 @@ void Simulator::enable(const Sensors& s) {
   sensors_ = s;
   if (!state_) state_ = std::make_unique<SensorState>(*env_);
   if ((s.gap || s.bitangent) && state_->lines.empty()) {
-    state_->lines = vertex_lines(*env_);
+    state_->lines = vertex_lines(state_->vis);
     state_->bitangents = bitangents(*env_);
     state_->cuts = true_cut_ordering(*env_);
     // Bitangent endpoints must not fall on cut endpoints (general position, V.A).

@@ -117,15 +117,20 @@ bool corresponds(const Environment& env, const ShadowArc& a, const ShadowArc& b)
   return false;
 }
 
-std::vector<VertexLine> vertex_lines(const Environment& env) {
+std::vector<VertexLine> vertex_lines(const geometry::VisibilityIndex& vis) {
+  // A walk through the triangles the segment crosses, from u's fan: geometry::visible's
+  // answer without its O(n) scan per pair (2,000 vertices: 15 s with the scan).
+  const Environment& env = vis.environment();
   std::vector<VertexLine> lines;
   for (std::uint32_t u = 0; u < env.num_vertices(); ++u) {
     if (!env.is_reflex(u)) continue;
     for (std::uint32_t w = 0; w < env.num_vertices(); ++w)
-      if (w != u && (!env.is_reflex(w) || w > u) && geometry::visible(env, env.vertex(u), env.vertex(w))) lines.push_back({u, w});
+      if (w != u && (!env.is_reflex(w) || w > u) && vis.visible_from_vertex(u, env.vertex(w))) lines.push_back({u, w});
   }
   return lines;
 }
+
+std::vector<VertexLine> vertex_lines(const Environment& env) { return vertex_lines(geometry::VisibilityIndex(env)); }
 
 namespace {
 

@@ -7,10 +7,11 @@
 namespace preimage::wallfollow {
 
 /// Strategy 2: explore every motion with the gap sensor, then search I_gap.
-void gap_strategy(Navigator& nav, const OrderingMap& m, std::size_t max_states, PursuitReport& rep);
+void gap_strategy(Navigator& nav, const OrderingMap& m, std::size_t max_states, const Deadline& deadline, PursuitReport& rep);
 
 /// Strategy 3: explore every motion with the bitangent sensor, then search I_bit.
-void bitangent_sensor_strategy(Navigator& nav, const OrderingMap& m, std::size_t max_states, PursuitReport& rep);
+void bitangent_sensor_strategy(Navigator& nav, const OrderingMap& m, std::size_t max_states, const Deadline& deadline,
+                               PursuitReport& rep);
 
 /// Strategy 4: the bitangents among the candidates and where their rays end, with the
 /// pebble visibility sensor. The robot ends holding the pebble.

@@ -38,6 +38,12 @@ cli_test(wallfollow_pursue_counterexample_none 0 "Strategy 6 finds no plan \\([0
          wallfollow pursue ${FIX}/wallfollow/s6_counterexample_28.json --sensor none)
 cli_test(wallfollow_pursue_counterexample_gap 0 "plan of [0-9]+ primitives" -
          wallfollow pursue ${FIX}/wallfollow/s6_counterexample_28.json --sensor gap --no-check)
+# Issue 47: the docs said every polygon of 26 vertices or fewer that Strategy 2 solves,
+# Strategy 6 solves too; seed 20285 (21 vertices): Strategy 2 plans, Strategy 6 does not.
+cli_test(wallfollow_pursue_counterexample_20285_none 0 "Strategy 6 finds no plan \\([0-9]+ I-states explored, it is sound, not known to be complete\\)" -
+         wallfollow pursue ${FIX}/wallfollow/s6_counterexample_20285.json --sensor none)
+cli_test(wallfollow_pursue_counterexample_20285_gap 0 "independent check of the executed path: cleared" -
+         wallfollow pursue ${FIX}/wallfollow/s6_counterexample_20285.json --sensor gap)
 cli_test(wallfollow_pursue_budget 0 "search stopped after [0-9]+ I-states \\(--max-states 2\\)" -
          wallfollow pursue ${WF}/fig05_rooms.json --sensor none --max-states 2)
 cli_test(wallfollow_pursue_bad_sensor fail "--sensor: expected gap, bitangent, pebble or none, got 'sonar'" -
@@ -48,3 +54,25 @@ cli_test(wallfollow_completeness 0 "Strategy 6 plans checked: [0-9]+, not cleari
          wallfollow completeness --polygons 6 --max-vertices 16)
 cli_test(wallfollow_completeness_json 0 "\"strategy6_plans_not_clearing\":0" - wallfollow completeness --polygons 3 --max-vertices 12 --json)
 cli_test(wallfollow_completeness_range fail "--min-vertices: more than --max-vertices" - wallfollow completeness --min-vertices 20 --max-vertices 10)
+# Issue 47: fig05_rooms.json's description said six reflex vertices; it has five.
+cli_test(wallfollow_fig05_five_reflex 0 "13 vertices, 5 reflex" - wallfollow cut-ordering ${WF}/fig05_rooms.json)
+# Issue 47: --save into a folder it cannot create exited 0 with nothing saved, or 1 after the
+# whole run with no tally; now one line naming it before any polygon is tried.
+cli_test(wallfollow_completeness_save_unwritable fail "--save: .*/s6_counterexample_28.json/out: cannot create directory" -
+         wallfollow completeness --polygons 1 --save ${FIX}/wallfollow/s6_counterexample_28.json/out)
+# ... and a missing one is created (seed 1596, 27 vertices, is a counter-example).
+add_test(NAME cli.wallfollow_completeness_save_clean COMMAND ${CMAKE_COMMAND} -E rm -rf ${OUT}/wallfollow-save)
+set_tests_properties(cli.wallfollow_completeness_save_clean PROPERTIES FIXTURES_SETUP wallfollow_save)
+cli_test(wallfollow_completeness_save_creates_dir 0 "1 solved by Strategy 2 and not by Strategy 6: seed 1596 \\(27 vertices\\)"
+         ${OUT}/wallfollow-save/new/wallfollow_s6_counterexample_1596.json
+         wallfollow completeness --seed 1596 --polygons 1 --min-vertices 27 --max-vertices 27 --save ${OUT}/wallfollow-save/new)
+set_tests_properties(cli.wallfollow_completeness_save_creates_dir PROPERTIES FIXTURES_REQUIRED wallfollow_save)
+# Issue 47: a 2,000-vertex polygon printed nothing for more than 120 s; --time-limit also
+# bounds Strategy 2's exploration and the tally names the polygon (no timing asserted).
+cli_test(wallfollow_completeness_large_polygon_time_limit 0
+         "budget exceeded: seed 1 \\(2000 vertices\\), Strategy 2 over --time-limit"
+         - wallfollow completeness --polygons 1 --min-vertices 2000 --max-vertices 2000 --time-limit 1)
+add_test(NAME cli.wallfollow_completeness_states_budget_json COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/cli/json_expect.py
+         "d['budget'] == 1 and d['over_budget'] == [{'seed': 2, 'vertices': 8, 'strategy': '2', 'limit': 'states'}]" --
+         $<TARGET_FILE:preimage_cli> wallfollow completeness --seed 2 --polygons 1 --max-vertices 12 --max-states 1 --json)
+cli_test(wallfollow_completeness_bad_time_limit fail "--time-limit" - wallfollow completeness --time-limit -1)

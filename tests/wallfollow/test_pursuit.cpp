@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <iostream>
 #include <map>
 #include <random>
@@ -482,7 +483,7 @@ TEST(WallFollowPursuit, Strategy6CounterexamplesAreClearedWithTheGapSensorOrTheP
   // Strategy 6 does not. Variants of Strategy 6's knowledge show which approximation
   // loses the plan: the true bitangents with exact ends plan; candidates that are not
   // bitangents, or approximated ends of true ones, are each enough to lose it here.
-  for (const char* name : {"s6_counterexample_28.json", "s6_counterexample_1596.json"}) {
+  for (const char* name : {"s6_counterexample_28.json", "s6_counterexample_1596.json", "s6_counterexample_20285.json"}) {
     const auto env = scene::load_scene(std::string(PREIMAGE_FIXTURES) + "/wallfollow/" + name).require_environment();
     require_general_position(env);
     const Point start = env.vertex(0);
@@ -521,4 +522,33 @@ TEST(WallFollowPursuit, Strategy6CounterexamplesAreClearedWithTheGapSensorOrTheP
               << (plans(approx_true_only) ? "plan" : "no plan") << "; exact ends plus the other candidates: "
               << (plans(true_plus_false) ? "plan" : "no plan") << std::endl;
   }
+}
+
+TEST(WallFollowPursuit, DeadlineStopsStrategy2InsideItsExploration) {
+  // Issue 47: on a 2,000-vertex polygon `wallfollow completeness` printed nothing for
+  // minutes, Strategy 2 exploring every motion. The deadline is checked before every
+  // action of the robot: moved into the past half-way through the exploration (by the
+  // action hook, so no clock is involved), the run stops at that action, over budget.
+  const auto env = random_polygon(30, 7);
+  ASSERT_TRUE(env);
+  PursuitOptions o;
+  o.sensor = PursuitSensor::Gap;
+  Simulator full_sim(*env, env->vertex(0), geometry::Vector(1, 0));
+  full_sim.enable(sensors_of(PursuitSensor::Gap));
+  const PursuitReport full = pursue(full_sim, o);
+  ASSERT_NE(full.outcome, PursuitReport::Outcome::Budget);
+  ASSERT_GT(full.prepare_actions, 10u);
+  const std::size_t stop_at = full.learned.actions + full.prepare_actions / 2;
+  std::size_t actions = 0;
+  o.on_action = [&] {
+    if (++actions == stop_at) o.deadline = std::chrono::steady_clock::now() - std::chrono::seconds(1);
+  };
+  Simulator sim(*env, env->vertex(0), geometry::Vector(1, 0));
+  sim.enable(sensors_of(PursuitSensor::Gap));
+  const PursuitReport cut = pursue(sim, o);
+  EXPECT_EQ(cut.outcome, PursuitReport::Outcome::Budget);
+  EXPECT_TRUE(cut.out_of_time);
+  EXPECT_TRUE(cut.plan.empty());
+  EXPECT_EQ(actions, stop_at);                 // no action asked for after it
+  EXPECT_EQ(sim.actions(), stop_at - 1);       // and that one not applied
 }

@@ -24,7 +24,9 @@
 #include <preimage/wallfollow/learn.hpp>
 #include <preimage/wallfollow/robot.hpp>
 
+#include <chrono>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -158,17 +160,21 @@ bool bitangent_candidate(const OrderingMap& m, std::uint32_t i, std::uint32_t j)
 /// Strategy 6's bitangents: every candidate, ends approximated by Propositions 13-15.
 std::vector<KnownBitangent> approximate_bitangents(const OrderingMap& m);
 
+/// A time after which a strategy gives up (outcome Budget); none: no time limit.
+using Deadline = std::optional<std::chrono::steady_clock::time_point>;
+
 /// Strategy 2's search over I_gap from `start` (every label 1). Fills outcome, plan,
-/// states and labels_along.
+/// states and labels_along; gives up after `max_states` I-states or at `deadline`.
 struct PursuitReport;
-void search_gap(const Position& start, const OrderingMap& m, const GapTable& table, std::size_t max_states, PursuitReport& rep);
+void search_gap(const Position& start, const OrderingMap& m, const GapTable& table, std::size_t max_states, PursuitReport& rep,
+                const Deadline& deadline = std::nullopt);
 
 /// Strategy 3's search over I_bit from `start` (every active primitive its own compound,
 /// labelled 1) with crossings decided from `bitangents` (Strategies 5 and 6). Fills
-/// outcome, plan, states, bitangents and labels_along.
+/// outcome, plan, states, bitangents and labels_along; gives up as search_gap does.
 struct PursuitReport;
 void search_compounds(const Position& start, const OrderingMap& m, const std::vector<KnownBitangent>& bitangents,
-                      std::size_t max_states, PursuitReport& rep);
+                      std::size_t max_states, PursuitReport& rep, const Deadline& deadline = std::nullopt);
 
 enum class PursuitSensor { Gap, Bitangent, Pebble, None };
 const char* to_string(PursuitSensor s);
@@ -178,6 +184,12 @@ Sensors sensors_of(PursuitSensor s);
 struct PursuitOptions {
   PursuitSensor sensor = PursuitSensor::Gap;
   std::size_t max_states = 20'000'000;
+  /// Give up (outcome Budget, `out_of_time`) once this time has passed: checked before
+  /// every action of the robot (Strategy 1, fetching the pebble, Strategy 2's and 3's
+  /// exploration, Strategy 4) and every 256 I-states of a search.
+  Deadline deadline;
+  /// Called before every action of the robot (e.g. to redraw a progress line).
+  std::function<void()> on_action;
   LearnOptions learn;
 };
 
@@ -186,6 +198,7 @@ struct PursuitReport {
   std::size_t prepare_actions = 0;  // after learning: fetching the pebble, exploring motions (2, 3), Strategy 4 (5)
   Position start;                 // where the plan starts
   enum class Outcome { Plan, NoPlan, Budget } outcome = Outcome::NoPlan;
+  bool out_of_time = false;       // Budget because the deadline passed (else: max_states)
   std::vector<Action> plan;
   std::size_t states = 0;         // I-states explored
   std::size_t bitangents = 0;     // known to the strategy: sensed (3), learned (5), candidates (6)

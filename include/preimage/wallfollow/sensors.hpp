@@ -57,6 +57,7 @@ bool corresponds(const geometry::Environment& env, const ShadowArc& a, const Sha
 
 /// A line through a reflex vertex and a vertex it sees: where V changes combinatorially.
 using VertexLine = std::pair<std::uint32_t, std::uint32_t>;
+std::vector<VertexLine> vertex_lines(const geometry::VisibilityIndex& vis);
 std::vector<VertexLine> vertex_lines(const geometry::Environment& env);
 
 /// The gap sensor along a polyline path (the robot's motion in one action): components at
