@@ -47,6 +47,7 @@ cli_test(wallfollow_pursue_zero_states fail "--max-states" - wallfollow pursue $
 # independent checker. The fixture's plan starts at a cut endpoint on an edge: the exact
 # path clears; rounded, a later cut endpoint falls outside the polygon, and rounding the
 # start alone leaves a contaminated region the plan never looks into again.
+find_package(Python3 COMPONENTS Interpreter REQUIRED)
 set(WF_CUT ${FIX}/wallfollow/start_at_cut_endpoint.json)
 add_test(NAME cli.wallfollow_pursue_json_paths COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/cli/json_expect.py
          "len(d['paths']) == 1 and len(d['paths'][0]) == d['primitives'] + 1 == len(d['paths_rounded'][0]) and all(isinstance(c, str) for p in d['paths'][0] for c in p) and '/' in d['paths'][0][0][0] and all(isinstance(c, float) for p in d['paths_rounded'][0] for c in p)"
