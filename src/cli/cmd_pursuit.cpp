@@ -110,14 +110,19 @@ std::string check_text(const pursuit::CheckResult& r) {
   return s + "; " + std::to_string(r.moments) + " moments sampled";
 }
 
+void write_figure(const std::string& svg, const geometry::Environment& env, const pursuit::Paths& paths,
+                  const pursuit::CheckResult& r) {
+  std::ofstream f(svg);
+  f << pursuit::plan_frames_figure(env, paths, r.frames);
+  if (!f) throw InputError(svg + ": cannot write file");
+}
+
 void write_frames(const std::string& svg, const geometry::Environment& env, const pursuit::Paths& paths,
                   std::size_t frames, pursuit::CheckResult* checked) {
   pursuit::CheckOptions o;
   o.frames = pursuit::frame_waypoints(paths[0].size(), frames);
   const auto r = pursuit::check_paths(env, paths, o);
-  std::ofstream f(svg);
-  f << pursuit::plan_frames_figure(env, paths, r.frames);
-  if (!f) throw InputError(svg + ": cannot write file");
+  write_figure(svg, env, paths, r);
   if (checked) *checked = r;
 }
 
@@ -212,7 +217,22 @@ void run_plan(const PlanFlags& F) {
 }
 
 // ---------------------------------------------------------------- check
-pursuit::Paths load_paths(const std::string& file) {
+// Paths read from a file: every coordinate exact (a JSON number is its double; a string is
+// an exact rational or decimal), and whether any was a string.
+struct LoadedPaths {
+  pursuit::ExactPaths exact;
+  bool strings = false;
+  pursuit::Paths rounded() const {
+    pursuit::Paths out;
+    for (auto& path : exact) {
+      out.emplace_back();
+      for (auto& p : path) out.back().push_back(geometry::to_double(p));
+    }
+    return out;
+  }
+};
+
+LoadedPaths load_paths(const std::string& file) {
   json j = scene::parse_json(scene::read_file(file), file);
   std::string where = "$";
   if (j.is_object()) {
@@ -223,40 +243,60 @@ pursuit::Paths load_paths(const std::string& file) {
     where += std::string(".") + key;
   }
   if (!j.is_array() || j.empty()) throw InputError(file + ": " + where + ": expected a non-empty array of points or of polylines");
-  const bool one = j[0].is_array() && !j[0].empty() && j[0][0].is_number();
-  pursuit::Paths paths;
-  auto point = [&](const json& p, const std::string& at) {
-    if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number())
-      throw InputError(file + ": " + at + ": expected [x, y] with finite numbers");
-    const double x = p[0].get<double>(), y = p[1].get<double>();
-    for (double v : {x, y})
+  auto is_coordinate = [](const json& c) { return c.is_number() || c.is_string(); };
+  const bool one = j[0].is_array() && !j[0].empty() && is_coordinate(j[0][0]);
+  LoadedPaths paths;
+  auto coordinate = [&](const json& c, const std::string& at) -> geometry::ExactFT {
+    if (c.is_number()) {
+      const double v = c.get<double>();
       if (auto why = geometry::coordinate_problem(v); !why.empty()) throw InputError(file + ": " + at + ": " + why);
-    return Point(x, y);
+      return v;
+    }
+    const std::string text = c.get<std::string>();
+    const auto v = geometry::parse_exact_number(text);
+    if (!v) throw InputError(file + ": " + at + ": expected a number or a rational string \"p/q\", got " + json(text).dump());
+    // The range of doubles (docs/scene-format.md, "Numbers"), compared exactly.
+    if (CGAL::abs(*v) > geometry::ExactFT(geometry::kMaxCoordinate))
+      throw InputError(file + ": " + at + ": coordinate " + text + " is outside the supported range [-1e12, 1e12]");
+    paths.strings = true;
+    return *v;
+  };
+  auto point = [&](const json& p, const std::string& at) {
+    if (!p.is_array() || p.size() != 2 || !is_coordinate(p[0]) || !is_coordinate(p[1]))
+      throw InputError(file + ": " + at + ": expected [x, y] with finite numbers or rational strings");
+    return geometry::ExactPoint(coordinate(p[0], at + "[0]"), coordinate(p[1], at + "[1]"));
   };
   auto polyline = [&](const json& arr, const std::string& at) {
     if (!arr.is_array() || arr.empty()) throw InputError(file + ": " + at + ": expected a non-empty array of [x, y] points");
-    std::vector<Point> pts;
+    std::vector<geometry::ExactPoint> pts;
     for (std::size_t i = 0; i < arr.size(); ++i) pts.push_back(point(arr[i], at + "[" + std::to_string(i) + "]"));
     return pts;
   };
   if (one) {
-    paths.push_back(polyline(j, where));
+    paths.exact.push_back(polyline(j, where));
   } else {
-    for (std::size_t k = 0; k < j.size(); ++k) paths.push_back(polyline(j[k], where + "[" + std::to_string(k) + "]"));
+    for (std::size_t k = 0; k < j.size(); ++k) paths.exact.push_back(polyline(j[k], where + "[" + std::to_string(k) + "]"));
   }
   return paths;
+}
+
+// Doubles only: the double checker (V at the samples' roundings), as before exact input
+// existed; any exact string: every V at the exact position.
+pursuit::CheckResult check_loaded(const geometry::Environment& env, const LoadedPaths& paths, const pursuit::CheckOptions& o) {
+  return paths.strings ? pursuit::check_exact_paths(env, paths.exact, o) : pursuit::check_paths(env, paths.rounded(), o);
 }
 
 void run_check(const std::string& file, const std::string& path_file, bool as_json, const std::string& svg, std::size_t frames) {
   const scene::Scene s = scene::load_scene(file);
   const auto& env = s.require_environment();
-  const auto paths = load_paths(path_file);
-  pursuit::CheckResult r;
-  if (!svg.empty()) write_frames(svg, env, paths, frames, &r);
-  else r = pursuit::check_paths(env, paths);
+  const LoadedPaths paths = load_paths(path_file);
+  pursuit::CheckOptions o;
+  if (!svg.empty()) o.frames = pursuit::frame_waypoints(paths.exact[0].size(), frames);
+  const pursuit::CheckResult r = check_loaded(env, paths, o);
+  if (!svg.empty()) write_figure(svg, env, paths.rounded(), r);
   if (as_json) return print_json(check_json(r));
-  std::cout << plural(paths.size(), "pursuer", "pursuers") << ", " << plural(paths[0].size(), "waypoint", "waypoints") << ": "
-            << check_text(r) << "\n";
+  std::cout << plural(paths.exact.size(), "pursuer", "pursuers") << ", " << plural(paths.exact[0].size(), "waypoint", "waypoints")
+            << (paths.strings ? " (exact)" : "") << ": " << check_text(r) << "\n";
   if (!svg.empty()) std::cout << "wrote " << svg << "\n";
 }
 
@@ -299,7 +339,8 @@ void add_pursuit_commands(CLI::App& app) {
     auto frames = std::make_shared<std::size_t>(6);
     cmd->add_option("scene", *file, "Scene JSON file")->required();
     cmd->add_option("--path", *path,
-                    "JSON: one polyline [[x, y], ...], several [[[x, y], ...], ...] or {\"paths\": ...} (pursuers pass waypoint i together)")
+                    "JSON: one polyline [[x, y], ...], several [[[x, y], ...], ...] or {\"paths\": ...} (pursuers pass waypoint i "
+                    "together); a coordinate is a number or an exact string (\"-7/2\", \"0.1\")")
         ->required();
     add_json_flag(cmd, *as_json, "Machine-readable output on stdout");
     cmd->add_option("--svg", *svg, "Draw the check as small multiples to this SVG file");

@@ -41,7 +41,7 @@ json vis_point_json(const geometry::VisibilityPolygon& v, std::size_t i) {
       const auto p = v.exact(i);
       j["kind"] = "ray-hit";
       j["through"] = vis_vertex_ref(env, vv.vertex);
-      j["exact"] = {exact_string(p.x()), exact_string(p.y())};
+      j["exact"] = {geometry::exact_string(p.x()), geometry::exact_string(p.y())};
       break;
     }
   }

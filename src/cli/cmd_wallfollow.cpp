@@ -201,6 +201,17 @@ void run_pursue(const PursueFlags& F) {
               {"learn_actions", rep.learned.actions}, {"prepare_actions", rep.prepare_actions},
               {"bitangents", rep.bitangents}, {"start", m.name(rep.start.at)}, {"labels", rep.labels_along},
               {"complete", complete}, {"robot_v1_is_vertex", env.input_index(v1)}};
+    if (!run.path.empty()) {
+      // The executed path as `pursuit check --path` reads it: exact rational strings (cut
+      // endpoints are constructed points), and the same rounded to doubles.
+      json exact = json::array(), rounded = json::array();
+      for (const auto& p : run.path) {
+        exact.push_back({geometry::exact_string(p.x()), geometry::exact_string(p.y())});
+        rounded.push_back(point_json(p));
+      }
+      j["paths"] = json::array({exact});
+      j["paths_rounded"] = json::array({rounded});
+    }
     if (check) j["check"] = {{"cleared", check->cleared}, {"moments", check->moments}};
     return print_json(j);
   }

@@ -31,12 +31,6 @@ geometry::Point parse_point(const std::string& text, const std::string& flag) {
   return geometry::Point(num(text.substr(0, comma)), num(text.substr(comma + 1)));
 }
 
-std::string exact_string(const geometry::ExactFT& v) {
-  std::ostringstream ss;
-  ss << CGAL::exact(v);
-  return ss.str();
-}
-
 void make_dirs(const std::string& dir) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);

@@ -15,8 +15,6 @@ namespace preimage::cli {
 
 /// "1.5,2" -> point; InputError "<flag>: expected X,Y, got '...'".
 geometry::Point parse_point(const std::string& text, const std::string& flag);
-/// Exact coordinate as a decimal-free rational string ("7/2", "-3").
-std::string exact_string(const geometry::ExactFT& v);
 /// Creates a directory (and parents); InputError if impossible.
 void make_dirs(const std::string& dir);
 /// {"ring": "<ring name>", "index": k}: environment edge e in the caller's terms.

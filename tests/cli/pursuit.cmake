@@ -25,8 +25,13 @@ cli_test(pursuit_check_cleared 0 "2 pursuers, 3 waypoints: cleared" ${OUT}/pursu
 cli_test(pursuit_check_loop 0 "NOT cleared: 1 region contaminated at the end" -
          pursuit check ${PE}/pillar.json --path ${FIX}/pursuit/pillar_one_pursuer_loop.json)
 cli_test(pursuit_check_json 0 "\"cleared\":false" - pursuit check ${PE}/pillar.json --path ${FIX}/pursuit/pillar_one_pursuer_loop.json --json)
-cli_test(pursuit_check_bad_point fail "bad_point.json: \\$\\.paths\\[0\\]\\[1\\]: expected \\[x, y\\]" -
+cli_test(pursuit_check_bad_point fail "bad_point.json: \\$\\.paths\\[0\\]\\[1\\]\\[1\\]: expected a number or a rational string \"p/q\", got \"x\"$" -
          pursuit check ${PE}/pillar.json --path ${FIX}/pursuit/bad_point.json)
+# Exact coordinates (issue 47): rational and decimal strings, read without rounding.
+cli_test(pursuit_check_exact 0 "2 pursuers, 3 waypoints \\(exact\\): cleared" -
+         pursuit check ${PE}/pillar.json --path ${FIX}/pursuit/pillar_two_pursuers_exact.json)
+cli_test(pursuit_check_bad_rational fail "bad_rational.json: \\$\\.paths\\[0\\]\\[3\\]\\[1\\]: expected a number or a rational string \"p/q\", got \"1/0\"$" -
+         pursuit check ${PE}/pillar.json --path ${FIX}/pursuit/bad_rational.json)
 cli_test(pursuit_check_through_pillar fail "path: pursuer 1 segment 0 from \\(1, 1\\) to \\(5, 5\\) leaves free space" -
          pursuit check ${PE}/pillar.json --path ${FIX}/pursuit/through_pillar.json)
 

@@ -49,6 +49,29 @@ cli_test(wallfollow_pursue_budget 0 "search stopped after [0-9]+ I-states \\(--m
 cli_test(wallfollow_pursue_bad_sensor fail "--sensor: expected gap, bitangent, pebble or none, got 'sonar'" -
          wallfollow pursue ${WF}/fig05_rooms.json --sensor sonar)
 cli_test(wallfollow_pursue_zero_states fail "--max-states" - wallfollow pursue ${WF}/fig05_rooms.json --max-states 0)
+# Issue 47: the executed path in --json, exact (rational strings) and rounded, fed to the
+# independent checker. The fixture's plan starts at a cut endpoint on an edge: the exact
+# path clears; rounded, a later cut endpoint falls outside the polygon, and rounding the
+# start alone leaves a contaminated region the plan never looks into again.
+find_package(Python3 COMPONENTS Interpreter REQUIRED)
+set(WF_CUT ${FIX}/wallfollow/start_at_cut_endpoint.json)
+add_test(NAME cli.wallfollow_pursue_json_paths COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/cli/json_expect.py
+         "len(d['paths']) == 1 and len(d['paths'][0]) == d['primitives'] + 1 == len(d['paths_rounded'][0]) and all(isinstance(c, str) for p in d['paths'][0] for c in p) and '/' in d['paths'][0][0][0] and all(isinstance(c, float) for p in d['paths_rounded'][0] for c in p)"
+         -- $<TARGET_FILE:preimage_cli> wallfollow pursue ${WF_CUT} --sensor none --json)
+add_test(NAME cli.wallfollow_pursue_exact_path_passes_check
+         COMMAND ${EXPECT} 0 "1 pursuer, 3 waypoints \\(exact\\): cleared" - -- bash -c
+                 "\"$0\" wallfollow pursue \"$1\" --sensor none --json > \"$2\" && \"$0\" pursuit check \"$1\" --path \"$2\""
+                 $<TARGET_FILE:preimage_cli> ${WF_CUT} ${OUT}/wallfollow-cut-endpoint-plan.json)
+add_test(NAME cli.wallfollow_pursue_rounded_path_is_rejected
+         COMMAND ${EXPECT} fail "path: pursuer 1 point 2 \\([0-9.]+, [0-9.]+\\) is not in free space \\(outside\\)$" - -- bash -c
+                 "\"$0\" wallfollow pursue \"$1\" --sensor none --json | \"$3\" \"$4\" all > \"$2\" && \"$0\" pursuit check \"$1\" --path \"$2\""
+                 $<TARGET_FILE:preimage_cli> ${WF_CUT} ${OUT}/wallfollow-cut-endpoint-rounded.json ${Python3_EXECUTABLE}
+                 ${CMAKE_CURRENT_SOURCE_DIR}/cli/rounded_paths.py)
+add_test(NAME cli.wallfollow_pursue_rounded_start_leaves_contamination
+         COMMAND ${EXPECT} 0 "1 pursuer, 3 waypoints \\(exact\\): NOT cleared: 1 region contaminated at the end" - -- bash -c
+                 "\"$0\" wallfollow pursue \"$1\" --sensor none --json | \"$3\" \"$4\" start > \"$2\" && \"$0\" pursuit check \"$1\" --path \"$2\""
+                 $<TARGET_FILE:preimage_cli> ${WF_CUT} ${OUT}/wallfollow-cut-endpoint-start-rounded.json ${Python3_EXECUTABLE}
+                 ${CMAKE_CURRENT_SOURCE_DIR}/cli/rounded_paths.py)
 cli_test(wallfollow_pursue_holes fail "needs a simply connected environment" - wallfollow pursue ${EXAMPLES}/pursuit/pillar.json)
 cli_test(wallfollow_completeness 0 "Strategy 6 plans checked: [0-9]+, not clearing: 0" -
          wallfollow completeness --polygons 6 --max-vertices 16)

@@ -61,3 +61,46 @@ TEST(AngleSign, IsTheAngleAtTheMiddlePoint) {
   EXPECT_EQ(angle_sign(Point(0.1, 0.7), Point(0.3, 0.2), Point(0.7, 0.1)),
             static_cast<int>(CGAL::angle(Point(0.1, 0.7), Point(0.3, 0.2), Point(0.7, 0.1))));
 }
+
+// Exact coordinates as text (issue 47): what `wallfollow pursue --json` writes and
+// `pursuit check` reads back, with no rounding either way.
+TEST(ExactNumbers, RationalAndDecimalStringsAreReadWithoutRounding) {
+  using preimage::geometry::ExactFT;
+  using preimage::geometry::parse_exact_number;
+  auto is = [](const char* text, const ExactFT& want) {
+    const auto v = parse_exact_number(text);
+    return v && *v == want;
+  };
+  EXPECT_TRUE(is("-3/2", ExactFT(-3) / 2));
+  EXPECT_TRUE(is("+7", ExactFT(7)));
+  EXPECT_TRUE(is("010", ExactFT(10)));  // not octal
+  EXPECT_TRUE(is("6/4", ExactFT(3) / 2));
+  EXPECT_TRUE(is("0.1", ExactFT(1) / 10));  // the decimal, not the double 0.1
+  EXPECT_FALSE(is("0.1", ExactFT(0.1)));
+  EXPECT_TRUE(is(".5", ExactFT(1) / 2));
+  EXPECT_TRUE(is("2.", ExactFT(2)));
+  EXPECT_TRUE(is("-1.5e-3", ExactFT(-3) / 2000));
+  EXPECT_TRUE(is("25E+2", ExactFT(2500)));
+  EXPECT_TRUE(is("-0", ExactFT(0)));
+  // Beyond 64 bits, and a denominator no double has.
+  const auto big = parse_exact_number("12345678901234567890/3");
+  ASSERT_TRUE(big);
+  EXPECT_EQ(preimage::geometry::exact_string(*big), "4115226300411522630");
+  EXPECT_EQ(preimage::geometry::exact_string(*parse_exact_number("-123/7")), "-123/7");
+  for (const char* bad : {"1/0", "1/", "/2", "1/-2", "1/2/3", "", "-", "+", ".", "abc", "1.2.3", "1e", "1e401", "1e+",
+                          " 1", "1 ", "0x10", "--1", "1,5", "inf", "nan", "1/2e3", "\xc2\xbd"})
+    EXPECT_FALSE(parse_exact_number(bad).has_value()) << "'" << bad << "'";
+}
+
+TEST(ExactNumbers, ExactStringsRoundTrip) {
+  using preimage::geometry::ExactFT;
+  std::mt19937_64 rng(47);
+  std::uniform_real_distribution<double> u(-1e6, 1e6);
+  for (int i = 0; i < 200; ++i) {
+    // A constructed value: a quotient of doubles, in lowest terms far from any double.
+    const ExactFT v = ExactFT(u(rng)) / ExactFT(u(rng)) + ExactFT(u(rng));
+    const auto back = preimage::geometry::parse_exact_number(preimage::geometry::exact_string(v));
+    ASSERT_TRUE(back);
+    EXPECT_EQ(*back, v);
+  }
+}

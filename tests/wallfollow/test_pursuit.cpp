@@ -552,3 +552,48 @@ TEST(WallFollowPursuit, DeadlineStopsStrategy2InsideItsExploration) {
   EXPECT_EQ(actions, stop_at);                 // no action asked for after it
   EXPECT_EQ(sim.actions(), stop_at - 1);       // and that one not applied
 }
+
+// Issue 47: a plan checkable from outside. Strategy 6 on this polygon plans from the end of
+// a cut, a constructed point on an edge. The executed path checks exactly, also after a
+// round trip through the rational strings `wallfollow pursue --json` writes; rounded to
+// doubles it does not: a later cut endpoint rounds out of the polygon, and the start alone,
+// rounded, leaves a region contaminated (the start sees along an edge's line; off the line
+// by its rounding it no longer sees the pocket behind that edge, and the plan never looks
+// back).
+TEST(WallFollowPursuit, StartAtACutEndpointIsCheckedExactlyNotRounded) {
+  const auto scene = scene::load_scene(std::string(PREIMAGE_FIXTURES) + "/wallfollow/start_at_cut_endpoint.json");
+  const Environment& env = scene.require_environment();
+  Simulator sim(env, *scene.start, geometry::Vector(1, 0));
+  PursuitOptions o;
+  o.sensor = PursuitSensor::None;
+  const auto rep = pursue(sim, o);
+  ASSERT_EQ(rep.outcome, PursuitReport::Outcome::Plan);
+  const std::size_t from = sim.path().size() - 1;
+  execute(sim, rep.plan);
+  const std::vector<geometry::ExactPoint> path(sim.path().begin() + static_cast<long>(from), sim.path().end());
+  ASSERT_EQ(geometry::locate(env, path[0]).kind, geometry::Location::Kind::OnEdge) << "the fixture lost its point: the plan must start on an edge";
+  ASSERT_NE(geometry::to_exact(geometry::to_double(path[0])), path[0]) << "the start must not be a double";
+
+  EXPECT_TRUE(pursuit::check_exact_paths(env, {path}).cleared);
+
+  // Through text and back, as `pursuit check` reads the JSON: the same points.
+  std::vector<geometry::ExactPoint> read;
+  for (const auto& p : path) {
+    const auto x = geometry::parse_exact_number(geometry::exact_string(p.x()));
+    const auto y = geometry::parse_exact_number(geometry::exact_string(p.y()));
+    ASSERT_TRUE(x && y);
+    read.emplace_back(*x, *y);
+  }
+  EXPECT_EQ(read, path);
+  EXPECT_TRUE(pursuit::check_exact_paths(env, {read}).cleared);
+
+  pursuit::Paths rounded{{}};
+  for (const auto& p : path) rounded[0].push_back(geometry::to_double(p));
+  EXPECT_THROW(pursuit::check_paths(env, rounded), InputError);
+
+  auto start_rounded = path;
+  start_rounded[0] = geometry::to_exact(rounded[0][0]);
+  const auto r = pursuit::check_exact_paths(env, {start_rounded});
+  EXPECT_FALSE(r.cleared);
+  EXPECT_GT(r.contaminated_area, 1.0);  // not a sliver: the whole pocket behind the edge
+}

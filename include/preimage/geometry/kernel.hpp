@@ -13,7 +13,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <string>
+#include <string_view>
 
 namespace preimage::geometry {
 
@@ -102,5 +104,13 @@ std::string format_point(double x, double y);
 inline std::string format_point(const Point& p) { return format_point(p.x(), p.y()); }
 /// An exact point in messages: its nearest doubles.
 inline std::string format_point(const ExactPoint& p) { return format_point(to_double(p)); }
+
+/// An exact number as a rational string in lowest terms, without a decimal point ("7/2",
+/// "-3"): what --json outputs give beside the rounded doubles.
+std::string exact_string(const ExactFT& v);
+/// The exact value of a rational string "p/q" (q not 0), an integer, or a decimal ("-12.5",
+/// "1.5e-3"; the exponent at most 400 in magnitude), with no rounding: "0.1" is 1/10. An
+/// optional sign leads; nothing else (no spaces). Nothing for any other text.
+std::optional<ExactFT> parse_exact_number(std::string_view text);
 
 }  // namespace preimage::geometry
