@@ -53,7 +53,7 @@ bench: deps-test
 # AddressSanitizer + UndefinedBehaviorSanitizer on everything and the libFuzzer harnesses
 # of tests/fuzz: the sanitizer suite and the fuzzers share its (slow) library build.
 SAN_TESTS    = preimage_cli preimage_large_scenes
-FUZZERS      = scene_json houseexpo visilibity geojson wkt export beam_word beam_stream laser_log
+FUZZERS      = scene_json houseexpo visilibity geojson wkt export pursuit_paths beam_word beam_stream laser_log
 SAN_ENV      = ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 
 $(SAN_BUILD)/CMakeCache.txt:

@@ -3,10 +3,10 @@
 #include "common.hpp"
 
 #include <preimage/error.hpp>
-#include <preimage/geometry/coordinates.hpp>
 #include <preimage/geometry/general_position.hpp>
 #include <preimage/pursuit/checker.hpp>
 #include <preimage/pursuit/figures.hpp>
+#include <preimage/pursuit/paths_input.hpp>
 #include <preimage/pursuit/search.hpp>
 #include <preimage/pursuit/split.hpp>
 #include <preimage/render/figures.hpp>
@@ -217,86 +217,17 @@ void run_plan(const PlanFlags& F) {
 }
 
 // ---------------------------------------------------------------- check
-// Paths read from a file: every coordinate exact (a JSON number is its double; a string is
-// an exact rational or decimal), and whether any was a string.
-struct LoadedPaths {
-  pursuit::ExactPaths exact;
-  bool strings = false;
-  pursuit::Paths rounded() const {
-    pursuit::Paths out;
-    for (auto& path : exact) {
-      out.emplace_back();
-      for (auto& p : path) out.back().push_back(geometry::to_double(p));
-    }
-    return out;
-  }
-};
-
-LoadedPaths load_paths(const std::string& file) {
-  json j = scene::parse_json(scene::read_file(file), file);
-  std::string where = "$";
-  if (j.is_object()) {
-    if (j.contains("plan") && j["plan"].is_object()) j = j["plan"], where += ".plan";
-    const char* key = j.contains("paths") ? "paths" : "pursuers";
-    if (!j.contains(key)) throw InputError(file + ": " + where + ": expected \"paths\" (one polyline per pursuer)");
-    j = j[key];
-    where += std::string(".") + key;
-  }
-  if (!j.is_array() || j.empty()) throw InputError(file + ": " + where + ": expected a non-empty array of points or of polylines");
-  auto is_coordinate = [](const json& c) { return c.is_number() || c.is_string(); };
-  const bool one = j[0].is_array() && !j[0].empty() && is_coordinate(j[0][0]);
-  LoadedPaths paths;
-  auto coordinate = [&](const json& c, const std::string& at) -> geometry::ExactFT {
-    if (c.is_number()) {
-      const double v = c.get<double>();
-      if (auto why = geometry::coordinate_problem(v); !why.empty()) throw InputError(file + ": " + at + ": " + why);
-      return v;
-    }
-    const std::string text = c.get<std::string>();
-    const auto v = geometry::parse_exact_number(text);
-    if (!v) throw InputError(file + ": " + at + ": expected a number or a rational string \"p/q\", got " + json(text).dump());
-    // The range of doubles (docs/scene-format.md, "Numbers"), compared exactly.
-    if (CGAL::abs(*v) > geometry::ExactFT(geometry::kMaxCoordinate))
-      throw InputError(file + ": " + at + ": coordinate " + text + " is outside the supported range [-1e12, 1e12]");
-    paths.strings = true;
-    return *v;
-  };
-  auto point = [&](const json& p, const std::string& at) {
-    if (!p.is_array() || p.size() != 2 || !is_coordinate(p[0]) || !is_coordinate(p[1]))
-      throw InputError(file + ": " + at + ": expected [x, y] with finite numbers or rational strings");
-    return geometry::ExactPoint(coordinate(p[0], at + "[0]"), coordinate(p[1], at + "[1]"));
-  };
-  auto polyline = [&](const json& arr, const std::string& at) {
-    if (!arr.is_array() || arr.empty()) throw InputError(file + ": " + at + ": expected a non-empty array of [x, y] points");
-    std::vector<geometry::ExactPoint> pts;
-    for (std::size_t i = 0; i < arr.size(); ++i) pts.push_back(point(arr[i], at + "[" + std::to_string(i) + "]"));
-    return pts;
-  };
-  if (one) {
-    paths.exact.push_back(polyline(j, where));
-  } else {
-    for (std::size_t k = 0; k < j.size(); ++k) paths.exact.push_back(polyline(j[k], where + "[" + std::to_string(k) + "]"));
-  }
-  return paths;
-}
-
-// Doubles only: the double checker (V at the samples' roundings), as before exact input
-// existed; any exact string: every V at the exact position.
-pursuit::CheckResult check_loaded(const geometry::Environment& env, const LoadedPaths& paths, const pursuit::CheckOptions& o) {
-  return paths.strings ? pursuit::check_exact_paths(env, paths.exact, o) : pursuit::check_paths(env, paths.rounded(), o);
-}
-
 void run_check(const std::string& file, const std::string& path_file, bool as_json, const std::string& svg, std::size_t frames) {
   const scene::Scene s = scene::load_scene(file);
   const auto& env = s.require_environment();
-  const LoadedPaths paths = load_paths(path_file);
+  const pursuit::PathsInput paths = pursuit::parse_paths(scene::read_file(path_file), path_file);
   pursuit::CheckOptions o;
   if (!svg.empty()) o.frames = pursuit::frame_waypoints(paths.exact[0].size(), frames);
-  const pursuit::CheckResult r = check_loaded(env, paths, o);
+  const pursuit::CheckResult r = pursuit::check_paths(env, paths, o);
   if (!svg.empty()) write_figure(svg, env, paths.rounded(), r);
   if (as_json) return print_json(check_json(r));
   std::cout << plural(paths.exact.size(), "pursuer", "pursuers") << ", " << plural(paths.exact[0].size(), "waypoint", "waypoints")
-            << (paths.strings ? " (exact)" : "") << ": " << check_text(r) << "\n";
+            << (paths.exact_strings ? " (exact)" : "") << ": " << check_text(r) << "\n";
   if (!svg.empty()) std::cout << "wrote " << svg << "\n";
 }
 
