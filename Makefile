@@ -75,8 +75,8 @@ test-sanitize-ci-build: $(SAN_BUILD)/CMakeCache.txt
 	cmake --build $(SAN_BUILD) -j $(JOBS) --target $(SAN_TESTS)
 
 test-sanitize-ci: test-sanitize-ci-build
-	cd $(SAN_BUILD) && $(SAN_ENV) ctest --output-on-failure -j $(JOBS) \
-	  -R "$$($(CURDIR)/scripts/sanitize-subset . $(abspath $(BUILD)))"
+	cd $(SAN_BUILD) && subset=$$($(CURDIR)/scripts/sanitize-subset . $(abspath $(BUILD))) && \
+	  $(SAN_ENV) ctest --output-on-failure -j $(JOBS) -R "$$subset"
 
 # Each harness for FUZZ_SECONDS on a corpus seeded from tests/fixtures and examples,
 # copied to $(FUZZ_DIR) (never written into the repository), FUZZ_PARALLEL at a time. A

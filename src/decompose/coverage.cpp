@@ -332,16 +332,31 @@ CoverageMetrics measure_coverage(const Environment& env, const CoverageReport& r
   // would otherwise leave no sample in it: issue 47), and coarser where that would take more
   // than 4 million samples.
   const double extent = std::max(box.xmax() - box.xmin(), box.ymax() - box.ymin());
-  if (!(cell > 0)) cell = std::max(std::min(w / 8, extent / 256), std::sqrt((box.xmax() - box.xmin()) * (box.ymax() - box.ymin()) / 4e6));
-  const std::size_t nx = static_cast<std::size_t>(std::ceil((box.xmax() - box.xmin()) / cell)) + 1;
-  const std::size_t ny = static_cast<std::size_t>(std::ceil((box.ymax() - box.ymin()) / cell)) + 1;
-  if (nx * ny > 50'000'000) throw InputError("coverage metrics: the raster would need more than 5e7 samples; give a coarser cell");
+  const bool automatic = !(cell > 0);
+  if (automatic) cell = std::max(std::min(w / 8, extent / 256), std::sqrt((box.xmax() - box.xmin()) * (box.ymax() - box.ymin()) / 4e6));
+  std::size_t nx = 0, ny = 0;
+  std::vector<char> target;
   auto centre = [&](std::size_t i, std::size_t j) { return Point(box.xmin() + (static_cast<double>(i) + 0.5) * cell, box.ymin() + (static_cast<double>(j) + 0.5) * cell); };
-  std::vector<char> target(nx * ny, 0);
+  // A free space thinner than the automatic cell (a sliver of a component) may hold no
+  // sample: the cell is refined, up to the cap, rather than the metrics refused.
+  for (;;) {
+    nx = static_cast<std::size_t>(std::ceil((box.xmax() - box.xmin()) / cell)) + 1;
+    ny = static_cast<std::size_t>(std::ceil((box.ymax() - box.ymin()) / cell)) + 1;
+    if (nx * ny > 50'000'000) throw InputError("coverage metrics: the raster would need more than 5e7 samples; give a coarser cell");
+    target.assign(nx * ny, 0);
+    bool any = false;
+    for (std::size_t j = 0; j < ny; ++j)
+      for (std::size_t i = 0; i < nx; ++i) any |= (target[j * nx + i] = index.in_free_space(centre(i, j))) != 0;
+    if (any || !automatic || nx * ny * 16 > 50'000'000) break;
+    cell /= 4;
+  }
   std::vector<std::uint32_t> visits(nx * ny, 0), last(nx * ny, UINT32_MAX);
   std::vector<char> covered(nx * ny, 0);
-  for (std::size_t j = 0; j < ny; ++j)
-    for (std::size_t i = 0; i < nx; ++i) target[j * nx + i] = index.in_free_space(centre(i, j));
+  // Row and column indices clamped as doubles before the cast: w/2 over a fine cell can
+  // exceed a long (a double out of a long's range is undefined when cast).
+  auto index_in = [](double v, std::size_t n) {
+    return static_cast<long>(std::clamp(v, 0.0, static_cast<double>(n) - 1));
+  };
   // Segment by segment: a sample within w/2 of segment s is covered; it gets a new visit
   // when it comes within w/2 - cell/2 of s without having been that close to s - 1 (the
   // margin keeps samples exactly halfway between two laps, covered by both to the last
@@ -380,16 +395,17 @@ CoverageMetrics measure_coverage(const Environment& env, const CoverageReport& r
   for (std::size_t seg = 0; seg + 1 < std::max<std::size_t>(rep.path.size(), 2); ++seg) {
     const Point &a = rep.path[seg], &b = rep.path[std::min(seg + 1, rep.path.size() - 1)];
     const std::uint32_t stamp = static_cast<std::uint32_t>(seg);
-    const long j0 = std::max(0L, static_cast<long>(std::floor((std::min(a.y(), b.y()) - half - box.ymin()) / cell)));
-    const long j1 = std::min<long>(static_cast<long>(ny) - 1, static_cast<long>(std::ceil((std::max(a.y(), b.y()) + half - box.ymin()) / cell)));
+    const long j0 = index_in(std::floor((std::min(a.y(), b.y()) - half - box.ymin()) / cell), ny);
+    const long j1 = index_in(std::ceil((std::max(a.y(), b.y()) + half - box.ymin()) / cell), ny);
     for (long j = j0; j <= j1; ++j) {
       const double y = box.ymin() + (static_cast<double>(j) + 0.5) * cell;
       double lo, hi, ilo, ihi;
       capsule_row(a, b, half, y, lo, hi);
       if (!(lo <= hi)) continue;
       capsule_row(a, b, inner, y, ilo, ihi);
-      const long i0 = std::max(0L, static_cast<long>(std::ceil((lo - box.xmin()) / cell - 0.5)));
-      const long i1 = std::min<long>(static_cast<long>(nx) - 1, static_cast<long>(std::floor((hi - box.xmin()) / cell - 0.5)));
+      const double fi0 = std::ceil((lo - box.xmin()) / cell - 0.5), fi1 = std::floor((hi - box.xmin()) / cell - 0.5);
+      if (fi0 > static_cast<double>(nx) - 1 || fi1 < 0 || fi0 > fi1) continue;
+      const long i0 = index_in(fi0, nx), i1 = index_in(fi1, nx);
       for (long i = i0; i <= i1; ++i) {
         const std::size_t id = static_cast<std::size_t>(j) * nx + static_cast<std::size_t>(i);
         covered[id] = 1;
@@ -405,10 +421,10 @@ CoverageMetrics measure_coverage(const Environment& env, const CoverageReport& r
     if (!target[id]) continue;
     ++total, once += covered[id], twice += visits[id] > 1;
   }
-  // No sample in the free space: a fraction of nothing is no answer (refuse, never print 0).
+  // No sample in the free space even at the finest cell: a fraction of nothing is no
+  // answer (refuse, never print 0).
   if (total == 0)
-    throw InputError("coverage metrics: no raster sample (cell " + geometry::format_number(cell) +
-                     ") falls in the free space; give a finer cell");
+    throw InputError("coverage metrics: no raster sample (cell " + geometry::format_number(cell) + ") falls in the free space");
   m.samples = total;
   m.covered_fraction = total ? static_cast<double>(once) / static_cast<double>(total) : 0;
   m.overlap = total ? static_cast<double>(twice) / static_cast<double>(total) : 0;

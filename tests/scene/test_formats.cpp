@@ -38,10 +38,13 @@ std::string error_of(const std::function<void()>& f) {
 TEST(Formats, GeoJsonAndWktRoundTripRealFloorPlans) {
   // A real plan written as GeoJSON by GeoJsonWriter and as WKT by to_wkt (what `preimage
   // export` writes), read back: the same vertices, bit for bit (both write doubles exactly).
-  // The HouseExpo houses, and the office floors with holes from shared data when present.
+  // The HouseExpo houses, a room with a pillar, and the office floors with holes from shared
+  // data when present (a checkout beside ../shared, as CI's).
   std::vector<std::pair<std::string, geometry::Environment>> plans;
   for (const char* name : {"house_expo_room_0000.json", "house_expo_room_1451.json"})
     plans.emplace_back(name, *scene::import_houseexpo(std::string(PREIMAGE_FLOORPLANS) + "/" + name).environment);
+  plans.emplace_back("pillar.json", scene::load_scene(std::string(PREIMAGE_EXAMPLES) + "/pursuit/pillar.json").require_environment());
+  ASSERT_EQ(plans.back().second.num_holes(), 1u);  // a shipped plan with a hole, on every clone
   for (const char* name : {"mlstruct_302.json", "mlstruct_848.json"}) {
     const std::string path = std::string(PREIMAGE_SOURCE) + "/../shared/data/floorplans/" + name;
     if (std::ifstream(path)) plans.emplace_back(name, scene::load_scene(path).require_environment());
