@@ -290,3 +290,10 @@ foreach(format geojson wkt)
 endforeach()
 cli_test(cover_wide_wavefront_still_needs_fronts 0 "covered (99\\.[5-9][0-9]*|100)% of the configuration space" -
          cover ${EXAMPLES}/gallery.json --width 8 --pattern wavefront --start 0.5,7.5)
+# A room 2e-6 across at --width 1e12 (review of issue 47): w/2 over the raster's cell
+# overflowed a long when cast, no row was scanned, and the metrics said 0%.
+foreach(pattern boustrophedon brushfire)
+  cli_test(cover_huge_width_tiny_room_${pattern} 0 "covered 100% of the configuration space" -
+           cover ${FIX}/scenes/tiny_room_2e-6.json --width 1e12 --radius 0 --pattern ${pattern} --start 1e-7,1e-7)
+  set_tests_properties(cli.cover_huge_width_tiny_room_${pattern} PROPERTIES LABELS degenerate)
+endforeach()
