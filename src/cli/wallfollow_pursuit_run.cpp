@@ -59,8 +59,7 @@ std::string pursuit_figure(const geometry::Environment& env, const PursuitRun& r
                                                                         : "search stopped";
   const auto map = pursuit_map(env, true_cut_ordering(env), bitangents(env), run.path, pursuit::kFramePanelWidth,
                                std::string(strategy_name(run.sensor)) + ": " + outcome);
-  pursuit::Paths dp{{}};
-  for (auto& p : run.path) dp[0].push_back(geometry::to_double(p));
+  const pursuit::Paths dp = pursuit::to_double(pursuit::ExactPaths{run.path});
   std::vector<std::string> captions;
   std::vector<pursuit::CheckFrame> frames;
   if (run.check) frames = run.check->frames;

@@ -55,6 +55,15 @@ ExactPaths to_exact(const Paths& paths) {
   return out;
 }
 
+Paths to_double(const ExactPaths& paths) {
+  Paths out;
+  for (auto& p : paths) {
+    out.emplace_back();
+    for (auto& q : p) out.back().push_back(geometry::to_double(q));
+  }
+  return out;
+}
+
 void validate_paths(const Environment& env, const Paths& paths) { validate_paths(env, to_exact(paths)); }
 
 namespace {

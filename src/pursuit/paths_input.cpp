@@ -8,14 +8,7 @@ namespace preimage::pursuit {
 
 using nlohmann::json;
 
-Paths PathsInput::rounded() const {
-  Paths out;
-  for (const auto& path : exact) {
-    out.emplace_back();
-    for (const auto& p : path) out.back().push_back(geometry::to_double(p));
-  }
-  return out;
-}
+Paths PathsInput::rounded() const { return to_double(exact); }
 
 PathsInput parse_paths(const std::string& text, const std::string& source) {
   json j = scene::parse_json(text, source);

@@ -64,6 +64,8 @@ struct CheckResult {
 
 /// The same paths with exact waypoints (the doubles as they are).
 ExactPaths to_exact(const Paths& paths);
+/// The same paths rounded to the nearest doubles (for drawing, or the double checker).
+Paths to_double(const ExactPaths& paths);
 
 /// Throws InputError naming the pursuer and point or segment when the paths are not
 /// polylines in free space with equally many points.
