@@ -1,0 +1,285 @@
+// SPDX-License-Identifier: Apache-2.0
+// The visibility game against a brute-force value iteration, known answers (an open room,
+// one convex obstacle, a thin wall), its own policies played out, and refinement.
+#include <preimage/error.hpp>
+#include <preimage/geometry/queries.hpp>
+#include <preimage/scene/scene.hpp>
+#include <preimage/tracking/visibility_game.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+using namespace preimage;
+using namespace preimage::tracking;
+using geometry::Environment;
+using geometry::Point;
+
+namespace {
+
+constexpr std::uint32_t kForever = VisibilityGame::kForever;
+
+Environment rect_room(double w, double h, std::vector<geometry::Ring> holes = {}) {
+  return Environment::make({{0, 0}, {w, 0}, {w, h}, {0, h}}, std::move(holes));
+}
+geometry::Ring box(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
+
+double dist(const Point& a, const Point& b) { return std::hypot(a.x() - b.x(), a.y() - b.y()); }
+
+// Synchronous value iteration, written from the game's definition alone: V_0 = 0 where
+// the observer does not see the target, infinity elsewhere; V_{k+1}(o, t) = 0 if not
+// seen, else 1 + min over target moves t' of max over observer moves o' of V_k(o', t').
+// Moves and sight from geometry::visible and distances, not from the solver's tables.
+std::vector<std::uint32_t> brute_force(const Environment& env, const VisibilityGame& g) {
+  const std::size_t n = g.num_points();
+  const GameParams& p = g.params();
+  auto moves = [&](double reach) {
+    std::vector<std::vector<std::uint32_t>> m(n);
+    for (std::uint32_t a = 0; a < n; ++a)
+      for (std::uint32_t b = 0; b < n; ++b)
+        if (dist(g.point(a), g.point(b)) <= reach * (1 + 1e-9) && geometry::visible(env, g.point(a), g.point(b)))
+          m[a].push_back(b);
+    return m;
+  };
+  const auto mo = moves(g.observer_reach()), mt = moves(g.target_reach());
+  std::vector<char> seen(n * n);
+  for (std::uint32_t o = 0; o < n; ++o)
+    for (std::uint32_t t = 0; t < n; ++t) {
+      const double d = dist(g.point(o), g.point(t));
+      seen[o * n + t] = d >= p.separation && d <= p.range && geometry::visible(env, g.point(o), g.point(t));
+    }
+  std::vector<std::uint32_t> v(n * n);
+  for (std::size_t s = 0; s < n * n; ++s) v[s] = seen[s] ? kForever : 0;
+  for (bool changed = true; changed;) {
+    changed = false;
+    std::vector<std::uint32_t> w = v;
+    for (std::uint32_t o = 0; o < n; ++o)
+      for (std::uint32_t t = 0; t < n; ++t) {
+        if (!seen[o * n + t]) continue;
+        std::uint32_t worst = kForever;
+        for (std::uint32_t tp : mt[t]) {
+          std::uint32_t best = 0;
+          for (std::uint32_t op : mo[o]) best = std::max(best, v[op * n + tp]);
+          worst = std::min(worst, best);
+        }
+        const std::uint32_t value = worst == kForever ? kForever : worst + 1;
+        if (value != w[o * n + t]) {
+          w[o * n + t] = value;
+          changed = true;
+        }
+      }
+    v.swap(w);
+  }
+  return v;
+}
+
+}  // namespace
+
+TEST(VisibilityGame, MatchesBruteForceValueIterationOnRandomRooms) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> U(0.3, 4.2);
+  int with_both = 0;
+  for (int trial = 0; trial < 12; ++trial) {
+    std::vector<geometry::Ring> holes;
+    for (int b = 0; b < 1 + trial % 3; ++b) {
+      const double x = U(rng), y = U(rng) * 0.7;
+      const auto hole = box(x, y, x + 0.3 + 0.1 * (trial % 4), y + 0.2 + 0.3 * (b % 2));
+      bool clear = hole[2].x() < 4.8 && hole[2].y() < 3.3;
+      for (const auto& h : holes) clear = clear && (hole[0].x() > h[2].x() + 0.1 || hole[2].x() < h[0].x() - 0.1 ||
+                                                     hole[0].y() > h[2].y() + 0.1 || hole[2].y() < h[0].y() - 0.1);
+      if (clear) holes.push_back(hole);
+    }
+    const Environment env = rect_room(5, 3.5, holes);
+    GameParams p;
+    p.resolution = 0.5;
+    p.speed_ratio = trial % 2 ? 0.5 : 1.0;
+    p.range = trial % 3 == 0 ? std::numeric_limits<double>::infinity() : 2.5;
+    p.threads = 1 + trial % 2;
+    const VisibilityGame g(env, p);
+    const auto want = brute_force(env, g);
+    const std::size_t n = g.num_points();
+    std::size_t keep = 0, lose = 0;
+    for (std::uint32_t o = 0; o < n; ++o)
+      for (std::uint32_t t = 0; t < n; ++t) {
+        ASSERT_EQ(g.escape_steps(o, t), want[o * n + t]) << "trial " << trial << " o " << o << " t " << t;
+        keep += want[o * n + t] == kForever;
+        lose += want[o * n + t] != kForever && want[o * n + t] > 1;
+      }
+    with_both += keep > 0 && lose > 0;
+    EXPECT_EQ(g.stats().winning, keep);
+  }
+  EXPECT_GE(with_both, 6);  // the comparison saw both kinds of state with escape times > 1
+}
+
+TEST(VisibilityGame, EveryFreeGridPointIsAPlayerPosition) {
+  const Environment env = rect_room(5, 3.5, {box(1, 1, 2, 2)});
+  GameParams p;
+  p.resolution = 0.25;
+  const VisibilityGame g(env, p);
+  std::size_t free = 0;
+  for (int j = 0; j * 0.25 <= 3.5; ++j)
+    for (int i = 0; i * 0.25 <= 5; ++i) {
+      const Point q(i * 0.25, j * 0.25);
+      if (geometry::locate(env, q).kind != geometry::Location::Kind::Interior) continue;
+      ++free;
+      const std::uint32_t k = g.nearest(q);
+      ASSERT_NE(k, VisibilityGame::kNoPoint);
+      EXPECT_EQ(g.point(k), q);
+    }
+  EXPECT_EQ(g.num_points(), free);
+}
+
+TEST(VisibilityGame, AnOpenRoomIsKeptForeverAtAnySpeedRatioUpToOne) {
+  const Environment env = rect_room(6, 4);
+  for (double ratio : {0.5, 1.0}) {
+    GameParams p;
+    p.resolution = 0.25;
+    p.speed_ratio = ratio;
+    p.range = std::numeric_limits<double>::infinity();
+    const VisibilityGame g(env, p);
+    // Nothing blocks the view: every state that is not already a loss is kept.
+    EXPECT_EQ(g.stats().winning, g.stats().seen) << "ratio " << ratio;
+    EXPECT_GT(g.stats().winning, g.stats().states * 9 / 10);
+  }
+}
+
+TEST(VisibilityGame, AnOpenRoomWithALimitedRangeIsKeptWellInsideTheRange) {
+  const Environment env = rect_room(8, 6);
+  GameParams p;
+  p.resolution = 0.25;
+  p.speed_ratio = 0.5;
+  p.range = 2.0;
+  const VisibilityGame g(env, p);
+  std::size_t inside = 0, kept = 0, outside_kept = 0;
+  for (std::uint32_t o = 0; o < g.num_points(); ++o)
+    for (std::uint32_t t = 0; t < g.num_points(); ++t) {
+      const double d = dist(g.point(o), g.point(t));
+      // The observer, twice as fast, closes in as the target leaves: every state with
+      // room for one target step before the range and one observer step before the
+      // separation is kept.
+      if (d >= p.separation + g.observer_reach() && d <= p.range - g.target_reach()) {
+        ++inside;
+        kept += g.keeps(o, t);
+      }
+      if (d > p.range) outside_kept += g.keeps(o, t);
+    }
+  EXPECT_GT(inside, 0u);
+  EXPECT_EQ(kept, inside);
+  EXPECT_EQ(outside_kept, 0u);
+}
+
+TEST(VisibilityGame, OneConvexObstacleFarFromTheWallsIsKeptAtHalfSpeed) {
+  // A 2 x 2 m box in the middle of a 14 x 14 m room: the observer, twice as fast, circles
+  // outside the target. Wherever the target stands, some observer position keeps it.
+  const Environment env = rect_room(14, 14, {box(6, 6, 8, 8)});
+  GameParams p;
+  p.resolution = 0.5;
+  p.speed_ratio = 0.5;
+  p.range = std::numeric_limits<double>::infinity();
+  const VisibilityGame g(env, p);
+  for (std::uint32_t t = 0; t < g.num_points(); ++t) EXPECT_FALSE(g.keeping_observers(t).empty()) << "target " << t;
+  // A target hugging the box's side, the observer across the room in line with that side:
+  // kept (the observer is on the far side of the line the target would need to cross).
+  const std::uint32_t t = g.nearest(Point(7, 8.5)), o = g.nearest(Point(7, 13));
+  EXPECT_TRUE(g.keeps(o, t));
+  // At speed ratio 2 (the target twice as fast) the same scene has escapes from most states.
+  p.speed_ratio = 2.0;
+  const VisibilityGame fast(env, p);
+  EXPECT_LT(fast.stats().winning, g.stats().winning);
+}
+
+TEST(VisibilityGame, ATargetBesideTheEndOfAThinWallEscapesInOneStep) {
+  // A wall 0.1 m thick from y = 1 to y = 4 at x = 5. The observer at (1, 2.5) sees the
+  // target at (5.25, 4.25), just past the wall's top end; one diagonal step to (5.5, 4)
+  // puts the wall in between, and no observer move of 0.71 m sees round it.
+  const Environment env = rect_room(10, 6, {box(4.95, 1, 5.05, 4)});
+  GameParams p;
+  p.resolution = 0.25;
+  p.speed_ratio = 0.5;
+  const VisibilityGame g(env, p);
+  const std::uint32_t o = g.nearest(Point(1, 2.5)), t = g.nearest(Point(5.25, 4.25));
+  ASSERT_EQ(g.point(o), Point(1, 2.5));
+  ASSERT_EQ(g.point(t), Point(5.25, 4.25));
+  EXPECT_EQ(g.escape_steps(o, t), 1u);
+  const std::uint32_t escape = g.target_policy(o, t);
+  EXPECT_EQ(g.answer_value(o, escape), 0u);
+  // Seen from above the wall's end instead, the same target is kept.
+  EXPECT_TRUE(g.keeps(g.nearest(Point(5.25, 5.5)), t));
+}
+
+TEST(VisibilityGame, ItsPoliciesRealiseTheValues) {
+  // In the tracking example box scene: from every kept state the game's observer keeps the
+  // target 200 steps against the game's target and a random one; from every other state
+  // the game's target escapes in exactly escape_steps against the game's observer.
+  const auto sc = scene::load_scene(std::string(PREIMAGE_EXAMPLES) + "/tracking/box.json");
+  GameParams p;
+  p.resolution = 0.5;
+  const VisibilityGame g(sc.require_environment(), p);
+  std::mt19937_64 rng(3);
+  std::uniform_int_distribution<std::uint32_t> P(0, static_cast<std::uint32_t>(g.num_points() - 1));
+  std::size_t kept = 0, lost = 0;
+  for (int k = 0; k < 4000; ++k) {
+    const std::uint32_t o = P(rng), t = P(rng);
+    const std::uint32_t value = g.escape_steps(o, t);
+    const auto optimal = [&](std::uint32_t a, std::uint32_t b) { return g.target_policy(a, b); };
+    const auto random = [&](std::uint32_t, std::uint32_t b) {
+      const auto m = g.target_moves(b);
+      return m[std::uniform_int_distribution<std::size_t>(0, m.size() - 1)(rng)];
+    };
+    if (value == kForever) {
+      ASSERT_EQ(play(g, o, t, 200, optimal), kForever) << o << " " << t;
+      ASSERT_EQ(play(g, o, t, 200, random), kForever) << o << " " << t;
+      ++kept;
+    } else {
+      ASSERT_EQ(play(g, o, t, 100000, optimal), value) << o << " " << t;
+      ++lost;
+    }
+  }
+  EXPECT_GT(kept, 100u);
+  EXPECT_GT(lost, 100u);
+}
+
+TEST(VisibilityGame, RefiningTheGridKeepsTheWinningRegionUpToTheResolution) {
+  // Every state kept on the 0.5 m grid (whose points are also points of the 0.25 m grid)
+  // has, on the finer grid, a keeping observer within one coarse observer step: refining
+  // moves the region's border by about the resolution, it does not make it vanish. Every
+  // gap between obstacles is at least twice the coarse resolution: a passage narrower than
+  // that has no coarse grid point in it, so the coarse target cannot use it (a gap of
+  // 0.5 m under the second box made the fine game lose states 2 m from any fine keeper).
+  const Environment env = rect_room(6, 4, {box(2, 1.5, 3, 2.5), box(4.2, 1.0, 4.6, 2.2)});
+  GameParams p;
+  p.resolution = 0.5;
+  p.range = 4;
+  const VisibilityGame coarse(env, p);
+  p.resolution = 0.25;
+  const VisibilityGame fine(env, p);
+  std::size_t kept = 0, same = 0;
+  for (std::uint32_t o = 0; o < coarse.num_points(); ++o)
+    for (std::uint32_t t = 0; t < coarse.num_points(); ++t) {
+      if (!coarse.keeps(o, t)) continue;
+      ++kept;
+      const std::uint32_t fo = fine.nearest(coarse.point(o)), ft = fine.nearest(coarse.point(t));
+      ASSERT_EQ(fine.point(fo), coarse.point(o));
+      same += fine.keeps(fo, ft);
+      bool near = false;
+      for (std::uint32_t a : fine.keeping_observers(ft)) near = near || dist(fine.point(a), coarse.point(o)) <= coarse.observer_reach();
+      EXPECT_TRUE(near) << "coarse state (" << o << ", " << t << ")";
+    }
+  EXPECT_GT(kept, 1000u);
+  EXPECT_GT(same, kept * 4 / 5);  // 2,075 of 2,307 (90 %) keep the very same state
+}
+
+TEST(VisibilityGame, RefusesBadParametersAndHugeGrids) {
+  const Environment env = rect_room(6, 4);
+  GameParams p;
+  p.resolution = 0;
+  EXPECT_THROW(VisibilityGame(env, p), InputError);
+  p.resolution = 0.25;
+  p.speed_ratio = -1;
+  EXPECT_THROW(VisibilityGame(env, p), InputError);
+  p.speed_ratio = 0.5;
+  p.max_states = 1000;
+  EXPECT_THROW(VisibilityGame(env, p), InputError);
+}
