@@ -118,6 +118,7 @@ struct SimOptions {
   std::uint64_t seed = 1;
   double fov = 360, accel = 0, alpha = 0, speed_ratio = 0.5, start_spread = 0, heading_spread = 0;
   std::size_t lookahead_steps = 5, headings = 8;
+  double game_resolution = 0.25;
 };
 
 SimulationParams sim_params(const SimOptions& o) {
@@ -183,11 +184,13 @@ json step_json(const StepRecord& r, const SimulationParams& p, const geometry::V
   return j;
 }
 
-void run_simulate(const std::string& file, const SimulationParams& params, const std::string& svg, const std::string& log,
-                  bool as_json) {
+void run_simulate(const std::string& file, const SimulationParams& params, double game_resolution, const std::string& svg,
+                  const std::string& log, bool as_json) {
   const scene::Scene sc = scene::load_scene(file);
   const TrackingScenario s = TrackingScenario::from_scene(sc);
   SimulationParams p = params;
+  if (p.strategy == Strategy::Game || p.strategy == Strategy::RiskGame || p.policy == TargetPolicy::Game)
+    p.game = std::make_shared<const VisibilityGame>(*s.environment, game_params(s, p, game_resolution));
   std::ofstream log_out;
   std::optional<geometry::VisibilityIndex> index;
   if (!log.empty()) {
@@ -272,6 +275,12 @@ void run_evaluate(const std::vector<std::string>& files, const EvaluationParams&
                   {"median_escape_time", iv(c.median_escape)},
                   {"command_variation", {{"v", c.variation_v}, {"omega", c.variation_omega}}},
                   {"escape_times", c.escape_times}};
+      if (c.game_resolution > 0) {
+        std::vector<int> w(c.winnable.begin(), c.winnable.end());
+        row["game"] = {{"resolution", c.game_resolution}, {"winnable_runs", c.winnable_runs}, {"kept_winnable", c.kept_winnable},
+                       {"kept_winnable_fraction", iv(c.kept_winnable_fraction)}, {"game_policy_kept_on_grid", c.grid_kept},
+                       {"winnable", w}};
+      }
       if (c.strategy == Strategy::Risk) {
         std::size_t first = i;
         while (first > 0 && find(first - 1, c.strategy) == &c) --first;
@@ -282,25 +291,34 @@ void run_evaluate(const std::vector<std::string>& files, const EvaluationParams&
     json out = {{"seeds", ep.seeds}, {"steps", ep.steps}, {"accel", ep.accel}, {"alpha", ep.alpha},
                 {"start_spread", ep.start_spread}, {"heading_spread_degrees", ep.heading_spread * 180 / M_PI},
                 {"speed_ratio", ep.speed_ratio}, {"lookahead_steps", ep.lookahead_steps},
-                {"lookahead_headings", ep.lookahead_headings}, {"cells", rows}};
+                {"lookahead_headings", ep.lookahead_headings}, {"game_resolution", ep.game_resolution}, {"cells", rows}};
     print_json(out);
     return;
   }
+  const bool game = ep.game_resolution > 0;
   std::cout << "| scene | sensor | dynamics | target |";
-  for (Strategy s : ep.strategies) std::cout << " " << to_string(s) << ": lost, mean escape (s) [95% CI] |";
+  if (game) std::cout << " winnable starts | game policy on its grid: kept |";
+  for (Strategy s : ep.strategies)
+    std::cout << " " << to_string(s) << ": lost, mean escape (s) [95% CI]" << (game ? "; winnable kept [95% CI]" : "") << " |";
   const bool both = std::find(ep.strategies.begin(), ep.strategies.end(), Strategy::Risk) != ep.strategies.end() &&
                     std::find(ep.strategies.begin(), ep.strategies.end(), Strategy::Sde) != ep.strategies.end();
   if (both) std::cout << " risk - sde (s) [95% CI] |";
   std::cout << " command variation, omega (rad/s per s) |\n|---|---|---|---|";
-  for (std::size_t k = 0; k < ep.strategies.size() + (both ? 2 : 1); ++k) std::cout << "---|";
+  for (std::size_t k = 0; k < ep.strategies.size() + (both ? 2 : 1) + (game ? 2 : 0); ++k) std::cout << "---|";
   std::cout << "\n";
   for (std::size_t i = 0; i < cells.size(); i += ep.strategies.size()) {
     const CellResult& c = cells[i];
     std::cout << "| " << c.scene << " | " << c.fov << "° | " << (c.dynamics ? "yes" : "no") << " | " << to_string(c.policy) << " |";
+    if (game) std::cout << " " << c.winnable_runs << "/" << c.escape_times.size() << " | " << c.grid_kept << "/" << c.winnable_runs << " |";
     std::string tv;
     for (Strategy s : ep.strategies) {
       const CellResult* x = find(i, s);
-      std::cout << " " << x->escaped << "/" << x->escape_times.size() << ", " << interval(x->mean_escape) << " |";
+      std::cout << " " << x->escaped << "/" << x->escape_times.size() << ", " << interval(x->mean_escape);
+      if (game) {
+        std::cout << "; " << x->kept_winnable << "/" << x->winnable_runs;
+        if (x->winnable_runs) std::cout << " " << interval(Interval{100 * x->kept_winnable_fraction.value, 100 * x->kept_winnable_fraction.low, 100 * x->kept_winnable_fraction.high}, "%.0f%%");
+      }
+      std::cout << " |";
       char b[32];
       std::snprintf(b, sizeof b, "%s%.2f", tv.empty() ? "" : " / ", x->variation_omega);
       tv += b;
@@ -310,7 +328,106 @@ void run_evaluate(const std::vector<std::string>& files, const EvaluationParams&
   }
   std::cout << "(" << ep.seeds << " seeds per cell, " << ep.steps / 10.0 << " s each; a run never lost counts "
             << ep.steps / 10.0 << " s; starts spread " << ep.start_spread << " m and " << ep.heading_spread * 180 / M_PI
-            << " deg; dynamics: accel " << ep.accel << " m/s^2, alpha " << ep.alpha << " rad/s^2)\n";
+            << " deg; dynamics: accel " << ep.accel << " m/s^2, alpha " << ep.alpha << " rad/s^2";
+  if (game)
+    std::cout << "; winnable: the start, snapped to the visibility game's " << ep.game_resolution
+              << " m grid, is kept forever in the game at speed ratio " << ep.speed_ratio << ")\n";
+  else
+    std::cout << ")\n";
+}
+
+struct GameOptions {
+  double resolution = 0.25, speed_ratio = 0.5, range = 8, separation = -1;
+  std::string observer, target, svg;
+  std::size_t jobs = 0;
+  bool json = false;
+};
+
+std::string two_decimals(double x) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.2f", x);
+  return b;
+}
+
+void run_game(const std::string& file, const GameOptions& o) {
+  const scene::Scene sc = scene::load_scene(file);
+  const auto& env = sc.require_environment();
+  std::optional<Point> obs, tgt;
+  if (!o.observer.empty()) obs = parse_point(o.observer, "--observer");
+  else if (sc.tracking && sc.tracking->observer) obs = *sc.tracking->observer;
+  if (!o.target.empty()) tgt = parse_point(o.target, "--target");
+  else if (sc.tracking && sc.tracking->target) tgt = *sc.tracking->target;
+  GameParams gp;
+  gp.resolution = o.resolution;
+  gp.speed_ratio = o.speed_ratio;
+  gp.range = o.range > 0 ? o.range : std::numeric_limits<double>::infinity();
+  gp.separation = o.separation >= 0 ? o.separation : (sc.tracking ? sc.tracking->target_radius : 0.2) + 0.15;
+  gp.threads = static_cast<unsigned>(o.jobs);
+  if (!o.svg.empty() && !tgt) throw InputError("--svg draws the region for one target: give --target (the scene has no $.tracking.target)");
+  const VisibilityGame g(env, gp);
+  auto snap = [&](const Point& p, const char* flag) {
+    const std::uint32_t k = g.nearest(p);
+    if (k == VisibilityGame::kNoPoint)
+      throw InputError(std::string(flag) + " (" + geometry::format_number(p.x()) + ", " + geometry::format_number(p.y()) +
+                       "): no grid point of the game within two grid steps");
+    return k;
+  };
+  std::optional<std::uint32_t> go, gt;
+  if (tgt) gt = snap(*tgt, "--target");
+  if (obs && tgt) go = snap(*obs, "--observer");
+  if (!o.svg.empty()) {
+    std::ofstream f(o.svg);
+    f << game_region_figure(env, g, *gt, obs ? &*obs : nullptr,
+                            "where the observer keeps the target (speed ratio " + geometry::format_number(gp.speed_ratio) + ", " +
+                                geometry::format_number(gp.resolution) + " m grid)");
+    if (!f) throw InputError("--svg " + o.svg + ": cannot write file");
+  }
+  const GameStats& st = g.stats();
+  const double share = st.seen ? static_cast<double>(st.winning) / static_cast<double>(st.seen) : 0;
+  std::string start_text;
+  json start = nullptr;
+  if (go && gt) {
+    const std::uint32_t v = g.escape_steps(*go, *gt);
+    start = {{"observer", point_xy(g.point(*go))}, {"target", point_xy(g.point(*gt))}, {"kept", v == VisibilityGame::kForever},
+             {"escape_steps", v == VisibilityGame::kForever ? json(nullptr) : json(v)},
+             {"escape_time", v == VisibilityGame::kForever ? json(nullptr) : json(v * g.step_time())}};
+    start_text = "start, on the grid: observer (" + geometry::format_number(g.point(*go).x()) + ", " +
+                 geometry::format_number(g.point(*go).y()) + "), target (" + geometry::format_number(g.point(*gt).x()) + ", " +
+                 geometry::format_number(g.point(*gt).y()) + "): " +
+                 (v == VisibilityGame::kForever ? std::string("the observer keeps the target forever")
+                  : v == 0                      ? std::string("the observer does not see the target")
+                                                : "the target escapes within " + std::to_string(v) + " steps (" +
+                                                      two_decimals(v * g.step_time()) + " s) against every observer");
+  }
+  if (o.json) {
+    json j = {{"scene", sc.name.empty() ? file : sc.name},
+              {"resolution", gp.resolution}, {"speed_ratio", gp.speed_ratio},
+              {"range", std::isfinite(gp.range) ? json(gp.range) : json(nullptr)}, {"separation", gp.separation},
+              {"step_time", g.step_time()}, {"target_reach", g.target_reach()}, {"observer_reach", g.observer_reach()},
+              {"points", st.points}, {"states", st.states}, {"seen", st.seen}, {"kept", st.winning},
+              {"longest_escape_steps", st.levels}, {"memory_bytes", st.memory_bytes},
+              {"seconds", {{"sight", st.seconds_visibility}, {"induction", st.seconds_solve}}}, {"start", start}};
+    if (gt) {
+      json keepers = json::array();
+      for (std::uint32_t k : g.keeping_observers(*gt)) keepers.push_back(point_xy(g.point(k)));
+      j["keeping_observers"] = keepers;
+    }
+    print_json(j);
+    return;
+  }
+  std::cout << std::fixed << std::setprecision(2);
+  std::cout << (sc.name.empty() ? file : sc.name) << ": visibility game on a " << gp.resolution << " m grid, " << st.points
+            << " points, " << st.states << " states (speed ratio " << gp.speed_ratio << ", range "
+            << (std::isfinite(gp.range) ? geometry::format_number(gp.range) + " m" : std::string("unlimited")) << ", separation "
+            << gp.separation << " m; one step " << g.step_time() << " s: target " << g.target_reach() << " m, observer "
+            << g.observer_reach() << " m)\n";
+  std::cout << "solved in " << st.seconds_visibility + st.seconds_solve << " s (sight " << st.seconds_visibility
+            << " s, induction " << st.seconds_solve << " s), " << std::setprecision(0) << st.memory_bytes / 1e6
+            << " MB; escape times up to " << st.levels << " steps\n";
+  std::cout << "the observer keeps the target forever from " << st.winning << " of the " << st.seen
+            << " states where it sees it (" << std::setprecision(1) << 100 * share << " %)\n";
+  if (!start_text.empty()) std::cout << start_text << "\n";
+  if (gt) std::cout << "observer points that keep the target at its point: " << g.keeping_observers(*gt).size() << " of " << st.points << "\n";
 }
 
 // zlib says Z_BUF_ERROR ("unexpected end of file") when a gzip stream stops before its end.
@@ -520,8 +637,10 @@ void add_track_commands(CLI::App& app) {
   static SimOptions so;
   static bool s_json = false;
   s->add_option("scene", s_file, "Scene with a $.tracking slot (JSON)")->required();
-  s->add_option("--target-policy", so.policy, "scripted | random | adversarial | lookahead");
-  s->add_option("--strategy", so.strategy, "risk (escape risk, eq. 6) | sde (eq. 2) | naive (steer at the target)");
+  s->add_option("--target-policy", so.policy, "scripted | random | adversarial | lookahead | game (the visibility game's optimal escape)");
+  s->add_option("--strategy", so.strategy,
+                "risk (escape risk, eq. 6) | sde (eq. 2) | naive (steer at the target) | game (the visibility game's policy) | "
+                "risk-game (risk, overruled where the game's value is higher)");
   add_count(s, "--steps", so.steps, 1, 1000000, "TRACK iterations at 10 Hz");
   add_count(s, "--seed", so.seed, 0, INT64_MAX, "Seed of the range noise and of the random target");
   s->add_option("--fov", so.fov, "Sensor field of view: 360 or 180 degrees")->check(fov_check);
@@ -538,7 +657,9 @@ void add_track_commands(CLI::App& app) {
   add_json_flag(s, s_json, "JSON output with both trajectories and the commands");
   s->add_option("--svg", s_svg, "Draw both paths to this SVG file");
   s->add_option("--log", s_log, "Per step, one JSON line: tree, risk terms, gradient (and its check on the exact map), command");
-  s->callback([] { run_simulate(s_file, sim_params(so), s_svg, s_log, s_json); });
+  s->add_option("--game-resolution", so.game_resolution, "Grid of the visibility game the game strategies and target consult, m")
+      ->check(number_in(0, 100, true))->capture_default_str();
+  s->callback([] { run_simulate(s_file, sim_params(so), so.game_resolution, s_svg, s_log, s_json); });
 
   auto* v = cmd->add_subcommand("evaluate", "Strategies x target policies x sensors x dynamics over many seeds");
   set_examples(v, {"preimage track evaluate examples/tracking/box.json --seeds 5 --steps 100 --fov 360 --dynamics off"});
@@ -556,8 +677,11 @@ void add_track_commands(CLI::App& app) {
       ->check(CLI::IsMember({"off", "on"}))->delimiter(',')->capture_default_str();
   v->add_option("--accel", ep.accel, "Linear acceleration bound with dynamics, m/s^2")->check(number_in(0, 100, true))->capture_default_str();
   v->add_option("--alpha", ep.alpha, "Angular acceleration bound with dynamics, rad/s^2")->check(number_in(0, 1000, true))->capture_default_str();
-  v->add_option("--target-policy", v_policies, "Policies (default: scripted,random,adversarial,lookahead)")->delimiter(',');
-  v->add_option("--strategy", v_strategies, "Strategies (default: risk,sde,naive)")->delimiter(',');
+  v->add_option("--target-policy", v_policies, "Policies (default: scripted,random,adversarial,lookahead; also game)")->delimiter(',');
+  v->add_option("--strategy", v_strategies, "Strategies (default: risk,sde,naive; also game, risk-game)")->delimiter(',');
+  v->add_option("--game-resolution", ep.game_resolution,
+                "Grid of the visibility game that says which starts are winnable, m (0: no game)")
+      ->check(number_in(0, 100))->capture_default_str();
   v->add_option("--speed-ratio", ep.speed_ratio, "Adversarial and lookahead target speed / observer top speed")
       ->check(number_in(0, 10, true))->capture_default_str();
   add_count(v, "--lookahead-steps", ep.lookahead_steps, 1, 50, "Steps the lookahead target simulates ahead");
@@ -585,6 +709,24 @@ void add_track_commands(CLI::App& app) {
     }
     run_evaluate(v_files, ep, v_json, v_cdf);
   });
+
+  auto* gm = cmd->add_subcommand("game", "Ground truth: where an observer can keep the target in view forever (a grid game)");
+  set_examples(gm, {"preimage track game examples/tracking/box.json --svg region.svg",
+                    "preimage track game examples/tracking/lab.json --resolution 0.5 --speed-ratio 0.8 --json"});
+  static std::string g_file;
+  static GameOptions go;
+  gm->add_option("scene", g_file, "Scene (JSON)")->required();
+  gm->add_option("--resolution", go.resolution, "Grid spacing, m")->check(number_in(0, 100, true))->capture_default_str();
+  gm->add_option("--speed-ratio", go.speed_ratio, "Target speed / observer top speed (1 m/s)")->check(number_in(0, 10, true))->capture_default_str();
+  gm->add_option("--range", go.range, "Sensor range, m (0: unlimited)")->check(number_in(0, 1e6))->capture_default_str();
+  gm->add_option("--separation", go.separation, "The target this close to the observer is a loss, m (default: its radius + 0.15)")
+      ->check(number_in(0, 100));
+  gm->add_option("--observer", go.observer, "Observer X,Y for the start's verdict (default: $.tracking.observer)");
+  gm->add_option("--target", go.target, "Target X,Y (default: $.tracking.target)");
+  gm->add_option("--svg", go.svg, "Draw, for the target's point, where the observer keeps it");
+  add_count(gm, "--jobs", go.jobs, 0, 256, "Threads (0: the cores)");
+  add_json_flag(gm, go.json, "JSON output, with the keeping observer points");
+  gm->callback([] { run_game(g_file, go); });
 
   auto* r = cmd->add_subcommand("replay", "TRACK's local map and escape-path tree on a recorded laser log (CARMEN or text)");
   set_examples(r, {"preimage track replay examples/tracking/corridor_scans.txt",

@@ -25,17 +25,28 @@ void set_sensor(SimulationParams& p, double fov) {
   p.tracker.control.centre_target = fov != 360;
 }
 
+Interval wilson(std::size_t k, std::size_t n) {
+  if (n == 0) return {};
+  const double nn = static_cast<double>(n), p = static_cast<double>(k) / nn, z2 = kZ * kZ;
+  const double centre = (p + z2 / (2 * nn)) / (1 + z2 / nn);
+  const double half = kZ * std::sqrt(p * (1 - p) / nn + z2 / (4 * nn * nn)) / (1 + z2 / nn);
+  return {p, std::max(0.0, centre - half), std::min(1.0, centre + half)};
+}
+
 void summarise(CellResult& c) {
   const std::size_t n = c.escape_times.size();
   c.escaped = static_cast<std::size_t>(
       std::count_if(c.escape_times.begin(), c.escape_times.end(), [&](double t) { return t < c.horizon; }));
+  c.winnable_runs = c.kept_winnable = 0;
+  for (std::size_t i = 0; i < c.winnable.size() && i < n; ++i)
+    if (c.winnable[i]) {
+      ++c.winnable_runs;
+      c.kept_winnable += c.escape_times[i] >= c.horizon;
+    }
+  c.kept_winnable_fraction = wilson(c.kept_winnable, c.winnable_runs);
   if (n == 0) return;
   const double nn = static_cast<double>(n);
-  // Wilson score interval for the fraction escaped.
-  const double p = static_cast<double>(c.escaped) / nn, z2 = kZ * kZ;
-  const double centre = (p + z2 / (2 * nn)) / (1 + z2 / nn);
-  const double half = kZ * std::sqrt(p * (1 - p) / nn + z2 / (4 * nn * nn)) / (1 + z2 / nn);
-  c.escaped_fraction = {p, std::max(0.0, centre - half), std::min(1.0, centre + half)};
+  c.escaped_fraction = wilson(c.escaped, n);
   // Mean of the escape times (each at most the horizon).
   double sum = 0;
   for (double t : c.escape_times) sum += t;
@@ -92,7 +103,33 @@ std::vector<CellResult> evaluate(const std::vector<TrackingScenario>& scenarios,
     SimulationParams probe;
     set_sensor(probe, c.fov);  // reject a bad sensor before any thread starts
   }
+  // One game per scene: it depends on the speeds, the laser's range and the target's
+  // radius, the same for every cell of the scene (the sensor's cone is not part of it).
+  std::vector<std::shared_ptr<const VisibilityGame>> games(scenarios.size());
+  const bool wants_game = std::any_of(ep.strategies.begin(), ep.strategies.end(),
+                                      [](Strategy s) { return s == Strategy::Game || s == Strategy::RiskGame; }) ||
+                          std::find(ep.policies.begin(), ep.policies.end(), TargetPolicy::Game) != ep.policies.end();
+  if (ep.game_resolution > 0) {
+    for (std::size_t s = 0; s < scenarios.size(); ++s) {
+      SimulationParams probe;
+      probe.speed_ratio = ep.speed_ratio;
+      GameParams gp = game_params(scenarios[s], probe, ep.game_resolution);
+      gp.threads = static_cast<unsigned>(std::max<std::size_t>(ep.jobs, 1));
+      try {
+        games[s] = std::make_shared<const VisibilityGame>(*scenarios[s].environment, gp);
+      } catch (const InputError& e) {
+        throw InputError(scenarios[s].name + ": " + e.what());
+      }
+    }
+    for (auto& c : cells) {
+      c.game_resolution = ep.game_resolution;
+      c.winnable.assign(ep.seeds, 0);
+    }
+  } else if (wants_game) {
+    throw InputError("the game strategies and the game target need the game (a game resolution above 0)");
+  }
   std::vector<double> var_v(cells.size() * ep.seeds), var_w(cells.size() * ep.seeds);
+  std::vector<char> grid_kept(cells.size() * ep.seeds, 0);
   const std::size_t total = cells.size() * ep.seeds;
   std::atomic<std::size_t> next{0};
   std::size_t done = 0;
@@ -121,8 +158,20 @@ std::vector<CellResult> evaluate(const std::vector<TrackingScenario>& scenarios,
           p.alpha = ep.alpha;
         }
         p.stop_at_escape = true;
+        p.game = games[scenario_of[ci]];
         const SimulationResult r = simulate(scenarios[scenario_of[ci]], p);
         c.escape_times[seed - 1] = r.escape_time >= 0 ? r.escape_time : horizon;  // distinct slots: no lock
+        if (p.game) {
+          const VisibilityGame& g = *p.game;
+          const std::uint32_t go = g.nearest(r.observer.front().position), gt = g.nearest(r.target.front());
+          const bool win = go != VisibilityGame::kNoPoint && gt != VisibilityGame::kNoPoint && g.keeps(go, gt);
+          c.winnable[seed - 1] = win;
+          if (win) {
+            const auto steps = static_cast<std::size_t>(std::ceil(horizon / g.step_time()));
+            const auto optimal = [&](std::uint32_t a, std::uint32_t b) { return g.target_policy(a, b); };
+            if (play(g, go, gt, steps, optimal) == VisibilityGame::kForever) grid_kept[i] = 1;
+          }
+        }
         var_v[i] = r.variation_v();
         var_w[i] = r.variation_omega();
       } catch (const InputError& e) {  // say which run
@@ -158,6 +207,8 @@ std::vector<CellResult> evaluate(const std::vector<TrackingScenario>& scenarios,
     }
     cells[ci].variation_v = ep.seeds ? sv / static_cast<double>(ep.seeds) : 0;
     cells[ci].variation_omega = ep.seeds ? sw / static_cast<double>(ep.seeds) : 0;
+    cells[ci].grid_kept = static_cast<std::size_t>(std::count(grid_kept.begin() + static_cast<std::ptrdiff_t>(ci * ep.seeds),
+                                                              grid_kept.begin() + static_cast<std::ptrdiff_t>((ci + 1) * ep.seeds), 1));
     summarise(cells[ci]);
   }
   return cells;
@@ -170,10 +221,19 @@ const char* strategy_colour(Strategy s) {
     case Strategy::Risk: return "#d62728";
     case Strategy::Sde: return "#1f77b4";
     case Strategy::Naive: return "#7f7f7f";
+    case Strategy::Game: return "#2ca02c";
+    case Strategy::RiskGame: return "#9467bd";
   }
   return "#000";
 }
-const char* strategy_dash(Strategy s) { return s == Strategy::Risk ? "" : s == Strategy::Sde ? "6 3" : "2 3"; }
+const char* strategy_dash(Strategy s) {
+  switch (s) {
+    case Strategy::Risk: case Strategy::Game: return "";
+    case Strategy::Sde: case Strategy::RiskGame: return "6 3";
+    case Strategy::Naive: return "2 3";
+  }
+  return "";
+}
 
 std::string fmt(const char* f, double v) {
   char b[64];
@@ -232,7 +292,8 @@ std::string escape_time_cdf_figure(const std::vector<CellResult>& cells, const s
                        std::to_string(c->escape_times.size()) + " lost by " + fmt("%.0f s", c->horizon));
     }
   }
-  for (Strategy s : {Strategy::Risk, Strategy::Sde, Strategy::Naive})
+  for (Strategy s : {Strategy::Risk, Strategy::Sde, Strategy::Naive, Strategy::Game, Strategy::RiskGame})
+    if (std::any_of(cells.begin(), cells.end(), [&](const CellResult& c) { return c.strategy == s; }))
     svg.legend(std::string(to_string(s)) + ": fraction of runs that lost the target by time t",
                render::Style{"none", strategy_colour(s), 1.8, 1.0, strategy_dash(s)});
   return svg.str();

@@ -128,4 +128,38 @@ std::string tracking_run_figure(const geometry::Environment& env, const Simulati
   return c.str();
 }
 
+std::string game_region_figure(const geometry::Environment& env, const VisibilityGame& g, std::uint32_t target,
+                               const Point* observer, const std::string& title) {
+  render::SvgCanvas c(env.bbox(), 720);
+  const double h = g.params().resolution / 2;
+  std::uint32_t longest = 1;
+  for (std::uint32_t o = 0; o < g.num_points(); ++o)
+    if (!g.keeps(o, target)) longest = std::max(longest, g.escape_steps(o, target));
+  const render::Style keep{"#2ca02c", "none", 0, 0.75, ""};
+  for (std::uint32_t o = 0; o < g.num_points(); ++o) {
+    const Point& p = g.point(o);
+    const std::vector<Point> sq{Point(p.x() - h, p.y() - h), Point(p.x() + h, p.y() - h), Point(p.x() + h, p.y() + h),
+                                Point(p.x() - h, p.y() + h)};
+    const std::uint32_t v = g.escape_steps(o, target);
+    if (v == VisibilityGame::kForever) {
+      c.polygon(sq, keep);
+    } else if (v > 0) {
+      // Orange, darker the longer the target needs to escape.
+      const double f = static_cast<double>(v) / static_cast<double>(longest);
+      c.polygon(sq, render::Style{"#ff7f0e", "none", 0, 0.15 + 0.6 * f, ""});
+    }
+  }
+  c.environment(env);
+  c.legend("observer keeps the target forever", keep);
+  c.legend("target escapes (darker: later; white: at once)", render::Style{"#ff7f0e", "none", 0, 0.6, ""});
+  c.point(g.point(target), 6, render::Style{"#1f77b4", "#222", 1, 1.0, ""}, "target");
+  c.legend("target", render::Style{"#1f77b4", "#222", 1, 1.0, ""});
+  if (observer) {
+    c.point(*observer, 6, render::Style{"#d62728", "#222", 1, 1.0, ""}, "observer");
+    c.legend("observer", render::Style{"#d62728", "#222", 1, 1.0, ""});
+  }
+  c.label(Point(env.bbox().xmin(), env.bbox().ymax() + 0.02 * (env.bbox().ymax() - env.bbox().ymin())), title, 12);
+  return c.str();
+}
+
 }  // namespace preimage::tracking

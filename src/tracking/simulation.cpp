@@ -19,6 +19,7 @@ const char* to_string(TargetPolicy p) {
     case TargetPolicy::Random: return "random";
     case TargetPolicy::Adversarial: return "adversarial";
     case TargetPolicy::Lookahead: return "lookahead";
+    case TargetPolicy::Game: return "game";
   }
   return "?";
 }
@@ -27,18 +28,20 @@ const char* to_string(Strategy s) {
     case Strategy::Risk: return "risk";
     case Strategy::Sde: return "sde";
     case Strategy::Naive: return "naive";
+    case Strategy::Game: return "game";
+    case Strategy::RiskGame: return "risk-game";
   }
   return "?";
 }
 TargetPolicy parse_target_policy(const std::string& s) {
-  for (auto p : {TargetPolicy::Scripted, TargetPolicy::Random, TargetPolicy::Adversarial, TargetPolicy::Lookahead})
+  for (auto p : {TargetPolicy::Scripted, TargetPolicy::Random, TargetPolicy::Adversarial, TargetPolicy::Lookahead, TargetPolicy::Game})
     if (s == to_string(p)) return p;
-  throw InputError("--target-policy: expected scripted, random, adversarial or lookahead, got \"" + s + "\"");
+  throw InputError("--target-policy: expected scripted, random, adversarial, lookahead or game, got \"" + s + "\"");
 }
 Strategy parse_strategy(const std::string& s) {
-  for (auto p : {Strategy::Risk, Strategy::Sde, Strategy::Naive})
+  for (auto p : {Strategy::Risk, Strategy::Sde, Strategy::Naive, Strategy::Game, Strategy::RiskGame})
     if (s == to_string(p)) return p;
-  throw InputError("--strategy: expected risk, sde or naive, got \"" + s + "\"");
+  throw InputError("--strategy: expected risk, sde, naive, game or risk-game, got \"" + s + "\"");
 }
 
 namespace {
@@ -205,7 +208,21 @@ class World {
     const Command naive = naive_command(to_sensor(o.pose, o.estimate), tp_.control);
     if (sp_.strategy == Strategy::Risk) return ts.tracked ? ts.control.command : naive;
     if (sp_.strategy == Strategy::Sde) return sde_command(o, naive);
+    if (sp_.strategy == Strategy::Game) return game_command(o, naive, true);
+    if (sp_.strategy == Strategy::RiskGame) return game_command(o, ts.tracked ? ts.control.command : naive, false);
     return naive;
+  }
+
+  // The game target's step: towards the grid point of the game's optimal escape from the
+  // nearest grid state, straight, if that step is free.
+  Point game_target_step(const Point& observer, const Point& t, double step) const {
+    const VisibilityGame& g = *sp_.game;
+    const std::uint32_t go = g.nearest(observer), gt = g.nearest(t);
+    if (go == VisibilityGame::kNoPoint || gt == VisibilityGame::kNoPoint) return t;
+    const Point goal = g.point(g.target_policy(go, gt));
+    const double d = planar_distance(t, goal);
+    if (d == 0) return t;
+    return target_step(t, d <= step ? goal : offset(t, (vec(goal) - vec(t)) * (step / d)));
   }
 
   // Dynamics, then unicycle kinematics (equation 5) over one period. A blocked move stops
@@ -215,11 +232,14 @@ class World {
     Command u = cmd;
     if (sp_.accel > 0) u.v = o.velocity.v + std::clamp(cmd.v - o.velocity.v, -sp_.accel * dt, sp_.accel * dt);
     if (sp_.alpha > 0) u.omega = o.velocity.omega + std::clamp(cmd.omega - o.velocity.omega, -sp_.alpha * dt, sp_.alpha * dt);
+    if (sp_.accel > 0) u.lateral = o.velocity.lateral + std::clamp(cmd.lateral - o.velocity.lateral, -sp_.accel * dt, sp_.accel * dt);
     const double th = o.pose.heading + u.omega * dt;
-    const Point p(o.pose.position.x() + u.v * dt * std::cos(th), o.pose.position.y() + u.v * dt * std::sin(th));
+    // Forward along the new heading, sideways to its left (a holonomic base only).
+    const Point p(o.pose.position.x() + (u.v * std::cos(th) - u.lateral * std::sin(th)) * dt,
+                  o.pose.position.y() + (u.v * std::sin(th) + u.lateral * std::cos(th)) * dt);
     o.pose.heading = th;
-    if (u.v != 0 && can_move(o.pose.position, p, t)) o.pose.position = p;
-    else u.v = 0;
+    if ((u.v != 0 || u.lateral != 0) && can_move(o.pose.position, p, t)) o.pose.position = p;
+    else u.v = u.lateral = 0;
     o.velocity = u;
   }
 
@@ -325,6 +345,115 @@ class World {
     }
   }
 
+  // The game's grid points around a continuous target position: its nearest point and the
+  // free corners of the grid cell it lies in. The game is played on the grid; a target
+  // between grid points may be seen from where its nearest point is not, and the other way
+  // round, so the strategies below judge a position by the worst of these.
+  std::vector<std::uint32_t> target_cell(const Point& t) const {
+    const VisibilityGame& g = *sp_.game;
+    std::vector<std::uint32_t> out;
+    const std::uint32_t n = g.nearest(t);
+    if (n == VisibilityGame::kNoPoint) return out;
+    out.push_back(n);
+    const double h = g.params().resolution;
+    for (std::uint32_t q : g.observer_moves(n))  // the grid points within the observer's reach, a superset of the cell
+      if (std::abs(g.point(q).x() - t.x()) < h && std::abs(g.point(q).y() - t.y()) < h && q != n) out.push_back(q);
+    return out;
+  }
+  // How good the observer at grid point q is against a target in `cell` (its nearest grid
+  // point first): the game's value for the nearest point, then how many of the cell's
+  // points it keeps, then how many (target point, target move) pairs it can still answer
+  // keeping — the margin against the next step.
+  struct RobustValue {
+    std::uint32_t value = 0;
+    std::size_t corners = 0, margin = 0;
+    auto operator<=>(const RobustValue&) const = default;
+  };
+  RobustValue robust_value(std::uint32_t q, const std::vector<std::uint32_t>& cell) const {
+    const VisibilityGame& g = *sp_.game;
+    RobustValue r;
+    r.value = g.escape_steps(q, cell.front());
+    for (std::uint32_t t : cell) {
+      r.corners += g.keeps(q, t);
+      for (std::uint32_t m : g.target_moves(t)) r.margin += g.answer_value(q, m) == VisibilityGame::kForever;
+    }
+    return r;
+  }
+
+  // Strategy::Game (follow_policy) and Strategy::RiskGame. The goal is the observer's grid
+  // move (within one game step) with the best robust value, then margin, then the shortest
+  // move. Of `preferred` and a fan of commands (backwards too where the sensor allows), the
+  // one whose next pose (a) still has the estimate in the sensor, (b) has the best robust
+  // value, and (c) ends nearest the goal (Game) or is nearest `preferred` (RiskGame). Like
+  // eq. (2)'s baseline, it predicts one period without the dynamics.
+  Command game_command(const Observer& o, const Command& preferred, bool follow_policy) const {
+    const VisibilityGame& g = *sp_.game;
+    const ControlParams& cp = tp_.control;
+    const double dt = sp_.dt;
+    const std::vector<std::uint32_t> cell = target_cell(o.estimate);
+    const std::uint32_t go = g.nearest(o.pose.position);
+    if (cell.empty() || go == VisibilityGame::kNoPoint) return preferred;
+    Point goal = g.point(go);
+    {
+      RobustValue best;
+      double best_len = 1e300;
+      for (std::uint32_t q : g.observer_moves(go)) {
+        const auto v = robust_value(q, cell);
+        const double len = planar_distance(g.point(q), o.pose.position);
+        if (v > best || (v == best && len < best_len)) {
+          best = v;
+          best_len = len;
+          goal = g.point(q);
+        }
+      }
+    }
+    bool best_sees = false;
+    std::uint32_t best_value = 0;
+    double best_cost = 1e300;
+    Command cmd = preferred;
+    bool any = false;
+    auto consider = [&](const Command& c) {
+      const double th = o.pose.heading + c.omega * dt;
+      const Point p(o.pose.position.x() + c.v * dt * std::cos(th), o.pose.position.y() + c.v * dt * std::sin(th));
+      if (c.v != 0 && !can_move(o.pose.position, p, o.estimate)) return;
+      const bool in_view = sees(Pose{p, th}, o.estimate);
+      const std::uint32_t q = g.nearest(p);
+      const std::uint32_t value = q == VisibilityGame::kNoPoint ? 0 : g.escape_steps(q, cell.front());
+      const double cost = follow_policy ? planar_distance(p, goal) : std::abs(c.v - preferred.v) + std::abs(c.omega - preferred.omega);
+      if (!any || in_view > best_sees || (in_view == best_sees && (value > best_value || (value == best_value && cost < best_cost)))) {
+        any = true;
+        best_sees = in_view;
+        best_value = value;
+        best_cost = cost;
+        cmd = c;
+      }
+    };
+    if (follow_policy) {
+      // The game's own observer is holonomic with a sensor that turns freely: straight
+      // towards the goal at up to v_max (a fraction of the way, so that it stops on the
+      // grid point), the body turning to face the target at up to omega_max.
+      const Vec2 d = vec(goal) - vec(o.pose.position);
+      const double len = d.norm(), speed = std::min(cp.v_max, len / dt);
+      const double c = std::cos(o.pose.heading), s = std::sin(o.pose.heading);
+      Command h;
+      if (len > 0) {
+        h.v = speed * (c * d.x + s * d.y) / len;
+        h.lateral = speed * (-s * d.x + c * d.y) / len;
+      }
+      const Vec2 to_target = vec(o.estimate) - vec(o.pose.position);
+      double turn = std::atan2(to_target.y, to_target.x) - o.pose.heading;
+      turn = std::remainder(turn, 2 * M_PI);
+      h.omega = std::clamp(turn / dt, -cp.omega_max, cp.omega_max);
+      return h;
+    }
+    consider(preferred);
+    for (double fv : {-1.0, -0.5, 0.0, 0.5, 1.0}) {
+      if (fv < 0 && !cp.reverse) continue;
+      for (double fw : {-1.0, -0.5, -0.25, 0.0, 0.25, 0.5, 1.0}) consider(Command{fv * cp.v_max, fw * cp.omega_max});
+    }
+    return cmd;
+  }
+
   // Equation (2): the control whose next position maximises SDE for the target where it
   // is believed to be now. The baseline is given the map: SDE comes from the exact V there.
   Command sde_command(const Observer& o, const Command& naive) const {
@@ -379,7 +508,20 @@ double variation(const std::vector<Command>& cmds, double dt, double Command::*f
 double SimulationResult::variation_v() const { return variation(commands, dt, &Command::v); }
 double SimulationResult::variation_omega() const { return variation(commands, dt, &Command::omega); }
 
+GameParams game_params(const TrackingScenario& sc, const SimulationParams& sp, double resolution) {
+  GameParams g;
+  g.resolution = resolution;
+  g.observer_speed = sp.tracker.control.v_max;
+  g.speed_ratio = sp.speed_ratio;
+  g.range = sp.laser.max_range;
+  g.separation = sc.target.radius + 0.15;  // World::can_move keeps the observer this far off
+  return g;
+}
+
 SimulationResult simulate(const TrackingScenario& sc, const SimulationParams& sp) {
+  if (!sp.game && (sp.strategy == Strategy::Game || sp.strategy == Strategy::RiskGame || sp.policy == TargetPolicy::Game))
+    throw InputError(std::string("the ") + (sp.policy == TargetPolicy::Game ? "game target policy" : "game strategies") +
+                     " need a solved visibility game");
   const World world(sc, sp);
   const geometry::Environment& env = world.env();
   std::mt19937_64 rng(sp.seed);
@@ -466,6 +608,7 @@ SimulationResult simulate(const TrackingScenario& sc, const SimulationParams& sp
       }
       case TargetPolicy::Adversarial: t = world.escape_step(o.pose.position, t, chase * sp.dt, plan); break;
       case TargetPolicy::Lookahead: t = world.lookahead_step(o, t, chase * sp.dt); break;
+      case TargetPolicy::Game: t = world.game_target_step(o.pose.position, t, chase * sp.dt); break;
     }
     out.target_length += planar_distance(t_before, t);
   }

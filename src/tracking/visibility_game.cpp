@@ -114,6 +114,16 @@ VisibilityGame::VisibilityGame(const geometry::Environment& env, const GameParam
       bool seen = CGAL::compare_squared_distance(a, b, sep2) != CGAL::SMALLER;
       if (seen && std::isfinite(p.range)) seen = CGAL::compare_squared_distance(a, b, range2) != CGAL::LARGER;
       if (seen) seen = index.visible(a, b);
+      // A line of sight that only touches an obstacle corner is not kept: the least motion
+      // of either player breaks it, and on a grid aligned with the obstacles' coordinates
+      // such lines are everywhere (they made the game keep targets a continuous observer
+      // loses at once). Exact: no environment vertex strictly inside the segment.
+      if (seen)
+        for (const Point& v : env.vertices())
+          if (CGAL::collinear(a, v, b) && CGAL::collinear_are_strictly_ordered_along_line(a, v, b)) {
+            seen = false;
+            break;
+          }
       if (!seen) level_[o * n + t] = 0;
     }
   });

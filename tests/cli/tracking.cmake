@@ -11,7 +11,7 @@ cli_test(track_ept_observer_in_obstacle fail "--observer 4.1,4.1: not in the ope
 cli_test(track_simulate 0 "^escape time: never \\(kept in sight\\)$" - track simulate ${TRACKING}/corridor.json --svg ${OUT}/run.svg)
 cli_test(track_simulate_adversarial 0 "^visible: [0-9.]+% of the time$" - track simulate ${TRACKING}/box.json --target-policy adversarial --strategy sde --steps 50)
 cli_test(track_simulate_cone 0 "^path length: observer" - track simulate ${TRACKING}/lab.json --fov 180 --target-policy random --seed 4 --steps 100)
-cli_test(track_simulate_bad_policy fail "--target-policy: expected scripted, random, adversarial or lookahead, got \"x\"" - track simulate ${TRACKING}/box.json --target-policy x)
+cli_test(track_simulate_bad_policy fail "--target-policy: expected scripted, random, adversarial, lookahead or game, got \"x\"" - track simulate ${TRACKING}/box.json --target-policy x)
 cli_test(track_simulate_lookahead 0 "^escape time: " - track simulate ${TRACKING}/box.json --target-policy lookahead --steps 40 --headings 8 --lookahead-steps 3)
 cli_test(track_simulate_dynamics 0 "^command variation: [0-9.]+ m/s and [0-9.]+ rad/s per second$" - track simulate ${TRACKING}/lab.json --target-policy random --accel 0.5 --alpha 1.5 --steps 60)
 cli_test(track_simulate_log 0 "^escape time: " ${OUT}/box-steps.jsonl track simulate ${TRACKING}/box.json --target-policy adversarial --steps 30 --log ${OUT}/box-steps.jsonl)
@@ -31,7 +31,7 @@ cli_test(track_ept_huge_m fail "--m: expected an integer from 0 to 16, got 21474
 cli_test(track_ept_negative_m fail "--m: expected an integer from 0 to 16, got -1" - track ept ${TRACKING}/box.json --m -1)
 cli_test(track_ept_bad_radius fail "--radius: expected a number in \\(0, 100\\], got -0.2" - track ept ${TRACKING}/box.json --radius -0.2)
 cli_test(track_simulate_no_slot fail "the scene has no \"tracking\" slot" - track simulate ${EXAMPLES}/gallery.json)
-cli_test(track_evaluate 0 "^\\| cardboard box \\(Fig. 6b\\) \\| 180° \\| yes \\| lookahead \\| [0-2]/2, " - track evaluate ${TRACKING}/box.json --seeds 2 --steps 20 --headings 4 --lookahead-steps 2)
+cli_test(track_evaluate 0 "^\\| cardboard box \\(Fig. 6b\\) \\| 180° \\| yes \\| lookahead \\| [0-2]/2 \\| [0-2]/[0-2] \\| [0-2]/2, " - track evaluate ${TRACKING}/box.json --seeds 2 --steps 20 --headings 4 --lookahead-steps 2)
 cli_test(track_evaluate_json 0 "\"minus_sde\":\\{" - track evaluate ${TRACKING}/box.json --seeds 2 --steps 20 --fov 360 --dynamics off --target-policy adversarial --json)
 cli_test(track_evaluate_cdf 0 "^\\| cardboard box" ${OUT}/cdf.svg track evaluate ${TRACKING}/box.json --seeds 2 --steps 20 --fov 180 --dynamics on --target-policy random,adversarial --strategy risk,sde --cdf-svg ${OUT}/cdf.svg)
 cli_test(track_evaluate_zero_seeds fail "--seeds: expected an integer from 1 to 10000, got 0" - track evaluate ${TRACKING}/box.json --seeds 0)
@@ -40,7 +40,7 @@ cli_test(track_evaluate_negative_steps fail "--steps: expected an integer from 1
 cli_test(track_evaluate_bad_fov fail "--fov: expected 180 or 360, got '90'" - track evaluate ${TRACKING}/box.json --fov 360,90)
 cli_test(track_evaluate_bad_dynamics fail "--dynamics: " - track evaluate ${TRACKING}/box.json --dynamics maybe)
 cli_test(track_evaluate_bad_jobs fail "--jobs: expected an integer from 1 to 256, got 0" - track evaluate ${TRACKING}/box.json --jobs 0)
-cli_test(track_evaluate_bad_strategy fail "--strategy: expected risk, sde or naive, got \"x\"" - track evaluate ${TRACKING}/box.json --strategy risk,x)
+cli_test(track_evaluate_bad_strategy fail "--strategy: expected risk, sde, naive, game or risk-game, got \"x\"" - track evaluate ${TRACKING}/box.json --strategy risk,x)
 cli_test(track_replay_fixture 0 "^1 scan replayed" - track replay ${FIX}/scans/aces_scan49_target_on_radial_edge.log)
 cli_test(track_replay_svg_of_chosen_scans 0 "^6 scans replayed" ${OUT}/replay_scans.svg
          track replay ${EXAMPLES}/tracking/corridor_scans.txt --scans 0-3,5,4 --svg ${OUT}/replay_scans.svg)
@@ -70,3 +70,15 @@ add_test(NAME cli.track_simulate_huge_steps_progress_interrupted
 add_test(NAME cli.track_evaluate_huge_seeds_progress_interrupted
   COMMAND bash -c "cmd=\"timeout -s INT 2.5 $0 track evaluate $1 --seeds 10000\"; out=$(script -qec \"$cmd\" /dev/null); rc=$?; echo \"$out\"; [ $rc -eq 124 ] && grep -Eq 'evaluate: [0-9]+ of 480000' <<<\"$out\""
           $<TARGET_FILE:preimage_cli> ${TRACKING}/box.json)
+
+# The visibility game (ground truth): the box start is kept at 0.25 m, the chairs' start is not.
+cli_test(track_game_box 0 "^start, on the grid: observer \\(1, 3\\), target \\(5.25, 3\\): the observer keeps the target forever$" ${OUT}/game-box.svg track game ${TRACKING}/box.json --svg ${OUT}/game-box.svg)
+cli_test(track_game_chairs 0 "the target escapes within 12 steps \\(8.49 s\\) against every observer" - track game ${TRACKING}/chair.json)
+cli_test(track_game_json 0 "\"keeping_observers\":\\[" - track game ${TRACKING}/lab.json --resolution 0.5 --json)
+cli_test(track_game_zero_resolution fail "--resolution: expected a number in" - track game ${TRACKING}/box.json --resolution 0)
+cli_test(track_game_huge_grid fail "game: .* states, more than the limit" - track game ${TRACKING}/box.json --resolution 0.01)
+cli_test(track_game_target_outside fail "--target \\(50, 50\\): no grid point of the game within two grid steps" - track game ${TRACKING}/box.json --target 50,50)
+cli_test(track_simulate_game 0 "^escape time: " - track simulate ${TRACKING}/box.json --strategy game --target-policy game --steps 40 --game-resolution 0.5)
+cli_test(track_simulate_risk_game 0 "^escape time: " - track simulate ${TRACKING}/lab.json --strategy risk-game --target-policy adversarial --steps 40 --game-resolution 0.5)
+cli_test(track_evaluate_game 0 "\"kept_winnable_fraction\":\\{" - track evaluate ${TRACKING}/box.json --seeds 2 --steps 20 --fov 360 --dynamics off --target-policy adversarial,game --strategy risk,game,risk-game --game-resolution 0.5 --json)
+cli_test(track_evaluate_game_off fail "the game strategies and the game target need the game" - track evaluate ${TRACKING}/box.json --seeds 1 --steps 5 --strategy game --game-resolution 0)

@@ -48,7 +48,9 @@ std::vector<std::uint32_t> brute_force(const Environment& env, const VisibilityG
   for (std::uint32_t o = 0; o < n; ++o)
     for (std::uint32_t t = 0; t < n; ++t) {
       const double d = dist(g.point(o), g.point(t));
-      seen[o * n + t] = d >= p.separation && d <= p.range && geometry::visible(env, g.point(o), g.point(t));
+      bool grazes = false;  // a sight line through an obstacle corner does not count
+      for (const Point& v : env.vertices()) grazes = grazes || (CGAL::collinear(g.point(o), v, g.point(t)) && CGAL::collinear_are_strictly_ordered_along_line(g.point(o), v, g.point(t)));
+      seen[o * n + t] = d >= p.separation && d <= p.range && geometry::visible(env, g.point(o), g.point(t)) && !grazes;
     }
   std::vector<std::uint32_t> v(n * n);
   for (std::size_t s = 0; s < n * n; ++s) v[s] = seen[s] ? kForever : 0;

@@ -32,6 +32,10 @@ struct EvaluationParams {
   /// the scene's start, so that the seeds sample situations, not only range noise.
   double start_spread = 0.5, heading_spread = 15 * M_PI / 180;
   std::size_t jobs = 1;             // worker threads
+  /// The visibility game that says which starts are winnable (and that the game
+  /// strategies and target consult) is solved per scene at this grid resolution (m); 0:
+  /// no game (then no game strategy or target either).
+  double game_resolution = 0.25;
 };
 
 /// A two-sided 95% interval about an estimate.
@@ -52,7 +56,19 @@ struct CellResult {
   Interval mean_escape;              // mean of min(t_esc, horizon), normal interval
   Interval median_escape;            // distribution-free (order statistics) interval
   double variation_v = 0, variation_omega = 0;  // mean total variation of the commands per second
+  /// Against the game: per seed, whether the start (both players snapped to the game's
+  /// grid) is kept forever in the game; how many are, how many of those runs this
+  /// strategy kept for the whole horizon (Wilson interval of the fraction), and how many
+  /// the game's own policy keeps, played on its grid against the game's optimal target
+  /// for the horizon (a check of the solver: it must be all of them).
+  double game_resolution = 0;  // 0: no game in this evaluation
+  std::vector<char> winnable;
+  std::size_t winnable_runs = 0, kept_winnable = 0, grid_kept = 0;
+  Interval kept_winnable_fraction;
 };
+
+/// Wilson score 95% interval for k successes of n.
+Interval wilson(std::size_t k, std::size_t n);
 
 /// Runs every cell's seeds (1..seeds) on `jobs` threads, stopping each run at the first
 /// loss of sight. `progress(done, total)` is called after each run (from the calling

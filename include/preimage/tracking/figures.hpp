@@ -22,4 +22,10 @@ std::string replay_scan_figure(const ReplayScan& scan, const std::string& title,
 /// A closed-loop run: observer path, target path, where sight was lost.
 std::string tracking_run_figure(const geometry::Environment& env, const SimulationResult& run, const std::string& title);
 
+/// The visibility game's winning region for one target grid point: every observer grid
+/// point drawn as a square, green where the observer keeps the target forever, shaded by
+/// escape time elsewhere (white: lost at once); the target, and `observer` if given.
+std::string game_region_figure(const geometry::Environment& env, const VisibilityGame& game, std::uint32_t target,
+                               const Point* observer, const std::string& title);
+
 }  // namespace preimage::tracking

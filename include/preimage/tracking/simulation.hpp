@@ -9,8 +9,10 @@
 #include <preimage/geometry/visibility.hpp>
 #include <preimage/scene/scene.hpp>
 #include <preimage/tracking/tracker.hpp>
+#include <preimage/tracking/visibility_game.hpp>
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -26,11 +28,22 @@ namespace preimage::tracking {
 ///    observer's actual response (its strategy, run on noise-free scans), and takes the
 ///    first step of the one that leaves sight soonest; the adversarial move if none does
 ///    sooner than it. Re-planned every step.
+///  * Game: at speed_ratio x v_max, towards the grid point the solved visibility game's
+///    optimal escape (VisibilityGame::target_policy) picks for the nearest grid state;
+///    re-planned every step (needs SimulationParams::game).
 /// The random and planning targets pass obstacle corners their radius off: a disc wraps a
 /// corner (as the risk of eq. (3)-(4) assumes), and a path through the corner itself would
 /// put the target's centre on the boundary, where the adversary used to stall.
-enum class TargetPolicy { Scripted, Random, Adversarial, Lookahead };
-enum class Strategy { Risk, Sde, Naive };
+enum class TargetPolicy { Scripted, Random, Adversarial, Lookahead, Game };
+/// The observer's strategies: TRACK's risk descent, the SDE maximiser of eq. (2), the
+/// naive follower, and two that consult the solved visibility game (SimulationParams::game):
+///  * Game: the game's own observer — a holonomic base with a sensor that turns freely
+///    (Command::lateral) — heading straight for the grid point, within one game step, of
+///    the best game value against the target's grid cell (the worst over its corners),
+///    the body turning to face the target.
+///  * RiskGame: TRACK's risk command, unless another command of the fan reaches a state of
+///    larger game value; then the nearest such command to the risk command.
+enum class Strategy { Risk, Sde, Naive, Game, RiskGame };
 const char* to_string(TargetPolicy p);
 const char* to_string(Strategy s);
 TargetPolicy parse_target_policy(const std::string& s);  // InputError on anything else
@@ -85,7 +98,14 @@ struct SimulationParams {
   double start_spread = 0, heading_spread = 0;
   bool stop_at_escape = false;
   std::function<void(const StepRecord&)> on_step;  // called on every step but the last
+  /// The solved game for Strategy::Game, Strategy::RiskGame and TargetPolicy::Game
+  /// (InputError without it).
+  std::shared_ptr<const VisibilityGame> game;
 };
+
+/// The game a run's settings describe: the observer's v_max, the target's speed ratio, the
+/// laser's range and the target's radius + 0.15 m as the separation.
+GameParams game_params(const TrackingScenario& scenario, const SimulationParams& params, double resolution);
 
 struct SimulationResult {
   std::vector<Pose> observer;     // one per step, world frame, including the start

@@ -57,7 +57,9 @@ struct ControlParams {
   bool reverse = false;       // may the observer back up (needs a 360-deg sensor)
   bool centre_target = false; // a sensor cone: the regulator also turns to keep the target in it
 };
-struct Command { double v = 0, omega = 0; };
+/// A velocity command: forward speed (m/s), turn rate (rad/s), and a sideways speed
+/// (m/s, to the left) that only a holonomic base executes (the game strategy's observer).
+struct Command { double v = 0, omega = 0, lateral = 0; };
 
 /// The risk strategy's command and its parts (sensor frame, heading +x), for logging.
 struct ControlTerms {

@@ -3,8 +3,9 @@
 // view". Both players stand on the points of a grid over the free space; each step the
 // target moves first, up to its reach, along a free straight segment; the observer then
 // answers, up to its own reach. The observer loses when it no longer sees the target
-// (line of sight in the closed free space, decided exactly between grid points, and
-// within the sensor's range) or the target comes within `separation` of it.
+// (a line of sight through free space that touches no obstacle corner, decided exactly
+// between grid points, within the sensor's range) or the target comes within
+// `separation` of it.
 //
 // Backward value iteration over all (observer, target) pairs gives, for every state, the
 // number of steps in which the target can force a loss against every observer answer
