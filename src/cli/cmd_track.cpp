@@ -118,7 +118,7 @@ struct SimOptions {
   std::uint64_t seed = 1;
   double fov = 360, accel = 0, alpha = 0, speed_ratio = 0.5, start_spread = 0, heading_spread = 0;
   std::size_t lookahead_steps = 5, headings = 8;
-  double game_resolution = 0.25;
+  double game_resolution = 0.125;
 };
 
 SimulationParams sim_params(const SimOptions& o) {

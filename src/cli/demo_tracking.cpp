@@ -7,6 +7,7 @@
 
 #include <preimage/tracking/evaluation.hpp>
 #include <preimage/render/svg.hpp>
+#include <preimage/tracking/visibility_game.hpp>
 #include <preimage/tracking/figures.hpp>
 #include <preimage/tracking/replay.hpp>
 
@@ -106,6 +107,23 @@ void demo_tracking(DemoContext& ctx) {
                   diff.value, diff.low, diff.high);
     R.result(line);
   }
+
+  // Ground truth for the box: the visibility game at speed ratio 0.5 (tracking/visibility_game).
+  GameParams gp = game_params(b, SimulationParams{}, 0.25);
+  const VisibilityGame game(box, gp);
+  const std::uint32_t go = game.nearest(b.observer.position), gt = game.nearest(b.target.center);
+  ctx.figure("tracking-game-box.svg", game_region_figure(box, game, gt, &b.observer.position, "box, target at its start"),
+             "The visibility game on a 0.25 m grid, speed ratio 0.5, 8 m range: for the target at the box scene's start "
+             "(blue), the observer positions from which it keeps the target in view forever against every target "
+             "motion (green), and elsewhere how long the target needs to escape (orange, darker: later). The "
+             "observer's start (red) is inside the region.");
+  std::snprintf(line, sizeof line,
+                "box, visibility game at 0.25 m: %zu grid points, %zu states, kept forever from %.1f%% of the states where "
+                "the observer sees the target; the scene's start is %s",
+                game.stats().points, game.stats().states,
+                100.0 * static_cast<double>(game.stats().winning) / static_cast<double>(game.stats().seen),
+                game.keeps(go, gt) ? "kept" : "lost");
+  R.result(line);
 }
 
 }  // namespace preimage::cli

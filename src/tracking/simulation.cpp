@@ -10,6 +10,7 @@
 #include <limits>
 #include <optional>
 #include <random>
+#include <tuple>
 
 namespace preimage::tracking {
 
@@ -348,7 +349,7 @@ class World {
   // The game's grid points around a continuous target position: its nearest point and the
   // free corners of the grid cell it lies in. The game is played on the grid; a target
   // between grid points may be seen from where its nearest point is not, and the other way
-  // round, so the strategies below judge a position by the worst of these.
+  // round, so the strategies below judge a position against all of these.
   std::vector<std::uint32_t> target_cell(const Point& t) const {
     const VisibilityGame& g = *sp_.game;
     std::vector<std::uint32_t> out;
@@ -361,32 +362,30 @@ class World {
     return out;
   }
   // How good the observer at grid point q is against a target in `cell` (its nearest grid
-  // point first): the game's value for the nearest point, then how many of the cell's
-  // points it keeps, then how many (target point, target move) pairs it can still answer
-  // keeping — the margin against the next step.
+  // point first): the game's value for the nearest point; how many of the cell's points it
+  // keeps; and its depth in the keeping region, the number of (observer move from q, cell
+  // point) pairs that keep. The game's optimal play rides the border of the keeping
+  // region, where a continuous target between grid points escapes (the adversary did,
+  // in 2-7 s, from starts the game keeps); depth keeps the observer inside it.
   struct RobustValue {
     std::uint32_t value = 0;
-    std::size_t corners = 0, margin = 0;
+    std::size_t corners = 0, depth = 0;
     auto operator<=>(const RobustValue&) const = default;
   };
   RobustValue robust_value(std::uint32_t q, const std::vector<std::uint32_t>& cell) const {
     const VisibilityGame& g = *sp_.game;
     RobustValue r;
     r.value = g.escape_steps(q, cell.front());
-    for (std::uint32_t t : cell) {
-      r.corners += g.keeps(q, t);
-      for (std::uint32_t m : g.target_moves(t)) r.margin += g.answer_value(q, m) == VisibilityGame::kForever;
-    }
+    for (std::uint32_t t : cell) r.corners += g.keeps(q, t);
+    for (std::uint32_t m : g.observer_moves(q))
+      for (std::uint32_t t : cell) r.depth += g.keeps(m, t);
     return r;
   }
 
-  // Strategy::Game (follow_policy) and Strategy::RiskGame. The goal is the observer's grid
-  // move (within one game step) with the best robust value, then margin, then the shortest
-  // move. Of `preferred` and a fan of commands (backwards too where the sensor allows), the
-  // one whose next pose (a) still has the estimate in the sensor, (b) has the best robust
-  // value, and (c) ends nearest the goal (Game) or is nearest `preferred` (RiskGame). Like
-  // eq. (2)'s baseline, it predicts one period without the dynamics.
-  Command game_command(const Observer& o, const Command& preferred, bool follow_policy) const {
+  // Strategy::Game (holonomic) and Strategy::RiskGame (unicycle). The goal: of the
+  // observer's grid moves within one game step, the best robust value, then the nearest
+  // to the target (closing in shortens the line of sight the obstacles can cut).
+  Command game_command(const Observer& o, const Command& preferred, bool holonomic) const {
     const VisibilityGame& g = *sp_.game;
     const ControlParams& cp = tp_.control;
     const double dt = sp_.dt;
@@ -394,44 +393,21 @@ class World {
     const std::uint32_t go = g.nearest(o.pose.position);
     if (cell.empty() || go == VisibilityGame::kNoPoint) return preferred;
     Point goal = g.point(go);
-    {
-      RobustValue best;
-      double best_len = 1e300;
-      for (std::uint32_t q : g.observer_moves(go)) {
-        const auto v = robust_value(q, cell);
-        const double len = planar_distance(g.point(q), o.pose.position);
-        if (v > best || (v == best && len < best_len)) {
-          best = v;
-          best_len = len;
-          goal = g.point(q);
-        }
+    RobustValue best;
+    double best_len = 1e300;
+    for (std::uint32_t q : g.observer_moves(go)) {
+      const RobustValue v = robust_value(q, cell);
+      const double len = planar_distance(g.point(q), o.estimate);
+      if (v > best || (v == best && len < best_len)) {
+        best = v;
+        best_len = len;
+        goal = g.point(q);
       }
     }
-    bool best_sees = false;
-    std::uint32_t best_value = 0;
-    double best_cost = 1e300;
-    Command cmd = preferred;
-    bool any = false;
-    auto consider = [&](const Command& c) {
-      const double th = o.pose.heading + c.omega * dt;
-      const Point p(o.pose.position.x() + c.v * dt * std::cos(th), o.pose.position.y() + c.v * dt * std::sin(th));
-      if (c.v != 0 && !can_move(o.pose.position, p, o.estimate)) return;
-      const bool in_view = sees(Pose{p, th}, o.estimate);
-      const std::uint32_t q = g.nearest(p);
-      const std::uint32_t value = q == VisibilityGame::kNoPoint ? 0 : g.escape_steps(q, cell.front());
-      const double cost = follow_policy ? planar_distance(p, goal) : std::abs(c.v - preferred.v) + std::abs(c.omega - preferred.omega);
-      if (!any || in_view > best_sees || (in_view == best_sees && (value > best_value || (value == best_value && cost < best_cost)))) {
-        any = true;
-        best_sees = in_view;
-        best_value = value;
-        best_cost = cost;
-        cmd = c;
-      }
-    };
-    if (follow_policy) {
-      // The game's own observer is holonomic with a sensor that turns freely: straight
-      // towards the goal at up to v_max (a fraction of the way, so that it stops on the
-      // grid point), the body turning to face the target at up to omega_max.
+    if (holonomic) {
+      // The game's own observer: a holonomic base whose sensor turns freely. Straight
+      // towards the goal at up to v_max (stopping on it), the body turning to face the
+      // target at up to omega_max.
       const Vec2 d = vec(goal) - vec(o.pose.position);
       const double len = d.norm(), speed = std::min(cp.v_max, len / dt);
       const double c = std::cos(o.pose.heading), s = std::sin(o.pose.heading);
@@ -441,11 +417,37 @@ class World {
         h.lateral = speed * (-s * d.x + c * d.y) / len;
       }
       const Vec2 to_target = vec(o.estimate) - vec(o.pose.position);
-      double turn = std::atan2(to_target.y, to_target.x) - o.pose.heading;
-      turn = std::remainder(turn, 2 * M_PI);
+      const double turn = std::remainder(std::atan2(to_target.y, to_target.x) - o.pose.heading, 2 * M_PI);
       h.omega = std::clamp(turn / dt, -cp.omega_max, cp.omega_max);
       return h;
     }
+    // A unicycle: of the risk command and a fan of commands (backwards too where the sensor
+    // allows), the one whose next pose (a) still has the target in the sensor, (b) has the
+    // best game value there, (c) ends nearest the goal, (d) is nearest the risk command.
+    // Like eq. (2)'s baseline, it predicts one period without the dynamics.
+    bool best_sees = false;
+    std::uint32_t best_value = 0;
+    double best_cost = 1e300, best_dev = 1e300;
+    Command cmd = preferred;
+    bool any = false;
+    auto consider = [&](const Command& c) {
+      const double th = o.pose.heading + c.omega * dt;
+      const Point p(o.pose.position.x() + c.v * dt * std::cos(th), o.pose.position.y() + c.v * dt * std::sin(th));
+      if (c.v != 0 && !can_move(o.pose.position, p, o.estimate)) return;
+      const bool in_view = sees(Pose{p, th}, o.estimate);
+      const std::uint32_t q = g.nearest(p);
+      const std::uint32_t value = q == VisibilityGame::kNoPoint ? 0 : g.escape_steps(q, cell.front());
+      const double cost = planar_distance(p, goal), dev = std::abs(c.v - preferred.v) + std::abs(c.omega - preferred.omega);
+      if (!any || std::tie(in_view, value) > std::tie(best_sees, best_value) ||
+          (std::tie(in_view, value) == std::tie(best_sees, best_value) && std::tie(cost, dev) < std::tie(best_cost, best_dev))) {
+        any = true;
+        best_sees = in_view;
+        best_value = value;
+        best_cost = cost;
+        best_dev = dev;
+        cmd = c;
+      }
+    };
     consider(preferred);
     for (double fv : {-1.0, -0.5, 0.0, 0.5, 1.0}) {
       if (fv < 0 && !cp.reverse) continue;

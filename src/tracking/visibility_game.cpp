@@ -118,12 +118,15 @@ VisibilityGame::VisibilityGame(const geometry::Environment& env, const GameParam
       // of either player breaks it, and on a grid aligned with the obstacles' coordinates
       // such lines are everywhere (they made the game keep targets a continuous observer
       // loses at once). Exact: no environment vertex strictly inside the segment.
-      if (seen)
+      if (seen) {
+        const double x0 = std::min(a.x(), b.x()), x1 = std::max(a.x(), b.x()), y0 = std::min(a.y(), b.y()), y1 = std::max(a.y(), b.y());
         for (const Point& v : env.vertices())
-          if (CGAL::collinear(a, v, b) && CGAL::collinear_are_strictly_ordered_along_line(a, v, b)) {
+          if (v.x() >= x0 && v.x() <= x1 && v.y() >= y0 && v.y() <= y1 &&  // a vertex inside the segment is in its box
+              CGAL::collinear(a, v, b) && CGAL::collinear_are_strictly_ordered_along_line(a, v, b)) {
             seen = false;
             break;
           }
+      }
       if (!seen) level_[o * n + t] = 0;
     }
   });

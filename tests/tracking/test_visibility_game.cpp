@@ -4,6 +4,7 @@
 #include <preimage/error.hpp>
 #include <preimage/geometry/queries.hpp>
 #include <preimage/scene/scene.hpp>
+#include <preimage/tracking/evaluation.hpp>
 #include <preimage/tracking/visibility_game.hpp>
 
 #include <gtest/gtest.h>
@@ -284,4 +285,59 @@ TEST(VisibilityGame, RefusesBadParametersAndHugeGrids) {
   p.speed_ratio = 0.5;
   p.max_states = 1000;
   EXPECT_THROW(VisibilityGame(env, p), InputError);
+}
+
+TEST(GameStrategy, KeepsTheAdversaryFromTheBoxsWinnableStarts) {
+  // The finding behind the game strategy's design (docs/tracking.md, "Ground truth"): on
+  // the 0.125 m grid, the holonomic observer that steers for the deepest keeping grid
+  // point keeps the shortest-escape-path adversary from every start the game keeps
+  // (before depth, it lost them all in 2-7 s), where TRACK's risk controller keeps none.
+  const auto sc = scene::load_scene(std::string(PREIMAGE_EXAMPLES) + "/tracking/box.json");
+  const TrackingScenario scenario = TrackingScenario::from_scene(sc);
+  SimulationParams p;
+  p.policy = TargetPolicy::Adversarial;
+  p.steps = 300;
+  p.start_spread = 0.5;
+  p.heading_spread = 15 * M_PI / 180;
+  p.stop_at_escape = true;
+  GameParams gp = game_params(scenario, p, 0.125);
+  p.game = std::make_shared<const VisibilityGame>(*scenario.environment, gp);
+  std::size_t winnable = 0, kept_game = 0, kept_risk = 0;
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    p.seed = seed;
+    p.strategy = Strategy::Game;
+    const SimulationResult game = simulate(scenario, p);
+    const std::uint32_t o = p.game->nearest(game.observer.front().position), t = p.game->nearest(game.target.front());
+    if (!p.game->keeps(o, t)) continue;
+    ++winnable;
+    kept_game += game.escape_time < 0;
+    p.strategy = Strategy::Risk;
+    kept_risk += simulate(scenario, p).escape_time < 0;
+  }
+  EXPECT_GE(winnable, 3u);
+  EXPECT_EQ(kept_game, winnable);
+  EXPECT_LT(kept_risk, winnable);
+}
+
+TEST(GameStrategy, EvaluationCountsWinnableStartsAndTheGridPolicyKeepsThemAll) {
+  const auto sc = scene::load_scene(std::string(PREIMAGE_EXAMPLES) + "/tracking/box.json");
+  EvaluationParams ep;
+  ep.seeds = 6;
+  ep.steps = 30;
+  ep.fovs = {360};
+  ep.dynamics = {false};
+  ep.policies = {TargetPolicy::Game};
+  ep.strategies = {Strategy::Risk, Strategy::Game};
+  ep.game_resolution = 0.5;
+  ep.jobs = 2;
+  const auto cells = evaluate({TrackingScenario::from_scene(sc)}, ep);
+  ASSERT_EQ(cells.size(), 2u);
+  for (const auto& c : cells) {
+    ASSERT_EQ(c.winnable.size(), 6u);
+    EXPECT_EQ(c.winnable_runs, static_cast<std::size_t>(std::count(c.winnable.begin(), c.winnable.end(), 1)));
+    EXPECT_GT(c.winnable_runs, 0u);
+    EXPECT_EQ(c.grid_kept, c.winnable_runs);  // the game's own policy, on its own grid
+    EXPECT_LE(c.kept_winnable, c.winnable_runs);
+    EXPECT_EQ(c.winnable, cells.front().winnable);  // the same starts for every strategy
+  }
 }

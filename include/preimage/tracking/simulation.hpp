@@ -38,11 +38,12 @@ enum class TargetPolicy { Scripted, Random, Adversarial, Lookahead, Game };
 /// The observer's strategies: TRACK's risk descent, the SDE maximiser of eq. (2), the
 /// naive follower, and two that consult the solved visibility game (SimulationParams::game):
 ///  * Game: the game's own observer — a holonomic base with a sensor that turns freely
-///    (Command::lateral) — heading straight for the grid point, within one game step, of
-///    the best game value against the target's grid cell (the worst over its corners),
-///    the body turning to face the target.
-///  * RiskGame: TRACK's risk command, unless another command of the fan reaches a state of
-///    larger game value; then the nearest such command to the risk command.
+///    (Command::lateral) — heading straight for the grid point, within one game step, with
+///    the best game value against the target's grid cell, then the deepest in the keeping
+///    region, then the nearest the target; the body turning to face the target.
+///  * RiskGame: a unicycle (like risk) steering for the same grid point: of TRACK's risk
+///    command and a fan of commands, the one that keeps the target in the sensor, then has
+///    the best game value, then ends nearest that point, then is nearest the risk command.
 enum class Strategy { Risk, Sde, Naive, Game, RiskGame };
 const char* to_string(TargetPolicy p);
 const char* to_string(Strategy s);
