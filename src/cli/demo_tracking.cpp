@@ -91,6 +91,7 @@ void demo_tracking(DemoContext& ctx) {
   ep.fovs = {360};
   ep.policies = {TargetPolicy::Adversarial, TargetPolicy::Lookahead};
   ep.jobs = std::max(1u, std::thread::hardware_concurrency());
+  ep.game_resolution = 0;  // the CDFs do not use the game; its figure follows
   const auto cells = evaluate({b}, ep);
   ctx.figure("tracking-escape-time-cdf.svg", escape_time_cdf_figure(cells, "Box scene, 360-deg laser: escape-time CDFs, 40 seeds per curve"),
              "Fraction of runs that lost the target by time t, per strategy (risk: TRACK's escape risk; sde: eq. (2) "

@@ -31,9 +31,9 @@ cli_test(track_ept_huge_m fail "--m: expected an integer from 0 to 16, got 21474
 cli_test(track_ept_negative_m fail "--m: expected an integer from 0 to 16, got -1" - track ept ${TRACKING}/box.json --m -1)
 cli_test(track_ept_bad_radius fail "--radius: expected a number in \\(0, 100\\], got -0.2" - track ept ${TRACKING}/box.json --radius -0.2)
 cli_test(track_simulate_no_slot fail "the scene has no \"tracking\" slot" - track simulate ${EXAMPLES}/gallery.json)
-cli_test(track_evaluate 0 "^\\| cardboard box \\(Fig. 6b\\) \\| 180° \\| yes \\| lookahead \\| [0-2]/2 \\| [0-2]/[0-2] \\| [0-2]/2, " - track evaluate ${TRACKING}/box.json --seeds 2 --steps 20 --headings 4 --lookahead-steps 2)
-cli_test(track_evaluate_json 0 "\"minus_sde\":\\{" - track evaluate ${TRACKING}/box.json --seeds 2 --steps 20 --fov 360 --dynamics off --target-policy adversarial --json)
-cli_test(track_evaluate_cdf 0 "^\\| cardboard box" ${OUT}/cdf.svg track evaluate ${TRACKING}/box.json --seeds 2 --steps 20 --fov 180 --dynamics on --target-policy random,adversarial --strategy risk,sde --cdf-svg ${OUT}/cdf.svg)
+cli_test(track_evaluate 0 "^\\| cardboard box \\(Fig. 6b\\) \\| 180° \\| yes \\| lookahead \\| [0-2]/2 \\| [0-2]/[0-2] \\| [0-2]/2, " - track evaluate ${TRACKING}/box.json --seeds 2 --steps 20 --game-resolution 0.5 --headings 4 --lookahead-steps 2)
+cli_test(track_evaluate_json 0 "\"minus_sde\":\\{" - track evaluate ${TRACKING}/box.json --seeds 2 --steps 20 --game-resolution 0.5 --fov 360 --dynamics off --target-policy adversarial --json)
+cli_test(track_evaluate_cdf 0 "^\\| cardboard box" ${OUT}/cdf.svg track evaluate ${TRACKING}/box.json --seeds 2 --steps 20 --game-resolution 0.5 --fov 180 --dynamics on --target-policy random,adversarial --strategy risk,sde --cdf-svg ${OUT}/cdf.svg)
 cli_test(track_evaluate_zero_seeds fail "--seeds: expected an integer from 1 to 10000, got 0" - track evaluate ${TRACKING}/box.json --seeds 0)
 cli_test(track_evaluate_too_many_seeds fail "--seeds: expected an integer from 1 to 10000, got 10001" - track evaluate ${TRACKING}/box.json --seeds 10001)
 cli_test(track_evaluate_negative_steps fail "--steps: expected an integer from 1 to 1000000, got -5" - track evaluate ${TRACKING}/box.json --steps -5)
@@ -68,7 +68,7 @@ add_test(NAME cli.track_simulate_huge_steps_progress_interrupted
   COMMAND bash -c "cmd=\"timeout -s INT 2.5 $0 track simulate $1 --steps 1000000\"; out=$(script -qec \"$cmd\" /dev/null); rc=$?; echo \"$out\"; [ $rc -eq 124 ] && grep -Eq 'simulate: [0-9]+ of 1000000' <<<\"$out\""
           $<TARGET_FILE:preimage_cli> ${TRACKING}/corridor.json)
 add_test(NAME cli.track_evaluate_huge_seeds_progress_interrupted
-  COMMAND bash -c "cmd=\"timeout -s INT 2.5 $0 track evaluate $1 --seeds 10000\"; out=$(script -qec \"$cmd\" /dev/null); rc=$?; echo \"$out\"; [ $rc -eq 124 ] && grep -Eq 'evaluate: [0-9]+ of 480000' <<<\"$out\""
+  COMMAND bash -c "cmd=\"timeout -s INT 2.5 $0 track evaluate $1 --seeds 10000 --game-resolution 0.5\"; out=$(script -qec \"$cmd\" /dev/null); rc=$?; echo \"$out\"; [ $rc -eq 124 ] && grep -Eq 'evaluate: [0-9]+ of 480000' <<<\"$out\""
           $<TARGET_FILE:preimage_cli> ${TRACKING}/box.json)
 
 # The visibility game (ground truth): the box start is kept at 0.25 m, the chairs' start is not.
