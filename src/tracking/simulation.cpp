@@ -235,9 +235,12 @@ class World {
     if (sp_.alpha > 0) u.omega = o.velocity.omega + std::clamp(cmd.omega - o.velocity.omega, -sp_.alpha * dt, sp_.alpha * dt);
     if (sp_.accel > 0) u.lateral = o.velocity.lateral + std::clamp(cmd.lateral - o.velocity.lateral, -sp_.accel * dt, sp_.accel * dt);
     const double th = o.pose.heading + u.omega * dt;
-    // Forward along the new heading, sideways to its left (a holonomic base only).
-    const Point p(o.pose.position.x() + (u.v * std::cos(th) - u.lateral * std::sin(th)) * dt,
-                  o.pose.position.y() + (u.v * std::sin(th) + u.lateral * std::cos(th)) * dt);
+    // Forward along the new heading, sideways to its left (a holonomic base only; a
+    // unicycle's step is computed as it always was, so that its runs stay bit for bit).
+    const Point p = u.lateral == 0
+                        ? Point(o.pose.position.x() + u.v * dt * std::cos(th), o.pose.position.y() + u.v * dt * std::sin(th))
+                        : Point(o.pose.position.x() + (u.v * std::cos(th) - u.lateral * std::sin(th)) * dt,
+                                o.pose.position.y() + (u.v * std::sin(th) + u.lateral * std::cos(th)) * dt);
     o.pose.heading = th;
     if ((u.v != 0 || u.lateral != 0) && can_move(o.pose.position, p, t)) o.pose.position = p;
     else u.v = u.lateral = 0;
