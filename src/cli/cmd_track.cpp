@@ -337,7 +337,7 @@ void run_evaluate(const std::vector<std::string>& files, const EvaluationParams&
 }
 
 struct GameOptions {
-  double resolution = 0.25, speed_ratio = 0.5, range = 8, separation = -1;
+  double resolution = 0.25, speed_ratio = 0.5, range = 8, separation = -1, target_radius = -1;
   std::string observer, target, svg;
   std::size_t jobs = 0;
   bool json = false;
@@ -361,15 +361,19 @@ void run_game(const std::string& file, const GameOptions& o) {
   gp.resolution = o.resolution;
   gp.speed_ratio = o.speed_ratio;
   gp.range = o.range > 0 ? o.range : std::numeric_limits<double>::infinity();
-  gp.separation = o.separation >= 0 ? o.separation : (sc.tracking ? sc.tracking->target_radius : 0.2) + 0.15;
+  const double radius = sc.tracking ? sc.tracking->target_radius : 0.2;
+  gp.target_radius = o.target_radius >= 0 ? o.target_radius : radius;
+  gp.separation = o.separation >= 0 ? o.separation : radius + 0.15;  // as the simulator keeps the observer off
   gp.threads = static_cast<unsigned>(o.jobs);
   if (!o.svg.empty() && !tgt) throw InputError("--svg draws the region for one target: give --target (the scene has no $.tracking.target)");
   const VisibilityGame g(env, gp);
   auto snap = [&](const Point& p, const char* flag) {
-    const std::uint32_t k = g.nearest(p);
+    const bool target = std::string(flag) == "--target";
+    const std::uint32_t k = target ? g.nearest_target(p) : g.nearest(p);
     if (k == VisibilityGame::kNoPoint)
       throw InputError(std::string(flag) + " (" + geometry::format_number(p.x()) + ", " + geometry::format_number(p.y()) +
-                       "): no grid point of the game within two grid steps");
+                       "): no grid point of the game within two grid steps" +
+                       (target ? " where the target's disc fits" : ""));
     return k;
   };
   std::optional<std::uint32_t> go, gt;
@@ -403,6 +407,7 @@ void run_game(const std::string& file, const GameOptions& o) {
     json j = {{"scene", sc.name.empty() ? file : sc.name},
               {"resolution", gp.resolution}, {"speed_ratio", gp.speed_ratio},
               {"range", std::isfinite(gp.range) ? json(gp.range) : json(nullptr)}, {"separation", gp.separation},
+              {"target_radius", gp.target_radius},
               {"step_time", g.step_time()}, {"target_reach", g.target_reach()}, {"observer_reach", g.observer_reach()},
               {"points", st.points}, {"states", st.states}, {"seen", st.seen}, {"kept", st.winning},
               {"longest_escape_steps", st.levels}, {"memory_bytes", st.memory_bytes},
@@ -419,7 +424,7 @@ void run_game(const std::string& file, const GameOptions& o) {
   std::cout << (sc.name.empty() ? file : sc.name) << ": visibility game on a " << gp.resolution << " m grid, " << st.points
             << " points, " << st.states << " states (speed ratio " << gp.speed_ratio << ", range "
             << (std::isfinite(gp.range) ? geometry::format_number(gp.range) + " m" : std::string("unlimited")) << ", separation "
-            << gp.separation << " m; one step " << g.step_time() << " s: target " << g.target_reach() << " m, observer "
+            << gp.separation << " m, target radius " << gp.target_radius << " m; one step " << g.step_time() << " s: target " << g.target_reach() << " m, observer "
             << g.observer_reach() << " m)\n";
   std::cout << "solved in " << st.seconds_visibility + st.seconds_solve << " s (sight " << st.seconds_visibility
             << " s, induction " << st.seconds_solve << " s), " << std::setprecision(0) << st.memory_bytes / 1e6
@@ -720,6 +725,8 @@ void add_track_commands(CLI::App& app) {
   gm->add_option("--speed-ratio", go.speed_ratio, "Target speed / observer top speed (1 m/s)")->check(number_in(0, 10, true))->capture_default_str();
   gm->add_option("--range", go.range, "Sensor range, m (0: unlimited)")->check(number_in(0, 1e6))->capture_default_str();
   gm->add_option("--separation", go.separation, "The target this close to the observer is a loss, m (default: its radius + 0.15)")
+      ->check(number_in(0, 100));
+  gm->add_option("--target-radius", go.target_radius, "The target's disc keeps this far from obstacles, m (default: $.tracking.target_radius, else 0.2)")
       ->check(number_in(0, 100));
   gm->add_option("--observer", go.observer, "Observer X,Y for the start's verdict (default: $.tracking.observer)");
   gm->add_option("--target", go.target, "Target X,Y (default: $.tracking.target)");

@@ -163,7 +163,7 @@ std::vector<CellResult> evaluate(const std::vector<TrackingScenario>& scenarios,
         c.escape_times[seed - 1] = r.escape_time >= 0 ? r.escape_time : horizon;  // distinct slots: no lock
         if (p.game) {
           const VisibilityGame& g = *p.game;
-          const std::uint32_t go = g.nearest(r.observer.front().position), gt = g.nearest(r.target.front());
+          const std::uint32_t go = g.nearest(r.observer.front().position), gt = g.nearest_target(r.target.front());
           const bool win = go != VisibilityGame::kNoPoint && gt != VisibilityGame::kNoPoint && g.keeps(go, gt);
           c.winnable[seed - 1] = win;
           if (win) {

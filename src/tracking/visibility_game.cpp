@@ -77,6 +77,26 @@ VisibilityGame::VisibilityGame(const geometry::Environment& env, const GameParam
   stats_.points = n;
   stats_.states = n * n;
 
+  // Where the target's disc fits: squared distance to every edge at least r^2, decided
+  // exactly; edges whose box, widened by 2r, misses the point are farther than r for sure.
+  if (!(p.target_radius >= 0) || !std::isfinite(p.target_radius)) throw InputError("game: the target radius must be >= 0");
+  target_ok_.assign(n, 1);
+  if (p.target_radius > 0) {
+    const double r = p.target_radius;
+    const geometry::ExactFT r2 = geometry::ExactFT(r) * geometry::ExactFT(r);
+    parallel_for(n, threads, [&](std::size_t a) {
+      const Point& q = points_[a];
+      for (std::size_t e = 0; e < env.num_vertices() && target_ok_[a]; ++e) {
+        const Point &u = env.vertex(e), &w = env.vertex(env.next(e));
+        if (q.x() < std::min(u.x(), w.x()) - 2 * r || q.x() > std::max(u.x(), w.x()) + 2 * r ||
+            q.y() < std::min(u.y(), w.y()) - 2 * r || q.y() > std::max(u.y(), w.y()) + 2 * r)
+          continue;
+        const geometry::ExactKernel::Segment_2 edge(env.exact_vertex(e), env.exact_vertex(env.next(e)));
+        if (CGAL::squared_distance(geometry::to_exact(q), edge) < r2) target_ok_[a] = 0;
+      }
+    });
+  }
+
   // Moves: straight free segments to the grid points within reach.
   auto build_moves = [&](double r2, std::vector<std::uint32_t>& begin, std::vector<std::uint32_t>& list) {
     const auto offsets = disc_offsets(r2);
@@ -99,6 +119,17 @@ VisibilityGame::VisibilityGame(const geometry::Environment& env, const GameParam
     for (auto& v : per) list.insert(list.end(), v.begin(), v.end());
   };
   build_moves(target_r2, target_begin_, target_moves_);
+  {  // the target moves only between points where it may stand
+    std::vector<std::uint32_t> begin(n + 1, 0), list;
+    for (std::size_t a = 0; a < n; ++a) {
+      if (target_ok_[a])
+        for (std::uint32_t b : target_moves(static_cast<std::uint32_t>(a)))
+          if (target_ok_[b]) list.push_back(b);
+      begin[a + 1] = static_cast<std::uint32_t>(list.size());
+    }
+    target_begin_.swap(begin);
+    target_moves_.swap(list);
+  }
   build_moves(observer_r2, observer_begin_, observer_moves_);
   for (std::size_t a = 0; a < n; ++a)  // the answer counters below are 16 bits
     if (observer_begin_[a + 1] - observer_begin_[a] > 65535)
@@ -113,6 +144,7 @@ VisibilityGame::VisibilityGame(const geometry::Environment& env, const GameParam
       const Point &a = points_[o], &b = points_[t];
       bool seen = CGAL::compare_squared_distance(a, b, sep2) != CGAL::SMALLER;
       if (seen && std::isfinite(p.range)) seen = CGAL::compare_squared_distance(a, b, range2) != CGAL::LARGER;
+      if (seen) seen = target_ok_[o] || target_ok_[t];  // the pair is a state with the target at one of them
       if (seen) seen = index.visible(a, b);
       // A line of sight that only touches an obstacle corner is not kept: the least motion
       // of either player breaks it, and on a grid aligned with the obstacles' coordinates
@@ -132,6 +164,9 @@ VisibilityGame::VisibilityGame(const geometry::Environment& env, const GameParam
   });
   for (std::size_t o = 0; o < n; ++o)  // symmetric: copy the upper triangle down
     for (std::size_t t = 0; t < o; ++t) level_[o * n + t] = level_[t * n + o];
+  for (std::size_t o = 0; o < n; ++o)  // no state has the target where its disc does not fit
+    for (std::size_t t = 0; t < n; ++t)
+      if (!target_ok_[t]) level_[o * n + t] = 0;
   stats_.seconds_visibility = seconds_since(t0);
   const auto t1 = Clock::now();
 
@@ -221,7 +256,7 @@ std::span<const std::uint32_t> VisibilityGame::target_moves(std::uint32_t i) con
   return {target_moves_.data() + target_begin_[i], target_moves_.data() + target_begin_[i + 1]};
 }
 
-std::uint32_t VisibilityGame::nearest(const Point& p) const {
+std::uint32_t VisibilityGame::nearest_where(const Point& p, bool target) const {
   const double h = params_.resolution;
   const double fi = (p.x() - x0_) / h, fj = (p.y() - y0_) / h;
   if (!std::isfinite(fi) || !std::isfinite(fj)) return kNoPoint;
@@ -233,7 +268,7 @@ std::uint32_t VisibilityGame::nearest(const Point& p) const {
     for (std::int64_t i = ci - 2; i <= ci + 2; ++i) {
       if (i < 0 || j < 0 || i >= columns_ || j >= rows_) continue;
       const std::uint32_t q = cell_to_point_[static_cast<std::size_t>(j * columns_ + i)];
-      if (q == kNoPoint) continue;
+      if (q == kNoPoint || (target && !target_ok_[q])) continue;
       const double d = std::hypot(points_[q].x() - p.x(), points_[q].y() - p.y());
       if (best == kNoPoint || d < best_d) {
         best = q;

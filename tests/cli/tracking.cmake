@@ -71,9 +71,10 @@ add_test(NAME cli.track_evaluate_huge_seeds_progress_interrupted
   COMMAND bash -c "cmd=\"timeout -s INT 2.5 $0 track evaluate $1 --seeds 10000 --game-resolution 0.5\"; out=$(script -qec \"$cmd\" /dev/null); rc=$?; echo \"$out\"; [ $rc -eq 124 ] && grep -Eq 'evaluate: [0-9]+ of 480000' <<<\"$out\""
           $<TARGET_FILE:preimage_cli> ${TRACKING}/box.json)
 
-# The visibility game (ground truth): the box start is kept at 0.25 m, the chairs' start is not.
+# The visibility game (ground truth): the box start is kept at 0.25 m, the chairs' start is not (at 0.2 m and finer).
 cli_test(track_game_box 0 "^start, on the grid: observer \\(1, 3\\), target \\(5.25, 3\\): the observer keeps the target forever$" ${OUT}/game-box.svg track game ${TRACKING}/box.json --svg ${OUT}/game-box.svg)
-cli_test(track_game_chairs 0 "the target escapes within 12 steps \\(8.49 s\\) against every observer" - track game ${TRACKING}/chair.json)
+cli_test(track_game_chairs 0 "the target escapes within 12 steps \\(6.79 s\\) against every observer" - track game ${TRACKING}/chair.json --resolution 0.2)
+cli_test(track_game_point_target 0 "separation 0.35 m, target radius 0.00 m" - track game ${TRACKING}/box.json --resolution 0.5 --target-radius 0)
 cli_test(track_game_json 0 "\"keeping_observers\":\\[" - track game ${TRACKING}/lab.json --resolution 0.5 --json)
 cli_test(track_game_zero_resolution fail "--resolution: expected a number in" - track game ${TRACKING}/box.json --resolution 0)
 cli_test(track_game_huge_grid fail "game: .* states, more than the limit" - track game ${TRACKING}/box.json --resolution 0.01)

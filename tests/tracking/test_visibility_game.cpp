@@ -44,14 +44,28 @@ std::vector<std::uint32_t> brute_force(const Environment& env, const VisibilityG
           m[a].push_back(b);
     return m;
   };
-  const auto mo = moves(g.observer_reach()), mt = moves(g.target_reach());
+  // Where the target's disc fits: its centre at least target_radius from every edge,
+  // from CGAL's exact squared distance.
+  std::vector<char> fits(n, 1);
+  const geometry::ExactFT r2 = geometry::ExactFT(p.target_radius) * geometry::ExactFT(p.target_radius);
+  for (std::uint32_t a = 0; a < n; ++a)
+    for (std::size_t e = 0; e < env.num_vertices(); ++e)
+      if (CGAL::squared_distance(geometry::to_exact(g.point(a)),
+                                 geometry::ExactKernel::Segment_2(env.exact_vertex(e), env.exact_vertex(env.next(e)))) < r2)
+        fits[a] = 0;
+  for (std::uint32_t a = 0; a < n; ++a) EXPECT_EQ(g.target_may_stand(a), fits[a] != 0) << "point " << a;
+  auto mo = moves(g.observer_reach()), mt = moves(g.target_reach());
+  for (std::uint32_t a = 0; a < n; ++a) {
+    if (!fits[a]) mt[a].clear();
+    std::erase_if(mt[a], [&](std::uint32_t b) { return !fits[b]; });
+  }
   std::vector<char> seen(n * n);
   for (std::uint32_t o = 0; o < n; ++o)
     for (std::uint32_t t = 0; t < n; ++t) {
       const double d = dist(g.point(o), g.point(t));
       bool grazes = false;  // a sight line through an obstacle corner does not count
       for (const Point& v : env.vertices()) grazes = grazes || (CGAL::collinear(g.point(o), v, g.point(t)) && CGAL::collinear_are_strictly_ordered_along_line(g.point(o), v, g.point(t)));
-      seen[o * n + t] = d >= p.separation && d <= p.range && geometry::visible(env, g.point(o), g.point(t)) && !grazes;
+      seen[o * n + t] = fits[t] && d >= p.separation && d <= p.range && geometry::visible(env, g.point(o), g.point(t)) && !grazes;
     }
   std::vector<std::uint32_t> v(n * n);
   for (std::size_t s = 0; s < n * n; ++s) v[s] = seen[s] ? kForever : 0;
@@ -100,6 +114,7 @@ TEST(VisibilityGame, MatchesBruteForceValueIterationOnRandomRooms) {
     p.speed_ratio = trial % 2 ? 0.5 : 1.0;
     p.range = trial % 3 == 0 ? std::numeric_limits<double>::infinity() : 2.5;
     p.threads = 1 + trial % 2;
+    p.target_radius = trial % 4 == 3 ? 0 : 0.2 + 0.1 * (trial % 2);
     const VisibilityGame g(env, p);
     const auto want = brute_force(env, g);
     const std::size_t n = g.num_points();

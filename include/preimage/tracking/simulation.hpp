@@ -105,7 +105,8 @@ struct SimulationParams {
 };
 
 /// The game a run's settings describe: the observer's v_max, the target's speed ratio, the
-/// laser's range and the target's radius + 0.15 m as the separation.
+/// laser's range, the target's radius + 0.15 m as the separation, and a point target (the
+/// simulated targets do not keep their disc clear of obstacle faces).
 GameParams game_params(const TrackingScenario& scenario, const SimulationParams& params, double resolution);
 
 struct SimulationResult {

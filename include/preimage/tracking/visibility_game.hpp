@@ -36,6 +36,11 @@ struct GameParams {
   /// region bounds from above what a robot that must turn its body can keep.
   double range = 8.0;
   double separation = 0.35;      // the target within this distance of the observer is a loss (its radius + 0.15 m)
+  /// The target is a disc: its centre stands only on grid points at least this far from
+  /// every obstacle (decided exactly). A point target (0) hugs a small obstacle so closely
+  /// that no observer kept off it by the separation can see round it: at 0.1 m the lab's
+  /// 0.3 m chairs made every state a loss.
+  double target_radius = 0.2;
   unsigned threads = 0;          // 0: one per hardware thread
   std::size_t max_states = 200'000'000;  // more (observer, target) pairs than this: InputError (6 bytes each)
 };
@@ -71,16 +76,20 @@ class VisibilityGame {
 
   std::size_t num_points() const { return points_.size(); }
   const Point& point(std::uint32_t i) const { return points_[i]; }
-  /// The free grid point nearest p (kNoPoint if none within two grid steps).
-  std::uint32_t nearest(const Point& p) const;
+  /// The free grid point nearest p (kNoPoint if none within two grid steps), and the
+  /// nearest one where the target may stand (its radius clear of the obstacles).
+  std::uint32_t nearest(const Point& p) const { return nearest_where(p, false); }
+  std::uint32_t nearest_target(const Point& p) const { return nearest_where(p, true); }
+  bool target_may_stand(std::uint32_t i) const { return target_ok_[i] != 0; }
 
-  /// Where each player may go in one step from point i (i itself first).
+  /// Where each player may go in one step from point i (i itself first; the target only
+  /// between points where it may stand, none from elsewhere).
   std::span<const std::uint32_t> observer_moves(std::uint32_t i) const;
   std::span<const std::uint32_t> target_moves(std::uint32_t i) const;
 
   /// Steps in which the target forces a loss from (observer o, target t), the target to
-  /// move: 0 if lost already (not seen, or within separation), kForever if the observer
-  /// keeps it in view forever.
+  /// move: 0 if lost already (not seen, or within separation, or t a point where the
+  /// target cannot stand), kForever if the observer keeps it in view forever.
   std::uint32_t escape_steps(std::uint32_t o, std::uint32_t t) const { return level_[index(o, t)]; }
   bool keeps(std::uint32_t o, std::uint32_t t) const { return escape_steps(o, t) == kForever; }
   /// After the target moved to t: the best the observer at o can do (the largest
@@ -97,6 +106,7 @@ class VisibilityGame {
   std::vector<std::uint32_t> keeping_observers(std::uint32_t t) const;
 
  private:
+  std::uint32_t nearest_where(const Point& p, bool target) const;
   std::size_t index(std::uint32_t o, std::uint32_t t) const { return static_cast<std::size_t>(o) * points_.size() + t; }
 
   GameParams params_;
@@ -106,6 +116,7 @@ class VisibilityGame {
   std::int64_t columns_ = 0, rows_ = 0;
   std::vector<Point> points_;
   std::vector<std::uint32_t> cell_to_point_;  // row-major grid cell -> point, kNoPoint where not free
+  std::vector<char> target_ok_;               // per point: the target's disc fits there
   std::vector<std::uint32_t> observer_moves_, target_moves_;              // CSR lists
   std::vector<std::uint32_t> observer_begin_, target_begin_;
   std::vector<std::uint32_t> level_;  // escape steps per state
