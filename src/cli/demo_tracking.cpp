@@ -111,11 +111,12 @@ void demo_tracking(DemoContext& ctx) {
 
   // Ground truth for the box: the visibility game at speed ratio 0.5 (tracking/visibility_game).
   GameParams gp = game_params(b, SimulationParams{}, 0.25);
+  gp.target_radius = b.target.radius;  // the physical target, as track game draws it
   const VisibilityGame game(box, gp);
   const std::uint32_t go = game.nearest(b.observer.position), gt = game.nearest(b.target.center);
   ctx.figure("tracking-game-box.svg", game_region_figure(box, game, gt, &b.observer.position, "box, target at its start"),
-             "The visibility game on a 0.25 m grid, speed ratio 0.5, 8 m range: for the target at the box scene's start "
-             "(blue), the observer positions from which it keeps the target in view forever against every target "
+             "The visibility game on a 0.25 m grid, speed ratio 0.5, 8 m range, the target a disc of radius 0.2 m: "
+             "for the target at the box scene's start (blue), the observer positions from which it keeps the target in view forever against every target "
              "motion (green), and elsewhere how long the target needs to escape (orange, darker: later). The "
              "observer's start (red) is inside the region.");
   std::snprintf(line, sizeof line,
