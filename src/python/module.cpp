@@ -18,6 +18,7 @@
 #include <preimage/scene/import.hpp>
 #include <preimage/scene/scene.hpp>
 #include <preimage/tracking/replay.hpp>
+#include <preimage/tracking/visibility_game.hpp>
 #include <preimage/wallfollow/cut_ordering.hpp>
 #include <preimage/wallfollow/environment.hpp>
 
@@ -253,6 +254,45 @@ PYBIND11_MODULE(preimage, m) {
     return d;
   }, py::arg("line"), py::arg("max_range") = 50.0, py::arg("radius") = 0.2, py::arg("ahead") = 1.0, py::arg("where") = "line",
      "TRACK's steps on one log line (CARMEN FLASER/ROBOTLASER1 or the text format), as `preimage track replay` does; None for other lines");
+
+  m.def("track_game", [](const geometry::Environment& env, double resolution, double speed_ratio, double range, double separation,
+                         double target_radius, const py::object& observer, const py::object& target) {
+    tracking::GameParams p;
+    p.resolution = resolution;
+    p.speed_ratio = speed_ratio;
+    p.range = range > 0 ? range : std::numeric_limits<double>::infinity();
+    p.separation = separation;
+    p.target_radius = target_radius;
+    const tracking::VisibilityGame g(env, p);
+    const auto& st = g.stats();
+    py::dict d;
+    d["points"] = st.points;
+    d["states"] = st.states;
+    d["seen"] = st.seen;
+    d["kept"] = st.winning;
+    d["step_time"] = g.step_time();
+    d["memory_bytes"] = st.memory_bytes;
+    d["seconds"] = st.seconds_visibility + st.seconds_solve;
+    if (!target.is_none()) {
+      const std::uint32_t t = g.nearest_target(to_point(target, "target"));
+      if (t == tracking::VisibilityGame::kNoPoint) throw InputError("target: no grid point of the game within two grid steps where the target's disc fits");
+      std::vector<geometry::Point> keepers;
+      for (std::uint32_t o : g.keeping_observers(t)) keepers.push_back(g.point(o));
+      d["target_point"] = py::make_tuple(g.point(t).x(), g.point(t).y());
+      d["keeping_observers"] = to_array(keepers);
+      if (!observer.is_none()) {
+        const std::uint32_t o = g.nearest(to_point(observer, "observer"));
+        if (o == tracking::VisibilityGame::kNoPoint) throw InputError("observer: no grid point of the game within two grid steps");
+        const std::uint32_t v = g.escape_steps(o, t);
+        d["observer_point"] = py::make_tuple(g.point(o).x(), g.point(o).y());
+        d["escape_steps"] = v == tracking::VisibilityGame::kForever ? py::object(py::none()) : py::object(py::int_(v));
+      }
+    }
+    return d;
+  }, py::arg("environment"), py::arg("resolution") = 0.25, py::arg("speed_ratio") = 0.5, py::arg("range") = 8.0,
+     py::arg("separation") = 0.35, py::arg("target_radius") = 0.2, py::arg("observer") = py::none(), py::arg("target") = py::none(),
+     "The visibility game of `preimage track game`: can an observer keep the target in view forever? Counts, and for a "
+     "target point the keeping observer points ((n, 2) array); with an observer too, escape_steps (None: kept forever)");
 
   m.def("cover", [](const geometry::Environment& env, double radius, std::optional<double> width, std::optional<double> angle,
                     const py::object& start) {

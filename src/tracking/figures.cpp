@@ -158,7 +158,7 @@ std::string game_region_figure(const geometry::Environment& env, const Visibilit
     c.point(*observer, 6, render::Style{"#d62728", "#222", 1, 1.0, ""}, "observer");
     c.legend("observer", render::Style{"#d62728", "#222", 1, 1.0, ""});
   }
-  c.label(Point(env.bbox().xmin(), env.bbox().ymax() + 0.02 * (env.bbox().ymax() - env.bbox().ymin())), title, 12);
+  c.label(Point(env.bbox().xmin(), env.bbox().ymax() + 0.004 * (env.bbox().ymax() - env.bbox().ymin())), title, 12);
   return c.str();
 }
 

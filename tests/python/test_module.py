@@ -139,3 +139,15 @@ def test_pursuit_plan_matches_cli_and_clears():
         assert np.array_equal(a, np.array(b, dtype=float))
     one = preimage.pursuit_plan(scene.environment, max_pursuers=1, start=scene.start)
     assert one["outcome"] == "no plan" and "paths" not in one  # a pillar needs two (a proof: the search is complete)
+
+
+def test_track_game_matches_cli():
+    path = os.path.join(EXAMPLES, "tracking", "box.json")
+    scene = preimage.load_scene(path)
+    mine = preimage.track_game(scene.environment, resolution=0.5, observer=(1, 3), target=(5.2, 3))
+    theirs = cli_json("track", "game", path, "--resolution", "0.5")
+    assert (mine["points"], mine["states"], mine["seen"], mine["kept"]) == (theirs["points"], theirs["states"], theirs["seen"], theirs["kept"])
+    assert mine["escape_steps"] is None and theirs["start"]["kept"]  # the box's start is kept
+    assert np.array_equal(mine["keeping_observers"], np.array(theirs["keeping_observers"], dtype=float))
+    with pytest.raises(Exception, match="resolution"):
+        preimage.track_game(scene.environment, resolution=0)
