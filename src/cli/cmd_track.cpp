@@ -189,8 +189,12 @@ void run_simulate(const std::string& file, const SimulationParams& params, doubl
   const scene::Scene sc = scene::load_scene(file);
   const TrackingScenario s = TrackingScenario::from_scene(sc);
   SimulationParams p = params;
-  if (p.strategy == Strategy::Game || p.strategy == Strategy::RiskGame || p.policy == TargetPolicy::Game)
-    p.game = std::make_shared<const VisibilityGame>(*s.environment, game_params(s, p, game_resolution));
+  if (p.strategy == Strategy::Game || p.strategy == Strategy::RiskGame || p.policy == TargetPolicy::Game) {
+    Progress solving("simulate: the visibility game");
+    GameParams gp = game_params(s, p, game_resolution);
+    gp.progress = [&](double f) { solving(f); };
+    p.game = std::make_shared<const VisibilityGame>(*s.environment, gp);
+  }
   std::ofstream log_out;
   std::optional<geometry::VisibilityIndex> index;
   if (!log.empty()) {
@@ -248,8 +252,22 @@ void run_evaluate(const std::vector<std::string>& files, const EvaluationParams&
   for (const auto& sc : scenes) scenarios.push_back(TrackingScenario::from_scene(sc));
   std::vector<CellResult> cells;
   {
+    EvaluationParams params = ep;
+    std::optional<Progress> solving;  // one status line per scene's game, then the runs'
+    std::string solving_for;
+    params.game_progress = [&](const std::string& scene, double f) {
+      if (!solving || scene != solving_for) {
+        solving.reset();
+        solving.emplace("evaluate: the visibility game of " + scene);
+        solving_for = scene;
+      }
+      (*solving)(f);
+    };
     Progress progress("evaluate");
-    cells = evaluate(scenarios, ep, [&](std::size_t done, std::size_t total) { progress(done, total); });
+    cells = evaluate(scenarios, params, [&](std::size_t done, std::size_t total) {
+      solving.reset();
+      progress(done, total);
+    });
   }
   if (!cdf_svg.empty()) {
     std::ofstream out(cdf_svg);
@@ -366,7 +384,10 @@ void run_game(const std::string& file, const GameOptions& o) {
   gp.separation = o.separation >= 0 ? o.separation : radius + 0.15;  // as the simulator keeps the observer off
   gp.threads = static_cast<unsigned>(o.jobs);
   if (!o.svg.empty() && !tgt) throw InputError("--svg draws the region for one target: give --target (the scene has no $.tracking.target)");
+  std::optional<Progress> progress(std::in_place, "game");
+  gp.progress = [&](double f) { (*progress)(f); };
   const VisibilityGame g(env, gp);
+  progress.reset();  // erase the status line before the answer
   auto snap = [&](const Point& p, const char* flag) {
     const bool target = std::string(flag) == "--target";
     const std::uint32_t k = target ? g.nearest_target(p) : g.nearest(p);

@@ -115,6 +115,7 @@ std::vector<CellResult> evaluate(const std::vector<TrackingScenario>& scenarios,
       probe.speed_ratio = ep.speed_ratio;
       GameParams gp = game_params(scenarios[s], probe, ep.game_resolution);
       gp.threads = static_cast<unsigned>(std::max<std::size_t>(ep.jobs, 1));
+      if (ep.game_progress) gp.progress = [&, s](double f) { ep.game_progress(scenarios[s].name, f); };
       try {
         games[s] = std::make_shared<const VisibilityGame>(*scenarios[s].environment, gp);
       } catch (const InputError& e) {

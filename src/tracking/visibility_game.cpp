@@ -140,6 +140,10 @@ VisibilityGame::VisibilityGame(const geometry::Environment& env, const GameParam
   const double range2 = std::isfinite(p.range) ? p.range * p.range : 0, sep2 = p.separation * p.separation;
   level_.assign(n * n, kForever);
   parallel_for(n, threads, [&](std::size_t o) {
+    if (p.progress && o % threads == 0 && o % 64 == 0) {  // rows below o hold 1 - ((n - o) / n)^2 of the triangle
+      const double left = static_cast<double>(n - o) / static_cast<double>(n);
+      p.progress(0.4 * (1.0 - left * left));
+    }
     for (std::size_t t = o; t < n; ++t) {
       const Point &a = points_[o], &b = points_[t];
       bool seen = CGAL::compare_squared_distance(a, b, sep2) != CGAL::SMALLER;
@@ -207,8 +211,13 @@ VisibilityGame::VisibilityGame(const geometry::Environment& env, const GameParam
   std::uint32_t k = 1;
   std::vector<std::vector<std::uint32_t>> zero(threads), next(threads);
   std::size_t peak_frontier = frontier.size();
+  std::size_t seen = 0, decided = 0;
+  if (p.progress)
+    for (std::uint32_t l : level_) seen += l != 0;
   while (!frontier.empty()) {
     stats_.levels = k;
+    decided += frontier.size();
+    if (p.progress && seen) p.progress(0.4 + 0.6 * std::min(1.0, static_cast<double>(decided) / static_cast<double>(seen)));
     // X states lost at step k: each takes one live answer from the Y states that could
     // answer into it (o in observer_moves(o'), which is symmetric).
     parallel_for(threads, threads, [&](std::size_t th) {

@@ -38,6 +38,8 @@ struct EvaluationParams {
   /// default: at 0.25 m the game keeps lab starts the continuous adversary wins (19 of 20
   /// starts winnable, 10 of 20 at 0.125 m), and its policy loses the box's winnable starts.
   double game_resolution = 0.125;
+  /// Called while each scene's game is solved: the scene's name and the share done.
+  std::function<void(const std::string&, double)> game_progress;
 };
 
 /// A two-sided 95% interval about an estimate.

@@ -19,6 +19,7 @@
 #include <preimage/geometry/environment.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <span>
 #include <vector>
@@ -43,6 +44,10 @@ struct GameParams {
   double target_radius = 0.2;
   unsigned threads = 0;          // 0: one per hardware thread
   std::size_t max_states = 200'000'000;  // more (observer, target) pairs than this: InputError (6 bytes each)
+  /// Called with the share of the work done (0..1), from one thread at a time: the sight
+  /// table up to 0.4, then induction by the share of the seen states decided (a guess
+  /// until the end: the kept ones are decided last, all at once).
+  std::function<void(double)> progress;
 };
 
 struct GameStats {
