@@ -356,3 +356,32 @@ TEST(GameStrategy, EvaluationCountsWinnableStartsAndTheGridPolicyKeepsThemAll) {
     EXPECT_EQ(c.winnable, cells.front().winnable);  // the same starts for every strategy
   }
 }
+
+TEST(VisibilityGame, GivesTheSameAnswersWhereverThePlanSits) {
+  // The grid starts at the plan's lower-left corner, so a plan moved by an exact offset
+  // (coordinates in eighths of a metre stay exact up to the supported 1e12) gives the same grid points
+  // moved, the same sight and clearance decisions and the same values, state for state.
+  auto room = [](double d) {
+    auto at = [d](double x, double y) { return Point(x + d, y + d); };
+    return Environment::make({at(0, 0), at(9, 0), at(9, 6), at(0, 6)},
+                             {{at(2.875, 2.25), at(3.5, 2.25), at(3.5, 3.875), at(2.875, 3.875)},
+                              {at(5.5, 3.5), at(7.625, 3.5), at(7.625, 3.75), at(5.5, 3.75)}});
+  };
+  GameParams p;
+  p.resolution = 0.25;
+  const Environment here = room(0);
+  const VisibilityGame origin(here, p);
+  ASSERT_GT(origin.stats().winning, 0u);
+  ASSERT_LT(origin.stats().winning, origin.stats().seen);
+  for (double d : {5e5, 4e6, 2e7, 1e10, 1e12 - 16}) {  // the last just inside the supported range
+    const Environment there = room(d);
+    const VisibilityGame moved(there, p);
+    ASSERT_EQ(moved.num_points(), origin.num_points()) << d;
+    for (std::uint32_t i = 0; i < origin.num_points(); ++i) {
+      ASSERT_EQ(moved.point(i), Point(origin.point(i).x() + d, origin.point(i).y() + d)) << d;
+      ASSERT_EQ(moved.target_may_stand(i), origin.target_may_stand(i)) << d;
+    }
+    for (std::uint32_t o = 0; o < origin.num_points(); ++o)
+      for (std::uint32_t t = 0; t < origin.num_points(); ++t) ASSERT_EQ(moved.escape_steps(o, t), origin.escape_steps(o, t)) << d;
+  }
+}
