@@ -11,6 +11,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <thread>
 
@@ -71,7 +72,8 @@ VisibilityGame::VisibilityGame(const geometry::Environment& env, const GameParam
   const std::size_t n = points_.size();
   if (n == 0) throw InputError("game: no grid point at resolution " + std::to_string(h) + " m lies in the open free space");
   const double states = static_cast<double>(n) * static_cast<double>(n);
-  if (states > static_cast<double>(p.max_states))
+  // States are indexed by 32-bit numbers in the induction's frontier.
+  if (states > static_cast<double>(std::min<std::size_t>(p.max_states, std::numeric_limits<std::uint32_t>::max() - 1)))
     throw InputError("game: " + std::to_string(n) + " grid points make " + std::to_string(static_cast<long long>(states)) +
                      " states, more than the limit " + std::to_string(p.max_states) + "; choose a coarser resolution");
   stats_.points = n;

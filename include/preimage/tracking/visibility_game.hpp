@@ -43,7 +43,7 @@ struct GameParams {
   /// 0.3 m chairs made every state a loss.
   double target_radius = 0.2;
   unsigned threads = 0;          // 0: one per hardware thread
-  std::size_t max_states = 200'000'000;  // more (observer, target) pairs than this: InputError (6 bytes each)
+  std::size_t max_states = 200'000'000;  // more (observer, target) pairs than this (or 2^32 - 1): InputError (6 bytes each)
   /// Called with the share of the work done (0..1), from one thread at a time: the sight
   /// table up to 0.4, then induction by the share of the seen states decided (a guess
   /// until the end: the kept ones are decided last, all at once).
