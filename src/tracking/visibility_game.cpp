@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <preimage/error.hpp>
+#include <preimage/geometry/configuration_space.hpp>
 #include <preimage/geometry/queries.hpp>
 #include <preimage/geometry/visibility.hpp>
 #include <preimage/parallel_for.hpp>
@@ -79,24 +80,13 @@ VisibilityGame::VisibilityGame(const geometry::Environment& env, const GameParam
   stats_.points = n;
   stats_.states = n * n;
 
-  // Where the target's disc fits: squared distance to every edge at least r^2, decided
-  // exactly; edges whose box, widened by 2r, misses the point are farther than r for sure.
+  // Where the target's disc fits: the configuration space of a disc of the target's
+  // radius admits the point (exact, distance >= r from every obstacle edge).
   if (!(p.target_radius >= 0) || !std::isfinite(p.target_radius)) throw InputError("game: the target radius must be >= 0");
   target_ok_.assign(n, 1);
   if (p.target_radius > 0) {
-    const double r = p.target_radius;
-    const geometry::ExactFT r2 = geometry::ExactFT(r) * geometry::ExactFT(r);
-    parallel_for(n, threads, [&](std::size_t a) {
-      const Point& q = points_[a];
-      for (std::size_t e = 0; e < env.num_vertices() && target_ok_[a]; ++e) {
-        const Point &u = env.vertex(e), &w = env.vertex(env.next(e));
-        if (q.x() < std::min(u.x(), w.x()) - 2 * r || q.x() > std::max(u.x(), w.x()) + 2 * r ||
-            q.y() < std::min(u.y(), w.y()) - 2 * r || q.y() > std::max(u.y(), w.y()) + 2 * r)
-          continue;
-        const geometry::ExactKernel::Segment_2 edge(env.exact_vertex(e), env.exact_vertex(env.next(e)));
-        if (CGAL::squared_distance(geometry::to_exact(q), edge) < r2) target_ok_[a] = 0;
-      }
-    });
+    const geometry::ConfigurationSpace disc(env, p.target_radius);
+    for (std::size_t a = 0; a < n; ++a) target_ok_[a] = disc.admits(points_[a]);  // one thread: admits keeps scratch
   }
 
   // Moves: straight free segments to the grid points within reach.
