@@ -84,6 +84,16 @@ Local analyse(const SightLine& line, int s) {
     if (n_ok(i)) uf.join(D(i, s), N(i));
     if (w_ok(i, 0)) uf.join(D(i, t), W(i, 0));
   }
+  // A degenerate line: a wall on side s runs along strip i right after a contact whose
+  // gap ray bounds the near piece W(i, i), and strip i on side t was hidden at b. In exact
+  // terms the near piece is new (cleared): an evader could reach it only through the
+  // line, which b sees along the wall. That separation has no width; moving the wall by
+  // any amount to side t makes the piece split off K(i, t), and the independent checker
+  // (which drops free edges along walls) cannot tell it either. The piece is joined to
+  // K(i, t), so plans never rely on a sight line along a wall
+  // (tests/fixtures/pursuit/aligned_notch.json).
+  for (std::size_t i = 1; i <= k; ++i)
+    if (!n_exists(i) && has_t[i] && w_ok(i, i)) uf.join(W(i, i), D(i, t));
   Local out;
   for (std::size_t j = 1; j <= k; ++j) {
     const bool visible = !has_s[j - 1];
@@ -124,13 +134,13 @@ std::uint32_t component(const Shadows& sh, std::uint32_t v, const char* side) {
   return c;
 }
 
-// The one component holding all of `gaps` (they bound one region K).
-std::uint32_t component(const Shadows& sh, const std::vector<std::uint32_t>& gaps, const char* side) {
-  const std::uint32_t c = component(sh, gaps[0], side);
-  for (std::uint32_t v : gaps)
-    if (component(sh, v, side) != c)
-      throw std::logic_error("pursuit: one shadow region at a critical line lies in two components");
-  return c;
+// The components holding `gaps` (one, unless a degenerate line joined a near piece to K).
+std::vector<std::uint32_t> components(const Shadows& sh, const std::vector<std::uint32_t>& gaps, const char* side) {
+  std::vector<std::uint32_t> out;
+  for (std::uint32_t v : gaps) out.push_back(component(sh, v, side));
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
 }
 
 }  // namespace
@@ -165,7 +175,8 @@ filter::ShadowEvent gap_transition(const SegmentSight& sight, int side_a, const 
         const auto& tb = lb.tokens[i][1 - side];
         if (ta.empty() != tb.empty()) throw std::logic_error("pursuit: sides disagree on the shadow at a critical line");
         if (ta.empty()) continue;
-        pairs.push_back({component(a, ta, "A"), component(b, tb, "B")});
+        for (std::uint32_t ca : components(a, ta, "A"))
+          for (std::uint32_t cb : components(b, tb, "B")) pairs.push_back({ca, cb});
       }
   }
   std::sort(pairs.begin(), pairs.end());
