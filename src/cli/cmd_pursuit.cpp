@@ -4,7 +4,9 @@
 
 #include <preimage/error.hpp>
 #include <preimage/geometry/general_position.hpp>
+#include <preimage/pursuit/bounds.hpp>
 #include <preimage/pursuit/checker.hpp>
+#include <preimage/pursuit/examples.hpp>
 #include <preimage/pursuit/figures.hpp>
 #include <preimage/pursuit/paths_input.hpp>
 #include <preimage/pursuit/search.hpp>
@@ -12,8 +14,11 @@
 #include <preimage/render/figures.hpp>
 #include <preimage/scene/scene.hpp>
 
+#include <cmath>
 #include <fstream>
 #include <iostream>
+
+#include <unistd.h>
 
 namespace preimage::cli {
 namespace {
@@ -129,15 +134,118 @@ void write_frames(const std::string& svg, const geometry::Environment& env, cons
 // ---------------------------------------------------------------- plan
 struct PlanFlags {
   std::string file, start, svg;
-  std::size_t pursuers = 1, max_states = 4'000'000, frames = 6;
-  bool split = false, no_check = false, as_json = false, any = false;
+  std::size_t pursuers = 1, max_states = 4'000'000, frames = 6, max_mb = 2048;
+  double time_limit = 45;
+  bool pursuers_given = false, split = false, no_check = false, as_json = false, any = false;
 };
+
+double path_length(const std::vector<Point>& path);
 
 json plan_json(const pursuit::Plan& p) {
   json paths = json::array(), moves = json::array();
   for (auto& path : p.paths) paths.push_back(points_json(path));
   for (auto& m : p.moves) moves.push_back({{"pursuer", m.pursuer + 1}, {"from_cell", m.from}, {"to_cell", m.to}});
-  return {{"paths", paths}, {"length", p.length}, {"moves", moves}};
+  json lengths = json::array();
+  for (auto& path : p.paths) lengths.push_back(path_length(path));
+  return {{"paths", paths}, {"length", p.length}, {"lengths", lengths}, {"moves", moves}};
+}
+
+double path_length(const std::vector<Point>& path) {
+  double l = 0;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) l += std::hypot(path[i].x() - path[i + 1].x(), path[i].y() - path[i + 1].y());
+  return l;
+}
+
+// A search's outcome as one line (the wording the search mode has always printed).
+std::string search_line(const pursuit::SearchResult& a, const PlanFlags& F, const std::string& avoiding,
+                        const std::string& role = "") {
+  using O = pursuit::SearchResult::Outcome;
+  const std::string who = a.pursuers == 1 ? "one pursuer" : plural(a.pursuers, "pursuer", "pursuers");
+  const std::string took = ", " + geometry::format_number(std::round(a.seconds * 100) / 100) + " s";
+  if (a.outcome == O::Plan)
+    return "plan with " + who + " (" + std::to_string(a.states) + " information states explored" + took + ")";
+  if (a.outcome == O::NoPlan)
+    return a.pursuers == 1 ? "no plan with one pursuer exists" + avoiding + " (complete search, " + std::to_string(a.states) +
+                                 " information states explored" + took + ")"
+                           : "no plan with " + who + " waiting at cell samples" + avoiding + " (not a proof: " +
+                                 std::to_string(a.states) + " information states explored" + took + ")";
+  const std::string flag = role == "shortest plan" ? "twice the time the first plan took, at least 1 s"
+                           : a.budget == "time"    ? "--time-limit " + geometry::format_number(F.time_limit) + " s"
+                           : a.budget == "memory" ? "--max-mb " + std::to_string(F.max_mb)
+                                                  : "--max-states " + std::to_string(F.max_states);
+  return plural(a.pursuers, "pursuer", "pursuers") + ": search stopped after " + std::to_string(a.states) +
+         " information states (" + flag + ")";
+}
+
+// The default: the interval [lower, upper] of pursuers needed, with a checked plan.
+void run_bounds(const PlanFlags& F, const geometry::Environment& env, const std::optional<Point>& start) {
+  pursuit::BoundsOptions o;
+  o.start = start;
+  o.time_limit = F.time_limit;
+  o.max_states = F.max_states;
+  o.max_mb = F.max_mb;
+  o.shortest = !F.any;
+  o.check = false;  // checked below, with frames when a figure is asked for
+  const bool tty = isatty(STDERR_FILENO);
+  if (tty) o.progress = [](const std::string& s) { std::cerr << "\r\033[K" << s << "..." << std::flush; };
+  const auto b = pursuit::pursuer_bounds(env, o);
+  // The figure's frames come from the checker, so --svg checks even with --no-check.
+  std::optional<pursuit::CheckResult> checked;
+  if (!F.no_check || !F.svg.empty()) {
+    if (tty) std::cerr << "\r\033[Kchecking the plan..." << std::flush;
+    pursuit::CheckOptions co;
+    if (!F.svg.empty()) co.frames = pursuit::frame_waypoints(b.plan->paths[0].size(), F.frames);
+    checked = pursuit::check_paths(env, b.plan->paths, co);
+    if (!checked->cleared)
+      throw std::logic_error("pursuit: the " + b.plan_source + "'s plan fails the independent check: " + check_text(*checked));
+  }
+  if (tty) std::cerr << "\r\033[K" << std::flush;
+  const std::vector<Point> guards = b.strategy && b.plan_source == "strategy" ? b.strategy->guard_points : std::vector<Point>{};
+  const std::string interval = "[" + std::to_string(b.lower) + ", " + std::to_string(b.upper) + "]";
+  if (!F.svg.empty()) {
+    const auto map = pursuit::plan_map_panel(env, b.plan->paths, guards, "pursuers needed: " + interval + "; the plan");
+    std::ofstream f(F.svg);
+    f << pursuit::plan_frames_figure(env, b.plan->paths, checked->frames, 3, {}, &map);
+    if (!f) throw InputError(F.svg + ": cannot write file");
+  }
+  const std::string avoiding = env.has_contacts() ? " on paths that avoid contact points" : "";
+  json searches = json::array();
+  for (std::size_t i = 0; i < b.searches.size(); ++i) {
+    const auto& a = b.searches[i];
+    searches.push_back({{"for", b.roles[i]}, {"pursuers", a.pursuers}, {"outcome", pursuit::to_string(a.outcome)},
+                        {"states", a.states}, {"seconds", a.seconds}, {"megabytes", static_cast<double>(a.bytes) / (1 << 20)},
+                        {"budget", a.budget.empty() ? json(nullptr) : json(a.budget)}});
+  }
+  json lengths = json::array();
+  for (auto& p : b.plan->paths) lengths.push_back(path_length(p));
+  if (F.as_json) {
+    json out = {{"strategy", "bounds"}, {"lower", b.lower}, {"upper", b.upper}, {"exact", b.exact()},
+                {"lower_reason", b.lower_reason}, {"upper_reason", b.upper_reason}, {"holes", b.holes},
+                {"plan_source", b.plan_source}, {"searches", searches}, {"guards", points_json(guards)},
+                {"plan", plan_json(*b.plan)}, {"certified", checked.has_value()}};
+    if (b.plan->paths.size() == 1) out["shortest"] = b.shortest;
+    if (env.has_contacts()) out["paths_avoid_contacts"] = true;
+    if (checked) out["check"] = check_json(*checked);
+    return print_json(out);
+  }
+  std::cout << "pursuers needed: " << interval << (b.exact() ? " (exact)" : "") << "\n";
+  std::cout << "  lower " << b.lower << ": " << b.lower_reason << "\n";
+  std::cout << "  upper " << b.upper << ": " << b.upper_reason << (checked ? ", cleared by the independent check" : " (not checked: --no-check)") << "\n";
+  for (std::size_t i = 0; i < b.searches.size(); ++i)
+    std::cout << "search (" << b.roles[i] << "): " << search_line(b.searches[i], F, avoiding, b.roles[i]) << "\n";
+  if (!guards.empty()) {
+    std::cout << "static guards at";
+    for (std::size_t i = 0; i < guards.size(); ++i) std::cout << (i ? ", " : " ") << geometry::format_point(guards[i]);
+    std::cout << "\n";
+  }
+  std::cout << "plan: " << plural(b.plan->paths.size(), "pursuer", "pursuers") << ", " << plural(b.plan->paths[0].size(), "waypoint", "waypoints")
+            << ", length " << (b.plan->paths.size() == 1 ? "" : "per pursuer ");
+  for (std::size_t i = 0; i < b.plan->paths.size(); ++i) std::cout << (i ? ", " : "") << geometry::format_number(path_length(b.plan->paths[i]));
+  if (b.plan->paths.size() == 1 && b.plan_source == "search")
+    std::cout << (b.shortest ? " (the shortest walk between cell samples)" : " (not the shortest: --any, or the shortest-first search ran out of its budget)");
+  std::cout << "\n";
+  if (checked) std::cout << "independent check: " << check_text(*checked) << "\n";
+  if (!F.svg.empty()) std::cout << "wrote " << F.svg << "\n";
 }
 
 void run_plan(const PlanFlags& F) {
@@ -145,6 +253,7 @@ void run_plan(const PlanFlags& F) {
   const auto& env = s.require_environment();
   std::optional<Point> start = s.start;
   if (!F.start.empty()) start = parse_point(F.start, "--start");
+  if (!F.split && !F.pursuers_given) return run_bounds(F, env, start);
   json out;
   std::optional<pursuit::Plan> plan;
   std::string summary;
@@ -154,15 +263,15 @@ void run_plan(const PlanFlags& F) {
     // The exact minimum where exhaustive search settles it: one pursuer, or not one (then
     // the split plan with two is optimal).
     const auto C = pursuit::ConservativeCells::build(env);
-    pursuit::SearchOptions o{start, F.max_states, false};  // existence is the question
+    pursuit::SearchOptions o{start, F.max_states, false, F.time_limit, F.max_mb};  // existence is the question
     const auto one = pursuit::search(C, 1, o);
     std::string minimum = "unknown";
     json min_json = nullptr;
     if (one.outcome == pursuit::SearchResult::Outcome::Plan) minimum = "1", min_json = 1;
     else if (one.outcome == pursuit::SearchResult::Outcome::NoPlan && r.pursuers == 2) minimum = "2", min_json = 2;
     else if (one.outcome == pursuit::SearchResult::Outcome::NoPlan) minimum = "at least 2", min_json = ">=2";
-    summary = "split strategy: " + plural(r.pursuers, "pursuer", "pursuers") + " (" + plural(r.guards, "chord", "chords") +
-              " guarded, " + plural(r.regions, "region", "regions") + " cleared by one pursuer), " +
+    summary = "split strategy: " + plural(r.pursuers, "pursuer", "pursuers") + " (" + plural(r.guards, "static guard", "static guards") +
+              ", " + plural(r.regions, "region", "regions") + " cleared by one pursuer), " +
               plural(r.plan.paths[0].size(), "waypoint", "waypoints") + ", length " + geometry::format_number(r.plan.length) +
               "; exact minimum " + minimum + " (one-pursuer search: " + pursuit::to_string(one.outcome) + ", " +
               std::to_string(one.states) + " information states)";
@@ -171,7 +280,7 @@ void run_plan(const PlanFlags& F) {
   } else {
     const auto C = pursuit::ConservativeCells::build(env);
     std::vector<pursuit::SearchResult> attempts;
-    const auto r = pursuit::least_pursuers(C, F.pursuers, {start, F.max_states, !F.any}, &attempts);
+    const auto r = pursuit::least_pursuers(C, F.pursuers, {start, F.max_states, !F.any, F.time_limit, F.max_mb}, &attempts);
     json att = json::array();
     // Cells meet at a contact point only there: the search's pursuers never pass through one
     // (the evader does), so with contacts "no plan" is about such paths (docs/pursuit.md).
@@ -247,20 +356,47 @@ void add_pursuit_commands(CLI::App& app) {
     cmd->callback([=] { run_cells(*file, *as_json, *svg); });
   }
   {
-    auto* cmd = group->add_subcommand("plan", "Search plan for pursuers (complete for one), or the split strategy");
-    set_examples(cmd, {"preimage pursuit plan examples/pursuit/three_arms.json", "preimage pursuit plan examples/pursuit/pillar.json --pursuers 2 --json > plan.json"});
+    auto* cmd = group->add_subcommand(
+        "plan", "How many pursuers the scene needs, as an interval [lower, upper] with a checked plan; or a search, or the split strategy");
+    set_examples(cmd, {"preimage pursuit plan examples/pursuit/three_arms.json",
+                       "preimage pursuit plan examples/floorplans/office_mlstruct_302.json --no-check",
+                       "preimage pursuit plan examples/pursuit/pillar.json --pursuers 2 --json > plan.json"});
     auto F = std::make_shared<PlanFlags>();
     cmd->add_option("scene", F->file, "Scene JSON file")->required();
-    add_count(cmd, "--pursuers", F->pursuers, 1, 8, "Search with 1, 2, ... up to this many pursuers; report the least that succeeds");
+    auto* k = add_count(cmd, "--pursuers", F->pursuers, 1, 8,
+                        "Search with 1, 2, ... up to this many pursuers and report the least that succeeds (instead of the interval)");
+    cmd->add_option("--time-limit", F->time_limit, "Seconds for the searches together (the interval is printed whatever they reach)")
+        ->check(CLI::PositiveNumber);
+    add_count(cmd, "--max-mb", F->max_mb, 1, 1'000'000, "Megabytes of search state per search before giving up");
     cmd->add_option("--start", F->start, "Every pursuer starts here (default: the scene's \"start\", else anywhere)");
     add_count(cmd, "--max-states", F->max_states, 1, 1'000'000'000, "Information states to store before giving up");
-    cmd->add_flag("--split", F->split, "The constructive O(log n) strategy (simply connected scenes), beside the exact minimum");
+    cmd->add_flag("--split", F->split, "The static-guard strategy of 6.3 alone (any scene, holes included), beside the exact minimum");
     cmd->add_flag("--any", F->any, "Any plan, not the shortest: states with fewer contaminated components first (still complete)");
     cmd->add_flag("--no-check", F->no_check, "Skip the independent contamination check of the plan");
     add_count(cmd, "--frames", F->frames, 1, 24, "Moments drawn in the --svg small multiples");
     add_json_flag(cmd, F->as_json, "Machine-readable output on stdout");
     cmd->add_option("--svg", F->svg, "Draw the plan as small multiples (pursuers, V, contaminated regions) to this SVG file");
-    cmd->callback([=] { run_plan(*F); });
+    cmd->callback([=] {
+      F->pursuers_given = k->count() > 0;
+      run_plan(*F);
+    });
+  }
+  {
+    auto* cmd = group->add_subcommand("nested-u", "Write the nested-U scene of Fig. 6.40 (level L needs L pursuers)");
+    set_examples(cmd, {"preimage pursuit nested-u --level 3 -o nested3.json && preimage pursuit plan nested3.json --svg nested3.svg"});
+    auto level = std::make_shared<std::size_t>(2);
+    auto out = std::make_shared<std::string>();
+    add_count(cmd, "--level", *level, 1, 6, "Nesting depth: 1 a dead end, 2 three bent arms around a hub, ...")->required();
+    cmd->add_option("-o,--output", *out, "Scene file to write (default: stdout)");
+    cmd->callback([=] {
+      scene::Scene s;
+      s.name = "nested U, level " + std::to_string(*level);
+      s.description = "Fig. 6.40's family: a hub with three arms bending twice, each ending in the level below (1 m corridors)";
+      s.environment = pursuit::examples::nested_u(*level);
+      if (out->empty()) return print_json(scene::to_json(s));
+      scene::save_scene(s, *out);
+      std::cout << "wrote " << *out << ": " << s.environment->num_vertices() << " vertices\n";
+    });
   }
   {
     auto* cmd = group->add_subcommand("check", "Check pursuer paths with the independent contamination checker");

@@ -4,6 +4,7 @@
 #include "demo.hpp"
 
 #include <preimage/geometry/generators.hpp>
+#include <preimage/pursuit/bounds.hpp>
 #include <preimage/pursuit/checker.hpp>
 #include <preimage/pursuit/examples.hpp>
 #include <preimage/pursuit/figures.hpp>
@@ -79,8 +80,33 @@ void demo_pursuit(DemoContext& ctx) {
     const auto sc = pursuit::check_paths(arms, split.plan.paths);
     R.result("Three bent arms (simply connected): no plan with one pursuer (" + std::to_string(one.states) +
              " information states); two pursuers: a plan with " + std::to_string(two.plan->moves.size()) + " moves; " + verdict(c) +
-             ". The constructive split strategy uses " + std::to_string(split.pursuers) + " (" + std::to_string(split.guards) +
-             " chord guarded); " + verdict(sc) + ".");
+             ". The static-guard strategy uses " + std::to_string(split.pursuers) + " (" + std::to_string(split.guards) +
+             " static guard); " + verdict(sc) + ".");
+  }
+  {
+    // Fig. 6.40's family: level 3 needs three pursuers.
+    const auto env = pursuit::examples::nested_u(3);
+    pursuit::BoundsOptions o;
+    o.time_limit = 5;
+    const auto b = pursuit::pursuer_bounds(env, o);
+    const auto map = pursuit::plan_map_panel(env, b.plan->paths, b.strategy ? b.strategy->guard_points : std::vector<Point>{},
+                                             "nested U, level 3: the static-guard plan");
+    ctx.figure("pursuit-nested-u.svg", map.str(),
+               "Nested U of Fig. 6.40, level 3 (98 vertices): " + std::to_string(b.upper) + " pursuers; white dots are the static guards' posts");
+    R.result("Nested U, level 3 (Fig. 6.40): pursuers needed [" + std::to_string(b.lower) + ", " + std::to_string(b.upper) + "] (lower: " +
+             b.lower_reason + "; upper: " + b.upper_reason + "); " + verdict(*b.check) + ".");
+  }
+  {
+    // An office: rooms off a corridor, walls as holes.
+    const auto env = geometry::generators::office(2, 3);
+    const auto b = pursuit::pursuer_bounds(env);
+    const auto map = pursuit::plan_map_panel(env, b.plan->paths, b.strategy ? b.strategy->guard_points : std::vector<Point>{},
+                                             "office, 2 x 3 rooms: the static-guard plan");
+    ctx.figure("pursuit-office.svg", map.str(),
+               "An office of 2 x 3 rooms (walls are " + std::to_string(env.num_holes()) + " holes): " + std::to_string(b.upper) +
+                   " pursuers; white dots are the static guards' posts");
+    R.result("Office, 2 x 3 rooms (" + std::to_string(env.num_holes()) + " holes): pursuers needed [" + std::to_string(b.lower) + ", " +
+             std::to_string(b.upper) + "] (" + b.upper_reason + "); " + verdict(*b.check) + ".");
   }
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <random>
 #include <stdexcept>
@@ -209,6 +210,59 @@ Environment office(std::size_t rows, std::size_t cols, double room) {
   return Environment::make(std::move(outer), std::move(walls));
 }
 
+namespace {
+// The union of the filled cells of a cols x rows grid (filled[y * cols + x]; no two filled
+// cells touching at a corner only) with grid lines at gx, gy: boundary edges with a filled
+// cell on their left, chained; a straight vertex is kept when keep() says so.
+Environment cells_environment(const std::vector<char>& in, std::size_t cols, std::size_t rows, const std::vector<double>& gx,
+                              const std::vector<double>& gy, const std::function<bool()>& keep) {
+  const long W = static_cast<long>(cols), H = static_cast<long>(rows);
+  auto cell = [&](long x, long y) { return x >= 0 && y >= 0 && x < W && y < H && in[static_cast<std::size_t>(y * W + x)]; };
+  // Boundary edges with the filled cell on their left, as a successor map on grid points.
+  auto id = [&](long x, long y) { return static_cast<std::size_t>(y * (W + 1) + x); };
+  std::vector<std::size_t> succ((cols + 1) * (rows + 1), SIZE_MAX);
+  for (long y = 0; y < H; ++y)
+    for (long x = 0; x < W; ++x) {
+      if (!cell(x, y)) continue;
+      if (!cell(x, y - 1)) succ[id(x, y)] = id(x + 1, y);          // bottom, going right
+      if (!cell(x + 1, y)) succ[id(x + 1, y)] = id(x + 1, y + 1);  // right, going up
+      if (!cell(x, y + 1)) succ[id(x + 1, y + 1)] = id(x, y + 1);  // top, going left
+      if (!cell(x - 1, y)) succ[id(x, y + 1)] = id(x, y);          // left, going down
+    }
+  std::vector<Ring> loops;
+  std::vector<double> areas;
+  for (std::size_t start = 0; start < succ.size(); ++start) {
+    if (succ[start] == SIZE_MAX) continue;
+    std::vector<std::size_t> loop;
+    for (std::size_t v = start; succ[v] != SIZE_MAX;) {
+      loop.push_back(v);
+      const std::size_t w = succ[v];
+      succ[v] = SIZE_MAX;
+      v = w;
+    }
+    Ring ring;
+    const std::size_t n = loop.size();
+    auto pt = [&](std::size_t v) { return Point(gx[v % (cols + 1)], gy[v / (cols + 1)]); };
+    for (std::size_t i = 0; i < n; ++i) {
+      const Point a = pt(loop[(i + n - 1) % n]), b = pt(loop[i]), c = pt(loop[(i + 1) % n]);
+      if (orientation(a, b, c) != 0 || keep()) ring.push_back(b);
+    }
+    double twice = 0;
+    for (std::size_t i = 0; i < ring.size(); ++i)
+      twice += ring[i].x() * ring[(i + 1) % ring.size()].y() - ring[(i + 1) % ring.size()].x() * ring[i].y();
+    loops.push_back(std::move(ring));
+    areas.push_back(twice);
+  }
+  // The outer boundary is the one counter-clockwise loop (filled cells on the left, and a
+  // polyomino without pinches has one outer boundary); the clockwise ones bound the holes.
+  const auto outer = static_cast<std::size_t>(std::max_element(areas.begin(), areas.end()) - areas.begin());
+  std::vector<Ring> hole_rings;
+  for (std::size_t i = 0; i < loops.size(); ++i)
+    if (i != outer) hole_rings.push_back(std::move(loops[i]));
+  return Environment::make(std::move(loops[outer]), std::move(hole_rings));
+}
+}  // namespace
+
 Environment random_rectilinear(std::size_t cols, std::size_t rows, bool holes, std::uint64_t seed) {
   if (cols < 2 || rows < 2) throw std::invalid_argument("random_rectilinear: need at least a 2 x 2 grid");
   std::mt19937_64 rng(seed);
@@ -305,49 +359,16 @@ Environment random_rectilinear(std::size_t cols, std::size_t rows, bool holes, s
   std::uniform_int_distribution<int> width(1, 4);
   for (std::size_t i = 1; i <= cols; ++i) gx[i] = gx[i - 1] + width(rng);
   for (std::size_t i = 1; i <= rows; ++i) gy[i] = gy[i - 1] + width(rng);
-  // Boundary edges with the filled cell on their left, as a successor map on grid points.
-  auto id = [&](long x, long y) { return static_cast<std::size_t>(y * (W + 1) + x); };
-  std::vector<std::size_t> succ((cols + 1) * (rows + 1), SIZE_MAX);
-  for (long y = 0; y < H; ++y)
-    for (long x = 0; x < W; ++x) {
-      if (!cell(x, y)) continue;
-      if (!cell(x, y - 1)) succ[id(x, y)] = id(x + 1, y);          // bottom, going right
-      if (!cell(x + 1, y)) succ[id(x + 1, y)] = id(x + 1, y + 1);  // right, going up
-      if (!cell(x, y + 1)) succ[id(x + 1, y + 1)] = id(x, y + 1);  // top, going left
-      if (!cell(x - 1, y)) succ[id(x, y + 1)] = id(x, y);          // left, going down
-    }
   std::bernoulli_distribution keep_straight(0.3);
-  std::vector<Ring> loops;
-  std::vector<double> areas;
-  for (std::size_t start = 0; start < succ.size(); ++start) {
-    if (succ[start] == SIZE_MAX) continue;
-    std::vector<std::size_t> loop;
-    for (std::size_t v = start; succ[v] != SIZE_MAX;) {
-      loop.push_back(v);
-      const std::size_t w = succ[v];
-      succ[v] = SIZE_MAX;
-      v = w;
-    }
-    Ring ring;
-    const std::size_t n = loop.size();
-    auto pt = [&](std::size_t v) { return Point(gx[v % (cols + 1)], gy[v / (cols + 1)]); };
-    for (std::size_t i = 0; i < n; ++i) {
-      const Point a = pt(loop[(i + n - 1) % n]), b = pt(loop[i]), c = pt(loop[(i + 1) % n]);
-      if (orientation(a, b, c) != 0 || keep_straight(rng)) ring.push_back(b);
-    }
-    double twice = 0;
-    for (std::size_t i = 0; i < ring.size(); ++i)
-      twice += ring[i].x() * ring[(i + 1) % ring.size()].y() - ring[(i + 1) % ring.size()].x() * ring[i].y();
-    loops.push_back(std::move(ring));
-    areas.push_back(twice);
-  }
-  // The outer boundary is the one counter-clockwise loop (filled cells on the left, and a
-  // polyomino without pinches has one outer boundary); the clockwise ones bound the holes.
-  const auto outer = static_cast<std::size_t>(std::max_element(areas.begin(), areas.end()) - areas.begin());
-  std::vector<Ring> hole_rings;
-  for (std::size_t i = 0; i < loops.size(); ++i)
-    if (i != outer) hole_rings.push_back(std::move(loops[i]));
-  return Environment::make(std::move(loops[outer]), std::move(hole_rings));
+  return cells_environment(in, cols, rows, gx, gy, [&] { return keep_straight(rng); });
+}
+
+Environment from_cells(const std::vector<char>& filled, std::size_t cols, std::size_t rows) {
+  if (filled.size() != cols * rows) throw std::invalid_argument("from_cells: the grid has " + std::to_string(filled.size()) + " cells, not cols x rows");
+  std::vector<double> gx(cols + 1), gy(rows + 1);
+  for (std::size_t i = 0; i <= cols; ++i) gx[i] = static_cast<double>(i);
+  for (std::size_t i = 0; i <= rows; ++i) gy[i] = static_cast<double>(i);
+  return cells_environment(filled, cols, rows, gx, gy, [] { return false; });
 }
 
 }  // namespace preimage::geometry::generators

@@ -50,6 +50,19 @@ void draw_paths(render::SvgCanvas& c, const Paths& paths) {
   }
 }
 
+render::SvgCanvas plan_map_panel(const geometry::Environment& env, const Paths& paths, const std::vector<Point>& guards,
+                                 const std::string& caption) {
+  const CGAL::Bbox_2 box = padded(env, 0.1);  // room for the caption above
+  render::SvgCanvas c(box, kFramePanelWidth, 8);
+  c.environment(env);
+  draw_paths(c, paths);
+  const render::Style post{"#000", "#fff", 1.2, 1.0, ""};
+  for (std::size_t i = 0; i < guards.size(); ++i) c.point(guards[i], 4.5, post, "static guard " + std::to_string(i + 1));
+  if (!guards.empty()) c.legend("static guard's post", post);
+  c.label(Point(box.xmin(), env.bbox().ymax() + 0.035 * (box.xmax() - box.xmin())), caption, 11);
+  return c;
+}
+
 std::vector<std::size_t> frame_waypoints(std::size_t waypoints, std::size_t count) {
   std::vector<std::size_t> out;
   if (waypoints == 0) return out;

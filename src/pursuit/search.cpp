@@ -9,6 +9,7 @@
 #include <preimage/pursuit/joint.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -365,11 +366,29 @@ SearchResult search(const ConservativeCells& C, std::size_t k, const SearchOptio
     }
     return false;
   };
+  // Memory of one stored state: the node with its label words, its hash-table entry (key
+  // copy, value, bucket and node overhead) and a queue entry.
+  const auto t_start = std::chrono::steady_clock::now();
+  std::size_t label_bytes = 0;
+  auto state_bytes = [&] { return 2 * (sizeof(Node) + label_bytes) + 48 + sizeof(std::tuple<double, double, std::uint32_t>); };
+  auto over_budget = [&]() -> const char* {
+    if (nodes.size() >= o.max_states) return "states";
+    if (o.max_mb && (nodes.size() + 1) * state_bytes() > o.max_mb * std::size_t{1} << 20) return "memory";
+    if (o.time_limit > 0 && (nodes.size() & 1023) == 0 &&
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count() > o.time_limit)
+      return "time";
+    return nullptr;
+  };
+  const char* stopped_by = nullptr;
   auto offer = [&](StateKey key_state, double d, std::uint32_t parent, std::uint32_t slot, std::uint32_t b) -> bool {
     if (dominated(key_state)) return true;
     auto [it, fresh] = seen.try_emplace(key_state, static_cast<std::uint32_t>(nodes.size()));
     if (fresh) {
-      if (nodes.size() >= o.max_states) return false;
+      label_bytes = key_state.labels.words().size() * sizeof(key_state.labels.words()[0]);
+      if ((stopped_by = over_budget())) {
+        seen.erase(it);
+        return false;
+      }
       const double pr = priority(key_state.labels, d);
       nodes.push_back({std::move(key_state), d, parent, slot, b});
       queue.push({pr, d, it->second});
@@ -423,8 +442,11 @@ SearchResult search(const ConservativeCells& C, std::size_t k, const SearchOptio
     }
   }
   res.stored = nodes.size();
+  res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+  res.bytes = nodes.size() * state_bytes();
   if (!goal) {
     res.outcome = budget ? SearchResult::Outcome::Budget : SearchResult::Outcome::NoPlan;
+    if (budget && stopped_by) res.budget = stopped_by;
     return res;
   }
   res.outcome = SearchResult::Outcome::Plan;

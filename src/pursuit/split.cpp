@@ -5,6 +5,7 @@
 #include <preimage/error.hpp>
 #include <preimage/geometry/queries.hpp>
 #include <preimage/geometry/triangulation.hpp>
+#include <preimage/geometry/visibility.hpp>
 
 #include <CGAL/Intersections_2/Line_2_Line_2.h>
 
@@ -77,22 +78,28 @@ std::optional<Point> kernel_point(const std::vector<std::pair<Point, Point>>& ed
 class Splitter {
  public:
   Splitter(const geometry::Environment& env, const Point& start, bool search_regions)
-      : env_(env), T_(env), start_(start), search_regions_(search_regions) {
+      : env_(env), T_(env), index_(env), start_(start), search_regions_(search_regions) {
     const auto& tris = T_.triangles();
     centre_.resize(tris.size());
     for (std::size_t t = 0; t < tris.size(); ++t) {
       const Point &a = env.vertex(tris[t].v[0]), &b = env.vertex(tris[t].v[1]), &c = env.vertex(tris[t].v[2]);
       centre_[t] = Point((a.x() + b.x() + c.x()) / 3, (a.y() + b.y() + c.y()) / 3);
       if (!strictly_in(t, centre_[t])) throw std::logic_error("pursuit: a triangle's centroid is not inside it");
+      const auto ra = env.ring_of(tris[t].v[0]), rb = env.ring_of(tris[t].v[1]), rc = env.ring_of(tris[t].v[2]);
+      if (ra != rb && rb != rc && ra != rc) ++res_.trichromatic;
     }
+    by_x_.resize(env.num_vertices());
+    for (std::uint32_t v = 0; v < by_x_.size(); ++v) by_x_[v] = v;
+    std::sort(by_x_.begin(), by_x_.end(), [&](auto a, auto b) { return env.vertex(a).x() < env.vertex(b).x(); });
     start_tri_ = containing(start);
+    in_.assign(T_.size(), 0);
   }
 
   SplitResult run() {
     std::vector<std::uint32_t> all(T_.size());
     for (std::uint32_t t = 0; t < all.size(); ++t) all[t] = t;
     res_.plan.paths.clear();
-    clear(all, 0);
+    clear(all);
     for (std::size_t p = 0; p < res_.plan.paths.size(); ++p)
       for (std::size_t i = 0; i + 1 < res_.plan.paths[p].size(); ++i) {
         const Point &a = res_.plan.paths[p][i], &b = res_.plan.paths[p][i + 1];
@@ -133,7 +140,8 @@ class Splitter {
     return static_cast<std::uint32_t>(busy_.size() - 1);
   }
 
-  // Pursuer p walks to `to` (strictly inside triangle `tri`), through the dual tree.
+  // Pursuer p walks to `to` (strictly inside triangle `tri`) through the dual graph (a
+  // breadth-first path: with holes the graph has cycles).
   void travel(std::uint32_t p, std::uint32_t tri, const Point& to) {
     const auto& tris = T_.triangles();
     std::vector<std::uint32_t> from(T_.size(), kNone), queue{where_[p]};
@@ -168,7 +176,7 @@ class Splitter {
     std::vector<Point> shortened{way[0]};
     for (std::size_t i = 0; i + 1 < way.size();) {
       std::size_t j = std::min(way.size() - 1, i + 24);
-      while (j > i + 1 && !geometry::visible(env_, way[i], way[j])) --j;
+      while (j > i + 1 && !index_.visible(way[i], way[j])) --j;
       shortened.push_back(way[j]);
       i = j;
     }
@@ -178,68 +186,198 @@ class Splitter {
     where_[p] = tri;
   }
 
-  // A double point strictly inside the kernel of the union of `region`'s triangles.
-  std::optional<Point> kernel_of(const std::vector<std::uint32_t>& region) const {
-    const auto& tris = T_.triangles();
-    std::vector<char> in(T_.size(), 0);
-    for (auto t : region) in[t] = 1;
-    std::vector<std::pair<Point, Point>> edges;
-    CGAL::Bbox_2 box;
+  // Marks `region` in in_ (cleared by the caller's Mark going out of scope).
+  struct Mark {
+    std::vector<char>& in;
+    const std::vector<std::uint32_t>& region;
+    Mark(std::vector<char>& in_, const std::vector<std::uint32_t>& r) : in(in_), region(r) {
+      for (auto t : region) in[t] = 1;
+    }
+    ~Mark() {
+      for (auto t : region) in[t] = 0;
+    }
+  };
+
+  // The boundary of `region`'s union: edges (a, b) of its triangles whose far side is a
+  // wall or a triangle outside it.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> outline(const std::vector<std::uint32_t>& region,
+                                                              const std::vector<char>& in) const {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> out;
     for (auto t : region)
       for (int i = 0; i < 3; ++i) {
-        box += env_.vertex(tris[t].v[i]).bbox();
-        if (tris[t].nbr[i] == kNone || !in[tris[t].nbr[i]]) edges.push_back({env_.vertex(tris[t].v[i]), env_.vertex(tris[t].v[(i + 1) % 3])});
+        const auto& tr = T_.triangles()[t];
+        if (tr.nbr[i] == kNone || !in[tr.nbr[i]]) out.push_back({tr.v[i], tr.v[(i + 1) % 3]});
       }
+    return out;
+  }
+
+  // A double point strictly inside the kernel of the union of `region`'s triangles (none
+  // when the region has a hole: no point sees around it).
+  std::optional<Point> kernel_of(const std::vector<std::uint32_t>& region, const std::vector<char>& in) const {
+    std::vector<std::pair<Point, Point>> edges;
+    CGAL::Bbox_2 box;
+    for (auto [a, b] : outline(region, in)) {
+      box += env_.vertex(a).bbox();
+      edges.push_back({env_.vertex(a), env_.vertex(b)});
+    }
     return kernel_point(edges, box);
   }
-  bool star_shaped(const std::vector<std::uint32_t>& region) const { return kernel_of(region).has_value(); }
 
-  // The union of `region`'s triangles as an environment of its own (a simple polygon: a
-  // subtree of the dual tree of a simple polygon's triangulation).
-  geometry::Environment sub_environment(const std::vector<std::uint32_t>& region) const {
-    const auto& tris = T_.triangles();
-    std::vector<char> in(T_.size(), 0);
-    for (auto t : region) in[t] = 1;
+  // Cycle rank of the region's dual graph: the number of holes its union surrounds
+  // (0: simply connected, up to points where it touches itself).
+  std::size_t cycle_rank(const std::vector<std::uint32_t>& region, const std::vector<char>& in) const {
+    std::size_t inner = 0;
+    for (auto t : region)
+      for (auto n : T_.triangles()[t].nbr)
+        if (n != kNone && in[n]) ++inner;
+    return inner / 2 + 1 - region.size();
+  }
+
+  // The union of a simply connected region's triangles as an environment of its own, or
+  // nullopt where it touches itself at a vertex (no simple ring).
+  std::optional<geometry::Environment> sub_environment(const std::vector<std::uint32_t>& region, const std::vector<char>& in) const {
     std::vector<std::uint32_t> next(env_.num_vertices(), kNone);
     std::uint32_t first = kNone;
-    for (auto t : region)
-      for (int i = 0; i < 3; ++i)
-        if (tris[t].nbr[i] == kNone || !in[tris[t].nbr[i]]) next[tris[t].v[i]] = tris[t].v[(i + 1) % 3], first = tris[t].v[i];
+    std::size_t count = 0;
+    for (auto [a, b] : outline(region, in)) {
+      if (next[a] != kNone) return std::nullopt;
+      next[a] = b, first = a, ++count;
+    }
     geometry::Ring ring;
     for (std::uint32_t v = first;;) {
       ring.push_back(env_.vertex(v));
       v = next[v];
-      if (v == first) break;
+      if (v == first || v == kNone || ring.size() > count) break;
     }
-    return geometry::Environment::make(std::move(ring), {});
+    if (ring.size() != count) return std::nullopt;
+    try {
+      return geometry::Environment::make(std::move(ring), {});
+    } catch (const InputError&) {
+      return std::nullopt;  // e.g. two corners at one point (a contact of the whole environment)
+    }
   }
 
   // One pursuer clears the region on its own (exhaustive search in the region alone: the
   // guards keep evaders from crossing its chords), if it can within a budget.
-  std::optional<Plan> one_pursuer_plan(const std::vector<std::uint32_t>& region) const {
-    if (!search_regions_ || region.size() > 400) return std::nullopt;
-    const auto cells = ConservativeCells::build(sub_environment(region));
+  std::optional<Plan> one_pursuer_plan(const std::vector<std::uint32_t>& region, const std::vector<char>& in) const {
+    if (!search_regions_ || region.size() > 400 || cycle_rank(region, in) > 0) return std::nullopt;
+    const auto sub = sub_environment(region, in);
+    if (!sub) return std::nullopt;
+    const auto cells = ConservativeCells::build(*sub);
     const auto r = search(cells, 1, {std::nullopt, 200'000, false});
     if (r.outcome != SearchResult::Outcome::Plan) return std::nullopt;
     return r.plan;
   }
 
-  void clear(const std::vector<std::uint32_t>& region, std::size_t depth) {
-    const auto& tris = T_.triangles();
-    std::vector<char> in(T_.size(), 0);
-    for (auto t : region) in[t] = 1;
-    if (auto k = kernel_of(region)) {
-      for (auto t : region)
-        if (strictly_in(t, *k)) {
-          const std::uint32_t p = take();
-          travel(p, t, *k);
-          busy_[p] = 0;
-          ++res_.regions;
-          return;
-        }
+  // Is segment ab (an edge of the triangulation) wholly in V(g)? Both ends are seen and
+  // no environment vertex but a and b lies in the closed triangle g a b: then no obstacle
+  // enters it (one would have to cross a free segment), so the closed triangle lies in
+  // free space and g sees every point of ab within it. (A vertex on ga does not do: an
+  // obstacle may lie along ga and reach across to gb, hiding what is behind it.)
+  bool seen_edge(const Point& g, const std::vector<char>& vis, std::uint32_t a, std::uint32_t b) const {
+    if (!vis[a] || !vis[b]) return false;
+    const Point &pa = env_.vertex(a), &pb = env_.vertex(b);
+    const int o = orientation(g, pa, pb);
+    if (o == 0) return true;
+    const double lo = std::min({g.x(), pa.x(), pb.x()}), hi = std::max({g.x(), pa.x(), pb.x()});
+    auto it = std::lower_bound(by_x_.begin(), by_x_.end(), lo, [&](std::uint32_t v, double x) { return env_.vertex(v).x() < x; });
+    for (; it != by_x_.end() && env_.vertex(*it).x() <= hi; ++it) {
+      if (*it == a || *it == b) continue;
+      const Point& v = env_.vertex(*it);
+      if (orientation(g, pa, v) != -o && orientation(pa, pb, v) != -o && orientation(pb, g, v) != -o) return false;
     }
-    if (region.size() == 1) throw std::logic_error("pursuit: a triangle with an empty kernel");
-    if (auto plan = one_pursuer_plan(region)) {
+    return true;
+  }
+
+  // A static guard standing at the centre of triangle `guard`: the triangles it sees
+  // wholly drop out of the region, and the rest falls apart into parts no evader can
+  // leave unseen (joined only across edges the guard does not see wholly).
+  struct GuardSplit {
+    std::uint32_t guard = kNone;
+    std::vector<std::vector<std::uint32_t>> parts;
+    std::size_t max_rank = 0, max_size = 0;
+  };
+  GuardSplit split_by_guard(const std::vector<std::uint32_t>& region, const std::vector<char>& in, std::uint32_t guard) {
+    const auto& tris = T_.triangles();
+    const Point& g = centre_[guard];
+    vis_.assign(env_.num_vertices(), 0);
+    for (auto v : index_.visible_vertices(g)) vis_[v] = 1;
+    // Per triangle of the region, which of its edges the guard sees wholly.
+    std::vector<std::array<char, 3>> seen(region.size());
+    std::vector<char> whole(region.size());
+    for (std::size_t k = 0; k < region.size(); ++k) {
+      const auto& tr = tris[region[k]];
+      for (int i = 0; i < 3; ++i) seen[k][i] = seen_edge(g, vis_, tr.v[i], tr.v[(i + 1) % 3]);
+      whole[k] = seen[k][0] && seen[k][1] && seen[k][2];
+      local_[region[k]] = static_cast<std::uint32_t>(k);
+    }
+    std::vector<std::uint32_t> up(region.size());
+    for (std::uint32_t k = 0; k < up.size(); ++k) up[k] = k;
+    auto find = [&](std::uint32_t x) {
+      while (up[x] != x) x = up[x] = up[up[x]];
+      return x;
+    };
+    for (std::size_t k = 0; k < region.size(); ++k) {
+      if (whole[k]) continue;
+      for (int i = 0; i < 3; ++i) {
+        const auto n = tris[region[k]].nbr[i];
+        if (n == kNone || !in[n] || seen[k][i] || whole[local_[n]]) continue;
+        up[find(static_cast<std::uint32_t>(k))] = find(local_[n]);
+      }
+    }
+    GuardSplit out;
+    out.guard = guard;
+    std::vector<std::uint32_t> part_of(region.size(), kNone);
+    for (std::size_t k = 0; k < region.size(); ++k) {
+      if (whole[k]) continue;
+      const auto r = find(static_cast<std::uint32_t>(k));
+      if (part_of[r] == kNone) part_of[r] = static_cast<std::uint32_t>(out.parts.size()), out.parts.emplace_back();
+      out.parts[part_of[r]].push_back(region[k]);
+    }
+    for (auto& part : out.parts) {
+      for (auto t : part) part_in_[t] = 1;
+      out.max_rank = std::max(out.max_rank, cycle_rank(part, part_in_));
+      out.max_size = std::max(out.max_size, part.size());
+      for (auto t : part) part_in_[t] = 0;
+    }
+    return out;
+  }
+
+  // The guard that leaves the fewest holes in any part, then the smallest largest part
+  // (balanced splits keep the nesting of guards logarithmic). Trichromatic triangles
+  // (corners on three different rings, 6.3) are where a guard cuts between holes; every
+  // triangle of the region is a candidate, so a region around a single hole, which has
+  // none, is cut too.
+  GuardSplit best_guard(const std::vector<std::uint32_t>& region, const std::vector<char>& in) {
+    const std::size_t step = std::max<std::size_t>(1, region.size() / 400);
+    GuardSplit best;
+    for (std::size_t k = 0; k < region.size(); k += step) {
+      GuardSplit s = split_by_guard(region, in, region[k]);
+      if (best.guard == kNone || std::tie(s.max_rank, s.max_size) < std::tie(best.max_rank, best.max_size)) best = std::move(s);
+    }
+    return best;
+  }
+
+  void clear(const std::vector<std::uint32_t>& region) {
+    std::optional<Point> kernel;
+    std::optional<Plan> plan;
+    GuardSplit split;
+    {
+      const Mark mark(in_, region);  // in_ holds exactly this region while it is examined
+      kernel = kernel_of(region, in_);
+      if (!kernel && region.size() == 1) throw std::logic_error("pursuit: a triangle with an empty kernel");
+      if (!kernel) plan = one_pursuer_plan(region, in_);
+      if (!kernel && !plan) split = best_guard(region, in_);
+    }
+    if (kernel) {
+      // The kernel point may lie on a diagonal between two of the region's triangles.
+      const std::uint32_t p = take();
+      travel(p, containing(*kernel), *kernel);
+      busy_[p] = 0;
+      ++res_.regions;
+      return;
+    }
+    if (plan) {
       const std::uint32_t p = take();
       const auto& path = plan->paths[0];
       travel(p, containing(path[0]), path[0]);
@@ -250,59 +388,25 @@ class Splitter {
       ++res_.regions;
       return;
     }
-    // Split at a dual edge: among the most balanced (each side keeps a large share of the
-    // triangles, so the depth stays logarithmic) prefer one leaving star-shaped sides.
-    std::vector<std::uint32_t> parent(T_.size(), kNone), order{region[0]}, size(T_.size(), 1);
-    parent[region[0]] = region[0];
-    for (std::size_t q = 0; q < order.size(); ++q)
-      for (std::uint32_t n : tris[order[q]].nbr)
-        if (n != kNone && in[n] && parent[n] == kNone) parent[n] = order[q], order.push_back(n);
-    for (std::size_t q = order.size(); q-- > 1;) size[parent[order[q]]] += size[order[q]];
-    auto split_at = [&](std::uint32_t child, std::vector<std::uint32_t>& sub, std::vector<std::uint32_t>& rest) {
-      std::vector<char> in_sub(T_.size(), 0);
-      std::vector<std::uint32_t> stack{child};
-      while (!stack.empty()) {
-        const auto t = stack.back();
-        stack.pop_back();
-        in_sub[t] = 1, sub.push_back(t);
-        for (std::uint32_t n : tris[t].nbr)
-          if (n != kNone && in[n] && parent[n] == t) stack.push_back(n);
-      }
-      for (auto t : region)
-        if (!in_sub[t]) rest.push_back(t);
-    };
-    std::vector<std::pair<std::size_t, std::uint32_t>> cands;  // (smaller side, child)
-    for (std::size_t q = 1; q < order.size(); ++q)
-      cands.push_back({std::min<std::size_t>(size[order[q]], region.size() - size[order[q]]), order[q]});
-    std::sort(cands.begin(), cands.end(), [](auto& a, auto& b) { return a.first > b.first || (a.first == b.first && a.second < b.second); });
-    if (cands.size() > 12) cands.resize(12);
-    std::uint32_t best = cands[0].second;
-    int best_bad = 3;
-    for (auto [small, child] : cands) {
-      if (small * 4 < cands[0].first * 3) break;  // keep the split balanced
-      std::vector<std::uint32_t> a, b;
-      split_at(child, a, b);
-      const int bad = !star_shaped(a) + !star_shaped(b);
-      if (bad < best_bad) best_bad = bad, best = child;
-      if (bad == 0) break;
-    }
-    std::vector<std::uint32_t> sub, rest;
-    split_at(best, sub, rest);
-    // The guard stands inside the triangle on the chord's far side and sees the whole chord.
-    const std::uint32_t guard = take(), post = parent[best];
-    travel(guard, post, centre_[post]);
+    const std::uint32_t guard = take();
+    travel(guard, split.guard, centre_[split.guard]);
     ++res_.guards;
-    clear(sub, depth + 1);
-    clear(rest, depth + 1);
+    res_.guard_points.push_back(centre_[split.guard]);
+    if (split.parts.empty()) ++res_.regions;  // the guard sees the whole region
+    for (auto& part : split.parts) clear(part);
     busy_[guard] = 0;
   }
 
   const geometry::Environment& env_;
   geometry::Triangulation T_;
+  geometry::VisibilityIndex index_;
   Point start_;
   bool search_regions_;
   std::uint32_t start_tri_ = 0;
   std::vector<Point> centre_;
+  std::vector<std::uint32_t> by_x_;
+  std::vector<char> in_, vis_, part_in_ = std::vector<char>(T_.size(), 0);
+  std::vector<std::uint32_t> local_ = std::vector<std::uint32_t>(T_.size(), kNone);
   std::vector<char> busy_;
   std::vector<std::uint32_t> where_;
   SplitResult res_;
@@ -311,9 +415,6 @@ class Splitter {
 }  // namespace
 
 SplitResult split_strategy(const geometry::Environment& env, const std::optional<Point>& start, bool search_regions) {
-  if (env.num_holes() > 0)
-    throw InputError("pursuit: the split strategy needs simply connected free space (this environment has " +
-                     std::to_string(env.num_holes()) + " obstacle(s); the O(sqrt(h) + log n) construction is not implemented)");
   Point s;
   if (start) {
     const auto loc = geometry::locate(env, *start);

@@ -1,8 +1,10 @@
-// The constructive O(log n) strategy of 6.3: every plan passes the independent checker,
+// The constructive strategy of 6.3 (static guards, holes included) and the interval of
+// pursuers needed. The strategy: every plan passes the independent checker,
 // its pursuer count stays within the logarithmic bound, and it is never below the exact
 // minimum found by exhaustive search.
 #include <preimage/error.hpp>
 #include <preimage/geometry/generators.hpp>
+#include <preimage/pursuit/bounds.hpp>
 #include <preimage/pursuit/checker.hpp>
 #include <preimage/pursuit/examples.hpp>
 #include <preimage/pursuit/split.hpp>
@@ -63,6 +65,110 @@ TEST(PursuitSplit, HouseExpoFloorPlan) {
   expect_cleared(*s.environment, r, "house 0000");
 }
 
-TEST(PursuitSplit, RejectsHoles) {
-  EXPECT_THROW(pursuit::split_strategy(pursuit::examples::room_with_pillar()), InputError);
+// 6.3 with holes: a static guard in a triangle cuts free space where it sees whole
+// triangulation edges; the parts are cleared one at a time while it stands.
+TEST(PursuitSplit, StaticGuardsClearEnvironmentsWithHoles) {
+  std::vector<std::pair<std::string, Environment>> envs{{"room with pillar", pursuit::examples::room_with_pillar()},
+                                                        {"office 2 x 2", g::office(2, 2)}};
+  for (std::uint64_t s = 1; s <= 3; ++s) envs.push_back({"random, " + std::to_string(s) + " holes", g::random_environment(14 + 2 * s, s, 700 + s)});
+  for (std::uint64_t s = 0; s < 4; ++s)
+    envs.push_back({"rectilinear " + std::to_string(s), g::random_rectilinear(4 + s % 2, 4 + s % 3, true, 900 + s)});
+  for (auto& [name, env] : envs) {
+    ASSERT_GT(env.num_holes(), 0u) << name;
+    const auto r = pursuit::split_strategy(env);
+    EXPECT_GE(r.pursuers, 2u) << name << ": one pursuer never clears a hole";
+    EXPECT_GE(r.guards, 1u) << name;
+    EXPECT_EQ(r.guard_points.size(), r.guards) << name;
+    expect_cleared(env, r, name);
+  }
+}
+
+// The book: "if all of the trichromatic triangles were removed, then W_free would be
+// divided into simply-connected regions". Not with one hole: its triangles touch two
+// rings, none is trichromatic, and the annulus stays. (The strategy takes every triangle
+// as a candidate post, so it cuts the annulus anyway.)
+TEST(PursuitSplit, TrichromaticTrianglesDoNotCutEveryHole) {
+  const auto r = pursuit::split_strategy(pursuit::examples::room_with_pillar());
+  EXPECT_EQ(r.trichromatic, 0u);
+  EXPECT_EQ(r.pursuers, 2u);
+  const auto office = pursuit::split_strategy(g::office(2, 2));
+  EXPECT_GT(office.trichromatic, 0u);
+}
+
+// Fig. 6.40's family: level L needs L pursuers; the strategy stays within the issue's
+// bounds (2, 4, 6) and one pursuer is never enough from level 2 on.
+TEST(PursuitSplit, NestedUFamily) {
+  const std::size_t bound[] = {0, 1, 2, 4, 6};
+  for (std::size_t level = 1; level <= 4; ++level) {
+    const auto env = pursuit::examples::nested_u(level);
+    ASSERT_EQ(env.num_holes(), 0u);
+    const auto r = pursuit::split_strategy(env);
+    EXPECT_GE(r.pursuers, std::min<std::size_t>(level, 2)) << "level " << level;
+    EXPECT_LE(r.pursuers, bound[level]) << "level " << level;
+    if (level <= 3) expect_cleared(env, r, "nested U level " + std::to_string(level));
+    const auto C = pursuit::ConservativeCells::build(env);
+    const auto one = pursuit::search(C, 1, {std::nullopt, 1'000'000, false});
+    EXPECT_EQ(one.outcome, level == 1 ? pursuit::SearchResult::Outcome::Plan : pursuit::SearchResult::Outcome::NoPlan)
+        << "level " << level;
+  }
+  EXPECT_EQ(pursuit::split_strategy(pursuit::examples::nested_u(2)).pursuers, 2u);
+  EXPECT_THROW(pursuit::examples::nested_u(0), std::invalid_argument);
+}
+
+// The interval: both ends with their reasons, the plan checked.
+TEST(PursuitBounds, IntervalsWithReasons) {
+  {
+    const auto b = pursuit::pursuer_bounds(pursuit::examples::corridor_with_rooms(3));
+    EXPECT_EQ(b.lower, 1u);
+    EXPECT_EQ(b.upper, 1u);
+    EXPECT_EQ(b.plan_source, "search");
+    ASSERT_TRUE(b.check);
+    EXPECT_TRUE(b.check->cleared);
+  }
+  {
+    const auto b = pursuit::pursuer_bounds(pursuit::examples::room_with_pillar());
+    EXPECT_EQ(b.lower, 2u);
+    EXPECT_EQ(b.upper, 2u);
+    EXPECT_NE(b.lower_reason.find("1 hole"), std::string::npos) << b.lower_reason;
+    EXPECT_TRUE(b.searches.empty()) << "a hole settles the lower end without searching";
+  }
+  {
+    const auto b = pursuit::pursuer_bounds(pursuit::examples::three_arms());
+    EXPECT_EQ(b.lower, 2u) << "the complete one-pursuer search fails";
+    EXPECT_EQ(b.upper, 2u);
+    EXPECT_NE(b.lower_reason.find("complete one-pursuer search"), std::string::npos) << b.lower_reason;
+  }
+  {
+    // Level 3 needs 3; the interval holds it although no search proves more than 2.
+    pursuit::BoundsOptions o;
+    o.time_limit = 10;
+    const auto b = pursuit::pursuer_bounds(pursuit::examples::nested_u(3), o);
+    EXPECT_EQ(b.lower, 2u);
+    EXPECT_GE(b.upper, 3u);
+    EXPECT_LE(b.upper, 4u);
+    ASSERT_TRUE(b.check);
+    EXPECT_TRUE(b.check->cleared);
+  }
+}
+
+TEST(PursuitBounds, BudgetsStopTheSearchNotTheAnswer) {
+  pursuit::BoundsOptions o;
+  o.max_states = 5;
+  const auto b = pursuit::pursuer_bounds(pursuit::examples::three_arms(), o);
+  ASSERT_FALSE(b.searches.empty());
+  EXPECT_EQ(b.searches[0].outcome, pursuit::SearchResult::Outcome::Budget);
+  EXPECT_EQ(b.searches[0].budget, "states");
+  EXPECT_EQ(b.lower, 1u) << "an unfinished search proves nothing";
+  EXPECT_GE(b.upper, 2u);
+  ASSERT_TRUE(b.check);
+  EXPECT_TRUE(b.check->cleared);
+  // A search stopped by its memory budget says so.
+  const auto C = pursuit::ConservativeCells::build(pursuit::examples::nested_u(3));
+  pursuit::SearchOptions so;
+  so.max_mb = 1;
+  so.shortest = false;
+  const auto r = pursuit::search(C, 2, so);
+  EXPECT_EQ(r.outcome, pursuit::SearchResult::Outcome::Budget);
+  EXPECT_EQ(r.budget, "memory");
+  EXPECT_LE(r.bytes, std::size_t{1} << 20);
 }

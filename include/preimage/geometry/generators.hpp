@@ -36,6 +36,11 @@ Environment office(std::size_t rows, std::size_t cols, double room = 4.0);
 /// horizontal edges, several vertices on one vertical line, collinear runs.
 Environment random_rectilinear(std::size_t cols, std::size_t rows, bool holes, std::uint64_t seed);
 
+/// The union of the filled unit cells of a cols x rows grid (filled[y * cols + x], cell
+/// (x, y) = [x, x + 1] x [y, y + 1]); no two filled cells may touch at a corner only.
+/// Unfilled cells enclosed by filled ones are holes; straight vertices are dropped.
+Environment from_cells(const std::vector<char>& filled, std::size_t cols, std::size_t rows);
+
 /// Holes that touch at vertices (Environment contacts): an m x m grid in [0, m]^2 whose
 /// inner black cells ((i + j) even, not on the border) are unit-square holes with
 /// probability `fill`, so diagonal neighbours touch at corners; and triangles whose apex

@@ -28,6 +28,11 @@ std::string plan_frames_figure(const geometry::Environment& env, const Paths& pa
 /// The width of one panel of plan_frames_figure.
 constexpr double kFramePanelWidth = 320;
 
+/// A panel of plan_frames_figure's width mapping a plan: each pursuer's path in its colour
+/// and the static guards' posts, captioned (the `first_panel` of the small multiples).
+render::SvgCanvas plan_map_panel(const geometry::Environment& env, const Paths& paths, const std::vector<Point>& guards,
+                                 const std::string& caption);
+
 /// Waypoints for `count` evenly spread frames of a plan with `waypoints` points.
 std::vector<std::size_t> frame_waypoints(std::size_t waypoints, std::size_t count);
 

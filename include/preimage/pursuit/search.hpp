@@ -17,6 +17,7 @@
 #include <preimage/pursuit/cells.hpp>
 
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace preimage::pursuit {
@@ -42,11 +43,19 @@ struct SearchOptions {
   /// false: any plan, states with fewer contaminated components first (usually far fewer
   /// states; still complete, so "no plan" stays a proof; the plan is not the shortest).
   bool shortest = true;
+  /// Further budgets (0: none): wall-clock seconds, and megabytes of search state (the
+  /// stored states with their labels, the hash table and the queue, estimated).
+  double time_limit = 0;
+  std::size_t max_mb = 0;
 };
 
 struct SearchResult {
   enum class Outcome { Plan, NoPlan, Budget };
   Outcome outcome = Outcome::NoPlan;
+  /// Which budget stopped the search (Outcome::Budget): "states", "time" or "memory".
+  std::string budget;
+  double seconds = 0;      // wall-clock time of the search
+  std::size_t bytes = 0;   // estimated memory of the search state at its end
   std::size_t pursuers = 1;
   std::size_t states = 0;       // information states explored (settled, none dominated by another)
   std::size_t stored = 0;       // information states generated and kept (the budget counts these)
