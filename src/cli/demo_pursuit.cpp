@@ -87,7 +87,7 @@ void demo_pursuit(DemoContext& ctx) {
     // Fig. 6.40's family: level 3 needs three pursuers.
     const auto env = pursuit::examples::nested_u(3);
     pursuit::BoundsOptions o;
-    o.time_limit = 5;
+    o.time_limit = 2;
     const auto b = pursuit::pursuer_bounds(env, o);
     const auto map = pursuit::plan_map_panel(env, b.plan->paths, b.strategy ? b.strategy->guard_points : std::vector<Point>{},
                                              "nested U, level 3: the static-guard plan");
@@ -98,14 +98,16 @@ void demo_pursuit(DemoContext& ctx) {
   }
   {
     // An office: rooms off a corridor, walls as holes.
-    const auto env = geometry::generators::office(2, 3);
-    const auto b = pursuit::pursuer_bounds(env);
+    const auto env = geometry::generators::office(1, 3);
+    pursuit::BoundsOptions o;
+    o.time_limit = 2;
+    const auto b = pursuit::pursuer_bounds(env, o);
     const auto map = pursuit::plan_map_panel(env, b.plan->paths, b.strategy ? b.strategy->guard_points : std::vector<Point>{},
-                                             "office, 2 x 3 rooms: the static-guard plan");
+                                             "office, 1 x 3 rooms: the static-guard plan");
     ctx.figure("pursuit-office.svg", map.str(),
-               "An office of 2 x 3 rooms (walls are " + std::to_string(env.num_holes()) + " holes): " + std::to_string(b.upper) +
+               "An office of 1 x 3 rooms (walls are " + std::to_string(env.num_holes()) + " holes): " + std::to_string(b.upper) +
                    " pursuers; white dots are the static guards' posts");
-    R.result("Office, 2 x 3 rooms (" + std::to_string(env.num_holes()) + " holes): pursuers needed [" + std::to_string(b.lower) + ", " +
+    R.result("Office, 1 x 3 rooms (" + std::to_string(env.num_holes()) + " holes): pursuers needed [" + std::to_string(b.lower) + ", " +
              std::to_string(b.upper) + "] (" + b.upper_reason + "); " + verdict(*b.check) + ".");
   }
 }
