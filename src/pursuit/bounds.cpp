@@ -38,7 +38,7 @@ PursuerBounds pursuer_bounds(const geometry::Environment& env, const BoundsOptio
     build_cells();
     say("searching with one pursuer (" + count(cells->size(), "cell", "cells") + ")");
     SearchOptions so{o.start, o.max_states, false, left(), o.max_mb};
-    const SearchResult& any = b.searches.emplace_back(search(*cells, 1, so));
+    const SearchResult any = b.searches.emplace_back(search(*cells, 1, so));  // a copy: more searches follow
     b.roles.push_back("any plan");
     if (any.outcome == SearchResult::Outcome::Plan) {
       b.upper = 1;
