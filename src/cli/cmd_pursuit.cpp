@@ -139,7 +139,11 @@ struct PlanFlags {
   bool pursuers_given = false, split = false, no_check = false, as_json = false, any = false;
 };
 
-double path_length(const std::vector<Point>& path);
+double path_length(const std::vector<Point>& path) {
+  double l = 0;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) l += std::hypot(path[i].x() - path[i + 1].x(), path[i].y() - path[i + 1].y());
+  return l;
+}
 
 json plan_json(const pursuit::Plan& p) {
   json paths = json::array(), moves = json::array();
@@ -148,12 +152,6 @@ json plan_json(const pursuit::Plan& p) {
   json lengths = json::array();
   for (auto& path : p.paths) lengths.push_back(path_length(path));
   return {{"paths", paths}, {"length", p.length}, {"lengths", lengths}, {"moves", moves}};
-}
-
-double path_length(const std::vector<Point>& path) {
-  double l = 0;
-  for (std::size_t i = 0; i + 1 < path.size(); ++i) l += std::hypot(path[i].x() - path[i + 1].x(), path[i].y() - path[i + 1].y());
-  return l;
 }
 
 // A search's outcome as one line (the wording the search mode has always printed).
@@ -200,7 +198,7 @@ void run_bounds(const PlanFlags& F, const geometry::Environment& env, const std:
       throw std::logic_error("pursuit: the " + b.plan_source + "'s plan fails the independent check: " + check_text(*checked));
   }
   if (tty) std::cerr << "\r\033[K" << std::flush;
-  const std::vector<Point> guards = b.strategy && b.plan_source == "strategy" ? b.strategy->guard_points : std::vector<Point>{};
+  const std::vector<Point> guards = b.guard_points();
   const std::string interval = "[" + std::to_string(b.lower) + ", " + std::to_string(b.upper) + "]";
   if (!F.svg.empty()) {
     const auto map = pursuit::plan_map_panel(env, b.plan->paths, guards, "pursuers needed: " + interval + "; the plan");

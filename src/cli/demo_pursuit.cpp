@@ -29,6 +29,18 @@ pursuit::CheckResult frames(DemoContext& ctx, const Environment& env, const purs
   ctx.figure(file, pursuit::plan_frames_figure(env, plan.paths, c.frames), caption);
   return c;
 }
+
+// The interval of pursuers needed (searches get 2 s), its plan drawn as a map.
+pursuit::PursuerBounds bounds_figure(DemoContext& ctx, const Environment& env, const std::string& file, const std::string& title,
+                                     const std::string& caption) {
+  pursuit::BoundsOptions o;
+  o.time_limit = 2;
+  auto b = pursuit::pursuer_bounds(env, o);
+  ctx.figure(file, pursuit::plan_map_panel(env, b.plan->paths, b.guard_points(), title).str(),
+             caption + ": " + std::to_string(b.upper) + " pursuers; white dots are the static guards' posts");
+  return b;
+}
+
 }  // namespace
 
 void demo_pursuit(DemoContext& ctx) {
@@ -85,30 +97,19 @@ void demo_pursuit(DemoContext& ctx) {
   }
   {
     // Fig. 6.40's family: level 3 needs three pursuers.
-    const auto env = pursuit::examples::nested_u(3);
-    pursuit::BoundsOptions o;
-    o.time_limit = 2;
-    const auto b = pursuit::pursuer_bounds(env, o);
-    const auto map = pursuit::plan_map_panel(env, b.plan->paths, b.strategy ? b.strategy->guard_points : std::vector<Point>{},
-                                             "nested U, level 3: the static-guard plan");
-    ctx.figure("pursuit-nested-u.svg", map.str(),
-               "Nested U of Fig. 6.40, level 3 (98 vertices): " + std::to_string(b.upper) + " pursuers; white dots are the static guards' posts");
+    const auto b = bounds_figure(ctx, pursuit::examples::nested_u(3), "pursuit-nested-u.svg", "nested U, level 3: the static-guard plan",
+                                 "Nested U of Fig. 6.40, level 3 (98 vertices)");
     R.result("Nested U, level 3 (Fig. 6.40): pursuers needed [" + std::to_string(b.lower) + ", " + std::to_string(b.upper) + "] (lower: " +
              b.lower_reason + "; upper: " + b.upper_reason + "); " + verdict(*b.check) + ".");
   }
   {
     // An office: rooms off a corridor, walls as holes.
     const auto env = geometry::generators::office(1, 3);
-    pursuit::BoundsOptions o;
-    o.time_limit = 2;
-    const auto b = pursuit::pursuer_bounds(env, o);
-    const auto map = pursuit::plan_map_panel(env, b.plan->paths, b.strategy ? b.strategy->guard_points : std::vector<Point>{},
-                                             "office, 1 x 3 rooms: the static-guard plan");
-    ctx.figure("pursuit-office.svg", map.str(),
-               "An office of 1 x 3 rooms (walls are " + std::to_string(env.num_holes()) + " holes): " + std::to_string(b.upper) +
-                   " pursuers; white dots are the static guards' posts");
-    R.result("Office, 1 x 3 rooms (" + std::to_string(env.num_holes()) + " holes): pursuers needed [" + std::to_string(b.lower) + ", " +
-             std::to_string(b.upper) + "] (" + b.upper_reason + "); " + verdict(*b.check) + ".");
+    const std::string holes = std::to_string(env.num_holes()) + " holes";
+    const auto b = bounds_figure(ctx, env, "pursuit-office.svg", "office, 1 x 3 rooms: the static-guard plan",
+                                 "An office of 1 x 3 rooms (walls are " + holes + ")");
+    R.result("Office, 1 x 3 rooms (" + holes + "): pursuers needed [" + std::to_string(b.lower) + ", " + std::to_string(b.upper) + "] (" +
+             b.upper_reason + "); " + verdict(*b.check) + ".");
   }
 }
 

@@ -302,14 +302,24 @@ class Splitter {
     const Point& g = centre_[guard];
     vis_.assign(env_.num_vertices(), 0);
     for (auto v : index_.visible_vertices(g)) vis_[v] = 1;
-    // Per triangle of the region, which of its edges the guard sees wholly.
+    // Per triangle of the region, which of its edges the guard sees wholly (an edge shared
+    // by two of the region's triangles is decided once).
+    for (std::size_t k = 0; k < region.size(); ++k) local_[region[k]] = static_cast<std::uint32_t>(k);
     std::vector<std::array<char, 3>> seen(region.size());
     std::vector<char> whole(region.size());
     for (std::size_t k = 0; k < region.size(); ++k) {
       const auto& tr = tris[region[k]];
-      for (int i = 0; i < 3; ++i) seen[k][i] = seen_edge(g, vis_, tr.v[i], tr.v[(i + 1) % 3]);
+      for (int i = 0; i < 3; ++i) {
+        const auto n = tr.nbr[i];
+        if (n != kNone && in[n] && local_[n] < k) {
+          int j = 0;
+          while (tris[n].nbr[j] != region[k]) ++j;
+          seen[k][i] = seen[local_[n]][j];
+        } else {
+          seen[k][i] = seen_edge(g, vis_, tr.v[i], tr.v[(i + 1) % 3]);
+        }
+      }
       whole[k] = seen[k][0] && seen[k][1] && seen[k][2];
-      local_[region[k]] = static_cast<std::uint32_t>(k);
     }
     std::vector<std::uint32_t> up(region.size());
     for (std::uint32_t k = 0; k < up.size(); ++k) up[k] = k;

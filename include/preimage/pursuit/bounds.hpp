@@ -47,6 +47,10 @@ struct PursuerBounds {
   bool shortest = false;
   std::optional<CheckResult> check;
   bool exact() const { return upper == lower; }
+  /// Where the plan's static guards stand (none unless the plan is the strategy's).
+  std::vector<Point> guard_points() const {
+    return strategy && plan_source == "strategy" ? strategy->guard_points : std::vector<Point>{};
+  }
 };
 
 /// Throws InputError if the start is not in free space; std::logic_error if a plan fails
