@@ -6,6 +6,7 @@
 
 #include <preimage/decompose/coverage.hpp>
 #include <preimage/decompose/online_coverage.hpp>
+#include <preimage/geometry/local_frame.hpp>
 #include <preimage/decompose/planner.hpp>
 #include <preimage/decompose/wavefront.hpp>
 #include <preimage/geometry/configuration_space.hpp>
@@ -139,8 +140,21 @@ void run_morse(const scene::Scene& s, decompose::SliceFamily family, const std::
   if (!geojson.empty()) std::cout << "wrote " << geojson << "\n";
 }
 
-void run_brushfire(const scene::Scene& s, bool as_json, const std::string& svg, const std::string& geojson) {
+// The scene moved into its environment's local frame (geometry::LocalFrame): the brushfire
+// and wave-front decompositions compute levels, offsets and fronts in floating point, which
+// a georeferenced plan (1e5..1e12 from the origin) would otherwise round away. Points are
+// reported in input coordinates (frame.to_input); the SVG is drawn in the frame.
+scene::Scene in_local_frame(const scene::Scene& s, const geometry::LocalFrame& frame) {
+  scene::Scene local = s;
+  if (!frame.identity()) local.environment = frame.to_local(s.require_environment());
+  return local;
+}
+
+void run_brushfire(const scene::Scene& input, bool as_json, const std::string& svg, const std::string& geojson) {
+  const geometry::LocalFrame frame = geometry::LocalFrame::of(input.require_environment());
+  const scene::Scene s = in_local_frame(input, frame);
   const auto& env = s.require_environment();
+  auto out = [&](const geometry::Point& p) { return frame.to_input(p); };
   const decompose::BrushfireDecomposition b(env);
   const auto box = env.bbox();
   const double sag = 1e-4 * std::max(box.xmax() - box.xmin(), box.ymax() - box.ymin());
@@ -152,8 +166,12 @@ void run_brushfire(const scene::Scene& s, bool as_json, const std::string& svg, 
   }
   if (!geojson.empty()) {
     scene::GeoJsonWriter w;
-    w.environment(env, {{"kind", "environment"}});
-    for (std::uint32_t k = 0; k < b.num_bands(); ++k) w.polygon({b.band_polygon(k, sag)}, {{"kind", "band"}, {"method", "brushfire"}, {"cell", b.band_cell(k)}});
+    w.environment(input.require_environment(), {{"kind", "environment"}});
+    for (std::uint32_t k = 0; k < b.num_bands(); ++k) {
+      auto ring = b.band_polygon(k, sag);
+      for (auto& p : ring) p = out(p);
+      w.polygon({ring}, {{"kind", "band"}, {"method", "brushfire"}, {"cell", b.band_cell(k)}});
+    }
     w.save(geojson);
   }
   const auto adj = b.adjacency();
@@ -169,7 +187,7 @@ void run_brushfire(const scene::Scene& s, bool as_json, const std::string& svg, 
       cells.push_back(cell);
     }
     for (const auto& k : b.critical_points())
-      crit.push_back({{"point", {k.p.x(), k.p.y()}}, {"kind", k.kind == decompose::BrushfireCriticalPoint::Kind::Saddle ? "saddle" : "maximum"},
+      crit.push_back({{"point", {out(k.p).x(), out(k.p).y()}}, {"kind", k.kind == decompose::BrushfireCriticalPoint::Kind::Saddle ? "saddle" : "maximum"},
                       {"level", k.level}, {"rising", k.rising}, {"node", k.node}});
     for (const auto& n : b.nodes()) nodes.push_back({{"level", n.level}, {"critical_points", n.critical_points}});
     print_json({{"method", "brushfire"}, {"resolution", b.gvd().resolution()}, {"free_area", b.free_area()}, {"cells", cells},
@@ -189,10 +207,17 @@ void run_brushfire(const scene::Scene& s, bool as_json, const std::string& svg, 
 // critical points (geometry/shortest_path_map.hpp) and the cells and critical slices of h
 // (decompose/wavefront.hpp). The SVG's region colours are sampled on a grid (a drawing); the
 // fronts drawn are the computed ones.
-void run_wavefront(const scene::Scene& s, const std::string& start_s, bool as_json, const std::string& svg) {
+void run_wavefront(const scene::Scene& input, const std::string& start_s, bool as_json, const std::string& svg) {
+  const geometry::LocalFrame frame = geometry::LocalFrame::of(input.require_environment());
+  const scene::Scene s = in_local_frame(input, frame);
   const auto& env = s.require_environment();
+  auto out = [&](const geometry::Point& p) { return frame.to_input(p); };
+  auto xy = [&](const geometry::Point& p) { const auto q = out(p); return json::array({q.x(), q.y()}); };
   if (start_s.empty()) throw InputError("--method wavefront: needs --start X,Y (the source of the wave front)");
-  const geometry::Point start = parse_point(start_s, "--start");
+  const geometry::Point input_start = parse_point(start_s, "--start");
+  if (!geometry::locate(input.require_environment(), input_start).in_free_space())
+    throw InputError("shortest path map: the source " + geometry::format_point(input_start) + " is not in free space");
+  const geometry::Point start = frame.to_local(input_start);
   const geometry::VisibilityIndex index(env);
   const geometry::VisibilityGraph graph(index);
   const geometry::ShortestPathMap spm(graph, start);
@@ -245,29 +270,29 @@ void run_wavefront(const scene::Scene& s, const std::string& start_s, bool as_js
   if (as_json) {
     json verts = json::array(), crit = json::array();
     for (auto v : graph.reflex_vertices())
-      verts.push_back({{"id", v}, {"point", {env.vertex(v).x(), env.vertex(v).y()}}, {"distance", spm.reached(v) ? json(spm.vertex_distance(v)) : json(nullptr)},
+      verts.push_back({{"id", v}, {"point", xy(env.vertex(v))}, {"distance", spm.reached(v) ? json(spm.vertex_distance(v)) : json(nullptr)},
                        {"predecessor", spm.reached(v) ? root_json(spm.vertex_predecessor(v)) : json(nullptr)}});
     for (const auto& e : ext) {
-      json k{{"kind", "tangency"}, {"vertex", e.vertex}, {"point", {env.vertex(e.vertex).x(), env.vertex(e.vertex).y()}}, {"from", root_json(e.from)},
-             {"distance", spm.vertex_distance(e.vertex)}, {"extension", {{env.vertex(e.vertex).x(), env.vertex(e.vertex).y()}, point_json(e.hit)}},
-             {"boundary_end", {e.end.x(), e.end.y()}}};
-      if (e.collides) k["collision"] = {{"point", {e.end.x(), e.end.y()}}, {"roots", {e.vertex, root_json(e.from), root_json(e.collider)}}};
+      json k{{"kind", "tangency"}, {"vertex", e.vertex}, {"point", xy(env.vertex(e.vertex))}, {"from", root_json(e.from)},
+             {"distance", spm.vertex_distance(e.vertex)}, {"extension", {xy(env.vertex(e.vertex)), xy(geometry::to_double(e.hit))}},
+             {"boundary_end", xy(e.end)}};
+      if (e.collides) k["collision"] = {{"point", xy(e.end)}, {"roots", {e.vertex, root_json(e.from), root_json(e.collider)}}};
       crit.push_back(k);
     }
     for (const auto& m : meets)
-      crit.push_back({{"kind", "fronts_collide"}, {"point", {m.point.x(), m.point.y()}}, {"roots", {m.a, m.b}}, {"distance", m.distance}});
+      crit.push_back({{"kind", "fronts_collide"}, {"point", xy(m.point)}, {"roots", {m.a, m.b}}, {"distance", m.distance}});
     json nodes = json::array(), cells = json::array();
     auto opt = [](std::uint32_t x) { return x == decompose::WavefrontCell::kNone ? json(nullptr) : json(x); };
     for (const auto& n : wave.nodes())
-      nodes.push_back({{"level", n.level}, {"bracket", {n.lo, n.hi}}, {"point", {n.point.x(), n.point.y()}}, {"below", n.below}, {"above", n.above}});
+      nodes.push_back({{"level", n.level}, {"bracket", {n.lo, n.hi}}, {"point", xy(n.point)}, {"below", n.below}, {"above", n.above}});
     for (const auto& cl : wave.cells()) cells.push_back({{"lower", opt(cl.lower)}, {"upper", opt(cl.upper)}, {"h", {cl.lo, cl.hi}}});
-    print_json({{"method", "wavefront"}, {"start", {start.x(), start.y()}}, {"reflex_vertices", spm.num_reflex()}, {"reached", spm.num_reached()},
+    print_json({{"method", "wavefront"}, {"start", {input_start.x(), input_start.y()}}, {"reflex_vertices", spm.num_reflex()}, {"reached", spm.num_reached()},
                 {"dijkstra_edges", spm.num_edges()}, {"distance_range", {dmin, spm.max_vertex_distance()}}, {"vertices", verts},
                 {"critical_points", crit}, {"collisions_on_extensions", collisions}, {"nodes", nodes}, {"cells", cells},
                 {"adjacency", wave.adjacency()}});
     return;
   }
-  std::cout << "wavefront: shortest path map from " << geometry::format_point(start) << ": " << spm.num_reached() << " of " << spm.num_reflex()
+  std::cout << "wavefront: shortest path map from " << geometry::format_point(input_start) << ": " << spm.num_reached() << " of " << spm.num_reflex()
             << " reflex vertices reached, D at reflex vertices from " << dmin << " to " << spm.max_vertex_distance() << "\n";
   std::cout << "critical points: " << ext.size() << " tangency bends (extensions to the boundary), " << collisions
             << " collisions on extensions, " << meets.size() << " first collisions of two fronts (saddles of h)\n";
@@ -277,18 +302,18 @@ void run_wavefront(const scene::Scene& s, const std::string& start_s, bool as_js
     std::cout << "warning: " << wave.unmatched_ends() << " front piece ends found no partner (treated as ends on a wall: double-precision ties)\n";
   for (std::size_t i = 0; i < wave.nodes().size(); ++i) {
     const auto& n = wave.nodes()[i];
-    std::cout << "  slice " << i << " at h " << n.level << " near " << geometry::format_point(n.point) << ": " << n.below.size() << " cell(s) end, "
+    std::cout << "  slice " << i << " at h " << n.level << " near " << geometry::format_point(out(n.point)) << ": " << n.below.size() << " cell(s) end, "
               << n.above.size() << " begin\n";
   }
   for (const auto& e : ext) {
-    std::cout << "  bend at " << geometry::format_point(env.vertex(e.vertex)) << " (D " << spm.vertex_distance(e.vertex) << ") from "
-              << geometry::format_point(spm.root_point(e.from)) << ": extension to " << geometry::format_point(e.hit);
-    if (e.collides) std::cout << ", collision at " << geometry::format_point(e.end);
+    std::cout << "  bend at " << geometry::format_point(out(env.vertex(e.vertex))) << " (D " << spm.vertex_distance(e.vertex) << ") from "
+              << geometry::format_point(out(spm.root_point(e.from))) << ": extension to " << geometry::format_point(out(geometry::to_double(e.hit)));
+    if (e.collides) std::cout << ", collision at " << geometry::format_point(out(e.end));
     std::cout << "\n";
   }
   for (const auto& m : meets)
-    std::cout << "  fronts from " << geometry::format_point(env.vertex(m.a)) << " and " << geometry::format_point(env.vertex(m.b)) << " meet at "
-              << geometry::format_point(m.point) << " (h " << m.distance << ")\n";
+    std::cout << "  fronts from " << geometry::format_point(out(env.vertex(m.a))) << " and " << geometry::format_point(out(env.vertex(m.b))) << " meet at "
+              << geometry::format_point(out(m.point)) << " (h " << m.distance << ")\n";
   if (!svg.empty()) std::cout << "wrote " << svg << " (regions sampled on a grid; wave fronts computed, coloured by cell)\n";
 }
 

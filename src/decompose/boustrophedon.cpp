@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <preimage/decompose/boustrophedon.hpp>
+#include <preimage/geometry/local_frame.hpp>
 
 #include <preimage/error.hpp>
 #include <preimage/union_find.hpp>
@@ -14,7 +15,12 @@ namespace preimage::decompose {
 
 BoustrophedonDecomposition::BoustrophedonDecomposition(const Environment& env, double angle_deg)
     : input_(&env), angle_(angle_deg) {
-  // Sweep coordinates: rotate the input by -angle so the sweep runs along +x.
+  // Sweep coordinates: rotate the input by -angle so the sweep runs along +x, about the
+  // local frame's origin (a georeferenced plan rotated about (0, 0) would lose its digits).
+  {
+    const geometry::LocalFrame frame = geometry::LocalFrame::of(env);
+    dx_ = frame.dx(), dy_ = frame.dy();
+  }
   const double turns = angle_deg / 90.0;
   const bool quarter = std::isfinite(turns) && turns == std::round(turns);
   if (!std::isfinite(angle_deg)) throw InputError("--angle: not a finite number of degrees");
@@ -103,11 +109,12 @@ BoustrophedonDecomposition::BoustrophedonDecomposition(const Environment& env, d
 }
 
 Point BoustrophedonDecomposition::to_sweep(const Point& p) const {  // rotation by -angle
-  return Point(cos_ * p.x() + sin_ * p.y(), -sin_ * p.x() + cos_ * p.y());
+  const double x = p.x() - dx_, y = p.y() - dy_;
+  return Point(cos_ * x + sin_ * y, -sin_ * x + cos_ * y);
 }
 
 Point BoustrophedonDecomposition::to_input(const Point& p) const {
-  return Point(cos_ * p.x() - sin_ * p.y(), sin_ * p.x() + cos_ * p.y());
+  return Point(cos_ * p.x() - sin_ * p.y() + dx_, sin_ * p.x() + cos_ * p.y() + dy_);
 }
 
 void BoustrophedonDecomposition::vertices_on_line(double c, const ExactFT& lo, const ExactFT& hi,

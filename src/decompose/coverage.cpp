@@ -4,7 +4,9 @@
 #include <preimage/decompose/planner.hpp>
 #include <preimage/decompose/sweep_order.hpp>
 #include <preimage/error.hpp>
+#include <preimage/geometry/clearance.hpp>
 #include <preimage/geometry/configuration_space.hpp>
+#include <preimage/geometry/local_frame.hpp>
 #include <preimage/geometry/queries.hpp>
 
 #include "cell_sweep.hpp"
@@ -229,6 +231,31 @@ std::vector<std::uint32_t> detail::depth_first_order(const std::vector<std::vect
   return order;
 }
 
+std::size_t detail::round_back(std::vector<Point>& path, const geometry::LocalFrame& frame, const geometry::Clearance& clear) {
+  const std::vector<Point> local = path;
+  for (Point& p : path) p = frame.to_input(p);
+  std::vector<std::size_t> failing;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i)
+    if (!clear.admits(path[i], path[i + 1])) failing.push_back(i);
+  for (int pass = 0; pass < 4 && !failing.empty(); ++pass) {
+    const double push = std::ldexp(frame.margin(), pass);
+    for (const std::size_t i : failing)
+      for (const std::size_t k : {i, i + 1}) {
+        // Away from the nearest obstacle, from the point as planned.
+        const Point p = frame.to_input(local[k]), c = clear.nearest(p);
+        const double dx = p.x() - c.x(), dy = p.y() - c.y(), d = std::hypot(dx, dy);
+        if (d > 0) path[k] = Point(p.x() + push * dx / d, p.y() + push * dy / d);
+      }
+    // A moved point changes both its segments: check them all again.
+    std::vector<std::size_t> again;
+    for (const std::size_t i : failing)
+      for (const std::size_t j : {i == 0 ? i : i - 1, i, i + 1})
+        if (j + 1 < path.size() && (again.empty() || again.back() < j) && !clear.admits(path[j], path[j + 1])) again.push_back(j);
+    failing = std::move(again);
+  }
+  return failing.empty() ? path.size() : failing.front();
+}
+
 void detail::finish_path(const Planning& P, Polyline path, CoverageReport& rep) {
   // Certified output: every segment in the component (exact walk) and, with a footprint,
   // at distance >= r from every obstacle (exact arithmetic).
@@ -261,12 +288,21 @@ void detail::finish_path(const Planning& P, Polyline path, CoverageReport& rep) 
   }
 }
 
-CoverageReport plan_coverage(const Environment& env, const CoverageOptions& o) {
+namespace {
+
+// The tool width after checking the radius and width (w defaults to 2r).
+double checked_width(const CoverageOptions& o) {
   const double r = o.robot_radius;
   if (!(r >= 0) || !std::isfinite(r)) throw InputError("robot radius: must be a finite number >= 0");
   if (!(o.width >= 0) || !std::isfinite(o.width)) throw InputError("--width: the tool width must be a positive number");
   const double w = o.width > 0 ? o.width : 2 * r;
   if (!(w > 0)) throw InputError("--width: the tool width must be a positive number (or give the robot a radius: it defaults to 2r)");
+  return w;
+}
+
+CoverageReport plan_in_frame(const Environment& env, const CoverageOptions& o) {
+  const double r = o.robot_radius;
+  const double w = checked_width(o);
   // A path of more than about kMaxLapsAcross laps across the environment is beyond reason
   // (memory grows with the laps): refuse it up front rather than run for hours.
   {
@@ -316,7 +352,55 @@ CoverageReport plan_coverage(const Environment& env, const CoverageOptions& o) {
   return rep;
 }
 
-CoverageMetrics measure_coverage(const Environment& env, const CoverageReport& rep, double cell) {
+}  // namespace
+
+CoverageReport plan_coverage(const Environment& env, const CoverageOptions& o) {
+  const geometry::LocalFrame frame = geometry::LocalFrame::of(env);
+  if (frame.identity()) return plan_in_frame(env, o);
+  // Far from the origin (georeferenced plans): plan in the local frame, where rasters,
+  // offsets and GVD snapping keep the digits the plan needs, round the path back to input
+  // coordinates and certify it again there. Rounding moves a point by at most half an ulp;
+  // should that bring a segment within r of an obstacle, plan again with the robot
+  // frame.margin() wider, which rounding cannot undo.
+  const double r = o.robot_radius, w = checked_width(o);
+  const geometry::Clearance clear(env, r);
+  const Environment local = frame.to_local(env);
+  CoverageOptions lo = o;
+  lo.width = w;
+  if (o.start) lo.start = frame.to_local(*o.start);
+  if (o.centre) lo.centre = frame.to_local(*o.centre);
+  CoverageReport rep;
+  for (const double extra : {0.0, frame.margin()}) {
+    lo.robot_radius = r + extra;
+    try {
+      rep = plan_in_frame(local, lo);
+    } catch (const InputError&) {
+      // The start fits at r but not at r + margin: say so in the user's coordinates.
+      if (extra > 0 && o.start && clear.admits(*o.start))
+        throw InputError("start " + geometry::format_point(*o.start) + " is within " + geometry::format_number(frame.margin()) +
+                         " of where a robot of radius " + geometry::format_number(r) +
+                         " fits: this far from the origin a path needs that much room to be rounded; move it inwards");
+      throw;  // the same error at the origin (its points are the local ones plus the shift)
+    }
+    const std::size_t bad = detail::round_back(rep.path, frame, clear);
+    if (bad == rep.path.size()) {
+      rep.cspace_error += extra;
+      break;
+    }
+    if (extra > 0) {
+      char where[160];
+      std::snprintf(where, sizeof where, "(%.17g, %.17g) -> (%.17g, %.17g)", rep.path[bad].x(), rep.path[bad].y(), rep.path[bad + 1].x(),
+                    rep.path[bad + 1].y());
+      throw std::logic_error("coverage: segment " + std::to_string(bad) + " " + where + " failed certification in input coordinates");
+    }
+  }
+  rep.robot_radius = r;
+  return rep;
+}
+
+namespace {
+
+CoverageMetrics measure_in_frame(const Environment& env, const CoverageReport& rep, double cell) {
   CoverageMetrics m;
   if (rep.path.empty()) return m;
   const double w = rep.width, half = w / 2;
@@ -431,6 +515,17 @@ CoverageMetrics measure_coverage(const Environment& env, const CoverageReport& r
   const double area = E.area();
   m.efficiency = area > 0 ? rep.length / (area / w) : 0;
   return m;
+}
+
+}  // namespace
+
+CoverageMetrics measure_coverage(const Environment& env, const CoverageReport& rep, double cell) {
+  const geometry::LocalFrame frame = geometry::LocalFrame::of(env);
+  if (frame.identity()) return measure_in_frame(env, rep, cell);
+  // The raster in the local frame (a sample grid at 1e10 would have no digits left for w/8).
+  CoverageReport local = rep;
+  for (Point& p : local.path) p = frame.to_local(p);
+  return measure_in_frame(frame.to_local(env), local, cell);
 }
 
 }  // namespace preimage::decompose

@@ -979,22 +979,24 @@ void MorseDecomposition::build() {
     if (!h.forward) std::reverse(pl.begin(), pl.end());
     return pl;
   };
+  // Green's terms about the centre, not the origin: a cycle's sum is the same, and a plan
+  // 1e10 from the origin keeps its digits (terms of 1e20 would round by 16384 each).
+  const double cx = centre_.x(), cy = centre_.y();
+  auto cross_about_centre = [&](const Point& a, const Point& b) { return (a.x() - cx) * (b.y() - cy) - (a.y() - cy) * (b.x() - cx); };
   auto piece_area2 = [&](const Half& h) {  // twice the signed area term (Green), circles exact
     const Point &a = points_[h.from].approx, &b = points_[h.to].approx;
-    if (h.arc < 0 || family_ == SliceFamily::Spike || family_ == SliceFamily::Linear) return a.x() * b.y() - a.y() * b.x();
+    if (h.arc < 0 || family_ == SliceFamily::Spike || family_ == SliceFamily::Linear) return cross_about_centre(a, b);
     const MorseArc& arc = arcs_[static_cast<std::size_t>(h.arc)];
     if (family_ == SliceFamily::Squarel) {
       auto pl = arc.polyline(0);
       if (!h.forward) std::reverse(pl.begin(), pl.end());
       double s = 0;
-      for (std::size_t i = 0; i + 1 < pl.size(); ++i) s += pl[i].x() * pl[i + 1].y() - pl[i].y() * pl[i + 1].x();
+      for (std::size_t i = 0; i + 1 < pl.size(); ++i) s += cross_about_centre(pl[i], pl[i + 1]);
       return s;
     }
-    const double rho = std::sqrt(CGAL::to_double(arc.level)), cx = centre_.x(), cy = centre_.y();
-    const double span = h.forward ? arc.span : -arc.span;
-    const Point& s0 = h.forward ? arc.a : arc.b;
-    const double t1 = std::atan2(s0.y() - cy, s0.x() - cx), t2 = t1 + span;
-    return cx * rho * (std::sin(t2) - std::sin(t1)) - cy * rho * (std::cos(t2) - std::cos(t1)) + rho * rho * span;
+    // A circle's arc about the centre: rho^2 times the angle it spans.
+    const double rho2 = CGAL::to_double(arc.level);
+    return rho2 * (h.forward ? arc.span : -arc.span);
   };
   std::vector<std::vector<std::uint32_t>> cycles;
   std::vector<double> cycle_area;

@@ -2,6 +2,8 @@
 // Online coverage: the planner of 6.2.4 (critical point sensing, the cycle algorithm, the
 // incremental Reeb graph) driving the simulated robot of online_robot.hpp.
 #include <preimage/decompose/online_coverage.hpp>
+#include <preimage/geometry/clearance.hpp>
+#include <preimage/geometry/local_frame.hpp>
 
 #include <preimage/error.hpp>
 #include <preimage/geometry/configuration_space.hpp>
@@ -722,7 +724,9 @@ double online_tolerance(const OnlineReport& rep) {
   return std::max(rep.robot_radius * std::sin(rep.resolution), 1e-9 * (1 + rep.width));
 }
 
-OnlineReport plan_online_coverage(const Environment& env, const OnlineOptions& o) {
+namespace {
+
+OnlineReport plan_online_in_frame(const Environment& env, const OnlineOptions& o) {
   const double r = o.robot_radius;
   if (!(r > 0) || !std::isfinite(r)) throw InputError("--radius: online coverage needs a robot radius > 0");
   const double w = o.width > 0 ? o.width : 2 * r;
@@ -810,6 +814,8 @@ OnlineReport plan_online_coverage(const Environment& env, const OnlineOptions& o
   return rep;
 }
 
+}  // namespace
+
 OnlineComparison compare_with_offline(const BoustrophedonDecomposition& off, const OnlineReport& rep, double tol) {
   OnlineComparison c;
   const auto& S = off.critical_slices();
@@ -870,7 +876,49 @@ OnlineComparison compare_with_offline(const BoustrophedonDecomposition& off, con
   return c;
 }
 
+OnlineReport plan_online_coverage(const Environment& env, const OnlineOptions& o) {
+  const geometry::LocalFrame frame = geometry::LocalFrame::of(env);
+  if (frame.identity()) return plan_online_in_frame(env, o);
+  // Far from the origin: sense and plan in the local frame with the robot frame.margin()
+  // wider, then certify the path rounded back to input coordinates (as plan_coverage).
+  const double r = o.robot_radius;
+  if (!(r > 0) || !std::isfinite(r)) throw InputError("--radius: online coverage needs a robot radius > 0");
+  const geometry::Clearance clear(env, r);
+  if (o.start && !clear.admits(*o.start))
+    throw InputError("start " + geometry::format_point(*o.start) + ": a robot of radius " + geometry::format_number(r) + " does not fit there");
+  const double w = o.width > 0 ? o.width : 2 * r;
+  if (!(o.width >= 0) || !std::isfinite(o.width) || w > 2 * r)
+    throw InputError("--width " + geometry::format_number(o.width) + ": online coverage needs 0 < w <= 2r = " + geometry::format_number(2 * r) +
+                     " (a wider tool could pass an obstacle between two laps unseen)");
+  OnlineOptions lo = o;
+  lo.width = w, lo.range = o.range > 0 ? o.range : 10 * r;
+  if (o.start) lo.start = frame.to_local(*o.start);
+  const Environment local = frame.to_local(env);
+  for (const double extra : {0.0, frame.margin()}) {
+    lo.robot_radius = r + extra;
+    OnlineReport rep = plan_online_in_frame(local, lo);
+    for (OnlineNode& n : rep.nodes) n.at = frame.to_input(n.at);
+    const std::size_t bad = detail::round_back(rep.path, frame, clear);
+    if (bad == rep.path.size()) {
+      rep.robot_radius = r;
+      return rep;
+    }
+    if (extra > 0)
+      throw std::logic_error("online coverage: segment " + std::to_string(bad) + " from " + geometry::format_point(rep.path[bad]) +
+                             " failed certification in input coordinates");
+  }
+  throw std::logic_error("online coverage: unreachable");
+}
+
 OnlineComparison compare_with_offline(const Environment& env, const OnlineReport& rep, double tol) {
+  const geometry::LocalFrame frame = geometry::LocalFrame::of(env);
+  if (!frame.identity()) {
+    // The online report's sweep coordinates are those of the local frame: compare there.
+    OnlineReport local = rep;
+    for (Point& p : local.path) p = frame.to_local(p);
+    for (OnlineNode& n : local.nodes) n.at = frame.to_local(n.at);
+    return compare_with_offline(frame.to_local(env), local, tol);
+  }
   const geometry::ConfigurationSpace cs(env, rep.robot_radius);
   std::size_t comp = 0;
   if (!rep.path.empty())

@@ -1,10 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <preimage/decompose/planner.hpp>
+#include <preimage/geometry/clearance.hpp>
+#include <preimage/geometry/local_frame.hpp>
+
+#include "coverage_internal.hpp"
 
 #include <preimage/error.hpp>
 #include <preimage/geometry/configuration_space.hpp>
 #include <preimage/geometry/queries.hpp>
 #include <preimage/geometry/visibility_graph.hpp>
+
+#include "coverage_internal.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -145,8 +151,9 @@ Plan TrapezoidalPlanner::plan(const Point& start, const Point& goal, bool shorte
   return out;
 }
 
-RobotPlan plan_path(const Environment& env, const Point& start, const Point& goal, double radius, PlanMethod method,
-                    bool shorten) {
+namespace {
+
+RobotPlan plan_in_frame(const Environment& env, const Point& start, const Point& goal, double radius, PlanMethod method, bool shorten) {
   const geometry::ConfigurationSpace cs(env, radius);
   auto join = [&](const Point& p, const char* what) {
     const auto loc = geometry::locate(env, p);
@@ -198,6 +205,23 @@ RobotPlan plan_path(const Environment& env, const Point& start, const Point& goa
     out.length += std::sqrt(CGAL::to_double(CGAL::squared_distance(a, z)));
   }
   out.found = true;
+  return out;
+}
+
+}  // namespace
+
+RobotPlan plan_path(const Environment& env, const Point& start, const Point& goal, double radius, PlanMethod method,
+                    bool shorten) {
+  const geometry::LocalFrame frame = geometry::LocalFrame::of(env);
+  if (frame.identity()) return plan_in_frame(env, start, goal, radius, method, shorten);
+  // Far from the origin: plan in the local frame (the configuration space's offset keeps its
+  // digits there), then round the path back and certify it in input coordinates.
+  const geometry::Clearance clear(env, radius);
+  RobotPlan out = plan_in_frame(frame.to_local(env), frame.to_local(start), frame.to_local(goal), radius, method, shorten);
+  if (!out.found) return out;
+  if (const std::size_t bad = detail::round_back(out.path, frame, clear); bad < out.path.size())
+    throw std::logic_error("plan: segment " + geometry::format_point(out.path[bad]) + " -> " + geometry::format_point(out.path[bad + 1]) +
+                           " failed certification in input coordinates");
   return out;
 }
 

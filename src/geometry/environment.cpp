@@ -313,12 +313,29 @@ ExactFT Environment::exact_area() const {
 }
 
 double Environment::area() const {
+  // Cross products about the first vertex, not the origin: a plan 1e10 from the origin would
+  // otherwise sum terms of 1e20 whose rounding (16384 each) swamps its area.
+  if (pts_.empty()) return 0;
+  const double ox = pts_[0].x(), oy = pts_[0].y();
   double twice = 0;
   for (std::size_t v = 0; v < pts_.size(); ++v) {
     const Point &a = pts_[v], &b = pts_[next(v)];
-    twice += a.x() * b.y() - b.x() * a.y();
+    const double ax = a.x() - ox, ay = a.y() - oy, bx = b.x() - ox, by = b.y() - oy;
+    twice += ax * by - bx * ay;
   }
   return twice / 2;
+}
+
+Environment Environment::translated(double dx, double dy) const {
+  // The caller guarantees exact differences (LocalFrame), so orientations, contacts and
+  // wedges are those of *this and only the coordinates change.
+  Environment env = *this;
+  for (std::size_t v = 0; v < pts_.size(); ++v) {
+    env.pts_[v] = Point(pts_[v].x() - dx, pts_[v].y() - dy);
+    env.exact_pts_[v] = to_exact(env.pts_[v]);
+  }
+  for (std::size_t e = 0; e < pts_.size(); ++e) env.exact_lines_[e] = ExactKernel::Line_2(env.exact_pts_[e], env.exact_pts_[env.next(e)]);
+  return env;
 }
 
 CGAL::Bbox_2 Environment::bbox() const {

@@ -11,6 +11,7 @@
 #include <preimage/geometry/gvd.hpp>
 
 #include <preimage/error.hpp>
+#include <preimage/geometry/local_frame.hpp>
 #include <preimage/geometry/queries.hpp>
 #include <preimage/geometry/segment_sweep.hpp>
 #include <preimage/union_find.hpp>
@@ -76,6 +77,13 @@ struct EdgeShape {
 
 GeneralizedVoronoiDiagram GeneralizedVoronoiDiagram::build(const Environment& env, const GvdOptions& options) {
   using namespace gvd_detail;
+  // Far from the origin the snapping grid would be as coarse as the coordinates are large
+  // (2^5 at 1e10): build the diagram in the local frame, then move it back.
+  if (const LocalFrame frame = LocalFrame::of(env); !frame.identity()) {
+    GeneralizedVoronoiDiagram g = build(frame.to_local(env), options);
+    g.to_input(frame, env);
+    return g;
+  }
   GeneralizedVoronoiDiagram g;
   const std::size_t n = env.num_vertices();
 
@@ -606,6 +614,21 @@ GeneralizedVoronoiDiagram GeneralizedVoronoiDiagram::build(const Environment& en
     }
   }
   return g;
+}
+
+void GeneralizedVoronoiDiagram::to_input(const LocalFrame& frame, const Environment& env) {
+  auto move = [&](Point& p) { p = frame.to_input(p); };
+  for (GvdVertex& v : vertices_) move(v.p);
+  for (GvdEdge& e : edges_)
+    for (Point& p : e.polyline) move(p);
+  for (auto* list : {&saddles_, &maxima_})
+    for (GvdCriticalPoint& c : *list) move(c.p), move(c.nearest[0]), move(c.nearest[1]);
+  for (MedialVertex& v : medial_vertices_) move(v.p);
+  for (MedialEdge& e : medial_edges_)
+    for (Point& p : e.polyline) move(p);
+  for (Point& p : snapped_) move(p);
+  for (std::size_t e = 0; e < segments_.size(); ++e) segments_[e] = env.edge(e);
+  grid_x0_ += frame.dx(), grid_y0_ += frame.dy();
 }
 
 Point GeneralizedVoronoiDiagram::nearest_on_site(const GvdSite& s, const Point& p) const {

@@ -75,11 +75,13 @@ Point VisibilityPolygon::approx_point(std::size_t i) const {
 }
 
 double VisibilityPolygon::area() const {
+  // Cross products about the viewpoint (terms about the origin lose a far plan's digits).
   double twice = 0;
   const std::size_t n = vertices.size();
+  const double qx = query.x(), qy = query.y();
   for (std::size_t i = 0; i < n; ++i) {
     const Point a = approx_point(i), b = approx_point((i + 1) % n);
-    twice += a.x() * b.y() - b.x() * a.y();
+    twice += (a.x() - qx) * (b.y() - qy) - (b.x() - qx) * (a.y() - qy);
   }
   return twice / 2;
 }

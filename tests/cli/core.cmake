@@ -297,3 +297,12 @@ foreach(pattern boustrophedon brushfire)
            cover ${FIX}/scenes/tiny_room_2e-6.json --width 1e12 --radius 0 --pattern ${pattern} --start 1e-7,1e-7)
   set_tests_properties(cli.cover_huge_width_tiny_room_${pattern} PROPERTIES LABELS degenerate)
 endforeach()
+
+# Issue 49: every geometric command on a real plan at the origin and shifted to UTM, Web
+# Mercator, 1e10 and just inside 1e12 gives the origin's answer moved; 1e12 is refused.
+cli_test(cover_far_from_the_origin_keeps_its_area 0 "covered 99\\.98% of the configuration space \\(84\\.0420140764 m2\\)" -
+         cover ${FIX}/scenes/room_with_hole_at_1e10.json --radius 0.25)
+cli_test(cover_spiral_far_from_the_origin 0 "spiral pattern: length 252\\.129975" - cover ${FIX}/scenes/room_with_hole_at_1e10.json --radius 0.25 --pattern spiral)
+find_package(Python3 COMPONENTS Interpreter REQUIRED)
+add_test(NAME cli.translation_invariance COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/cli/translation_invariance.py
+         $<TARGET_FILE:preimage_cli> ${PROJECT_SOURCE_DIR}/examples/floorplans/office_mlstruct_302.json ${CMAKE_CURRENT_BINARY_DIR}/translation-scratch)

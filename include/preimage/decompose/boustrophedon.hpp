@@ -67,7 +67,9 @@ class BoustrophedonDecomposition {
   /// cell's boundary is a vertex of it (points inside edges appear only at the corners).
   std::vector<ExactPoint> exact_polygon(std::size_t cell) const;
   /// exact_polygon mapped to the input's coordinates and rounded to doubles (exact for
-  /// environment vertices at every angle, and for every point at quarter turns).
+  /// environment vertices at every angle, and for every point at quarter turns of an
+  /// environment near the origin: far from it the sweep frame is the local one,
+  /// geometry::LocalFrame, and mapping back rounds).
   std::vector<Point> polygon(std::size_t cell) const;
   /// Exact area in sweep coordinates: the sum of the cell's trapezoids, which equals the
   /// area of exact_polygon.
@@ -76,7 +78,8 @@ class BoustrophedonDecomposition {
   /// (edge e of the swept environment comes from the input edge that starts there).
   std::size_t input_vertex_id(std::size_t v) const { return input_->ring_begin(rotated_->ring_of(v)) + rotated_->input_index(v); }
   Point input_vertex(std::size_t v) const { return input_->vertex(input_vertex_id(v)); }
-  /// Point of sweep coordinates mapped back to input coordinates, and the reverse.
+  /// Point of sweep coordinates mapped back to input coordinates, and the reverse. The sweep
+  /// frame is the input's local frame (geometry::LocalFrame) rotated by -angle.
   Point to_input(const Point& p) const;
   Point to_sweep(const Point& p) const;
   /// Adjacent cells (sharing a critical slice with a common extension), per cell.
@@ -92,6 +95,7 @@ class BoustrophedonDecomposition {
   const Environment* input_;
   double angle_;
   double cos_ = 1, sin_ = 0;
+  double dx_ = 0, dy_ = 0;  // the local frame's origin (geometry::LocalFrame), rotated about
   std::vector<std::uint32_t> by_xy_;  // swept vertices in lexicographic (x, y) order
   std::unique_ptr<Environment> rotated_;
   std::unique_ptr<TrapezoidalDecomposition> trap_;

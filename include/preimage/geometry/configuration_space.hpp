@@ -13,6 +13,7 @@
 // Components that meet only where the exact set pinches to a point are kept apart: a
 // disc of positive radius cannot pass such a point.
 #pragma once
+#include <preimage/geometry/clearance.hpp>
 #include <preimage/geometry/environment.hpp>
 
 #include <memory>
@@ -49,19 +50,18 @@ class ConfigurationSpace {
   std::optional<Entry> entry(const Point& p) const;
 
   /// Exact: p is in free space at distance >= r from every obstacle edge.
-  bool admits(const Point& p) const;
+  bool admits(const Point& p) const { return clearance_.admits(p); }
   /// Exact: every point of segment pq is (the segment stays r away from all obstacles).
-  bool admits(const Point& p, const Point& q) const;
+  bool admits(const Point& p, const Point& q) const { return clearance_.admits(p, q); }
   /// Distance from p to the nearest obstacle edge, in double (for messages, not decisions).
-  double clearance(const Point& p) const;
+  double clearance(const Point& p) const { return clearance_.distance(p); }
 
  private:
-  struct EdgeGrid;
   const Environment* workspace_;
   double radius_;
+  Clearance clearance_;
   double error_ = 0;
   std::vector<Environment> components_;
-  std::unique_ptr<EdgeGrid> grid_;
 };
 
 }  // namespace preimage::geometry

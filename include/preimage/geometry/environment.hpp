@@ -98,6 +98,10 @@ class Environment {
   /// Free area (outer minus holes), computed in double for reports; exact value: exact_area().
   double area() const;
   ExactFT exact_area() const;
+  /// The same environment moved by (-dx, -dy). Only for exact translations (every
+  /// difference representable: geometry::LocalFrame checks it); rings, names and indices
+  /// are kept.
+  Environment translated(double dx, double dy) const;
   /// Bounding box of the outer boundary.
   CGAL::Bbox_2 bbox() const;
 

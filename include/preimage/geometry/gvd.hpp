@@ -16,6 +16,8 @@
 
 namespace preimage::geometry {
 
+class LocalFrame;
+
 /// A site of the Voronoi diagram: an environment vertex (a point site) or an environment
 /// edge (the open segment), with the obstacle it belongs to.
 struct GvdSite {
@@ -125,10 +127,12 @@ class GeneralizedVoronoiDiagram {
   /// The grid the input was snapped to: a power of two, 2^resolution_exponent(). The GVD
   /// is the exact GVD of the snapped environment; reported coordinates are within
   /// resolution() of it, and the snapped vertices within resolution() / 2 (per
-  /// coordinate) of the input.
+  /// coordinate) of the input. Far from the origin the grid is laid in the environment's
+  /// local frame (geometry::LocalFrame), so its resolution follows the plan's size, not
+  /// its distance from the origin; points are then moved back and rounded.
   double resolution() const { return resolution_; }
   int resolution_exponent() const { return resolution_exponent_; }
-  /// Vertex v after snapping (exactly a multiple of resolution()).
+  /// Vertex v after snapping (exactly a multiple of resolution() in the local frame).
   const Point& snapped_vertex(std::size_t v) const { return snapped_[v]; }
   const std::vector<Point>& snapped_vertices() const { return snapped_; }
   /// The sampling bound of curved edges actually used.
@@ -146,6 +150,9 @@ class GeneralizedVoronoiDiagram {
   std::vector<std::pair<std::pair<std::uint32_t, std::uint32_t>, std::size_t>> obstacle_pairs() const;
 
  private:
+  // Moves a diagram built in env's local frame back to env's coordinates (rounded).
+  void to_input(const LocalFrame& frame, const Environment& env);
+
   std::vector<GvdVertex> vertices_;
   std::vector<GvdEdge> edges_;
   std::vector<GvdCriticalPoint> saddles_, maxima_;

@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: Apache-2.0
+// A local frame for the floating steps (offsets, rasters, snapping, areas, angles).
+//
+// Predicates are exact wherever an environment sits, but a floating step is not: a plan in
+// UTM or Web Mercator coordinates (5e5 .. 2e7, up to kMaxCoordinate) loses in a raster, a
+// Clipper grid or a sum of cross products the digits that its own size keeps near the origin.
+// An environment much farther from the origin than it is large is translated so its bounding
+// box starts at 0 along each such axis. The translation is exact (Sterbenz: x and x0 of the same
+// sign within a factor 2 have an exact difference), so the local environment is the input one,
+// moved, and every decision on it is the decision on the input. Only mapping constructed points
+// back rounds: by at most half an ulp of the input's largest coordinate per axis, which callers
+// make room for with `margin()` (a robot planned `margin()` farther from every obstacle stays
+// clear of them once its path is rounded back).
+#pragma once
+#include <preimage/geometry/environment.hpp>
+
+namespace preimage::geometry {
+
+class LocalFrame {
+ public:
+  LocalFrame() = default;
+  /// The frame for env: a translation along each axis whose coordinates all lie more than 16
+  /// times the environment's extent from 0, else the identity along it.
+  static LocalFrame of(const Environment& env);
+
+  bool identity() const { return dx_ == 0 && dy_ == 0; }
+  double dx() const { return dx_; }
+  double dy() const { return dy_; }
+  /// How far to_input() may move a constructed point, with a factor of safety (0 for the
+  /// identity); at least 2^-36 of the extent, so an erosion by it is representable.
+  double margin() const { return margin_; }
+
+  /// The environment translated into the frame (exact; std::logic_error if it were not).
+  Environment to_local(const Environment& env) const;
+  /// A point into the frame: exact for points within the environment's box, rounded
+  /// otherwise (a centre given outside it).
+  Point to_local(const Point& p) const { return Point(p.x() - dx_, p.y() - dy_); }
+  /// A constructed point back to input coordinates, rounded to the nearest double.
+  Point to_input(const Point& p) const { return Point(p.x() + dx_, p.y() + dy_); }
+
+ private:
+  double dx_ = 0, dy_ = 0, margin_ = 0;
+};
+
+}  // namespace preimage::geometry
