@@ -590,13 +590,13 @@ void run_cover(const CoverArgs& a) {
     print_json({{"pattern", a.pattern}, {"center", centre}, {"width", rep.width}, {"robot_radius", rep.robot_radius}, {"angle", rep.angle},
                 {"order", o.pattern == decompose::Pattern::Boustrophedon ? a.order : "dfs"}, {"transit", a.transit},
                 {"length", rep.length}, {"transit_length", rep.transit_length}, {"laps", rep.laps}, {"turns", rep.turns},
-                {"rotation_deg", rep.rotation_deg}, {"cells", rep.cells}, {"critical_points", rep.critical_points},
+                {"turns_over_15_deg", rep.sharp_turns}, {"rotation_deg", rep.rotation_deg}, {"cells", rep.cells}, {"critical_points", rep.critical_points},
                 {"cell_order", rep.cell_order}, {"sweeps", rep.sweeps},
                 {"order_optimal", rep.order_optimal}, {"order_lower_bound", rep.order_lower_bound},
                 {"metrics", {{"covered_fraction", m.covered_fraction}, {"overlap", m.overlap}, {"efficiency", m.efficiency},
                              {"samples", m.samples}}},
                 {"target_area", rep.target_area}, {"unreachable_area", rep.unreachable_area}, {"cspace_error", rep.cspace_error},
-                {"rounding_detours", rep.rounding_detours},
+                {"rounding_detours", rep.rounding_detours}, {"touch_ups", rep.touch_ups},
                 {"bound", {{"value", rep.bound}, {"diameter", rep.diameter}, {"perimeter", rep.perimeter},
                            {"formula", "D^2/w + 4 D (N_cp + N_ob) + 5 P_total - 4 D"}}},
                 {"path", points_json(rep.path)}, {"moves", moves}});
@@ -608,7 +608,9 @@ void run_cover(const CoverArgs& a) {
   else std::cout << ", " << a.pattern << " pattern";
   std::cout << ": length " << geometry::format_number(rep.length)
             << " (transits " << geometry::format_number(rep.transit_length) << "; bound " << geometry::format_number(rep.bound) << "), "
-            << rep.laps << " laps, " << rep.turns << " turns, " << rep.cells << " cells, " << rep.critical_points << " critical points\n";
+            << rep.laps << " laps, " << rep.turns << " turns (" << rep.sharp_turns << " over 15 degrees), " << rep.cells << " cells, " << rep.critical_points << " critical points";
+  if (rep.touch_ups > 0) std::cout << ", " << rep.touch_ups << " touch-ups";
+  std::cout << "\n";
   std::cout << "covered " << geometry::format_number(std::round(m.covered_fraction * 10000) / 100) << "% of the configuration space ("
             << geometry::format_number(rep.target_area) << " m2), overlap " << geometry::format_number(std::round(m.overlap * 10000) / 100)
             << "%, length / (area / width) = " << geometry::format_number(std::round(m.efficiency * 1000) / 1000);

@@ -10,6 +10,7 @@
 #include <preimage/geometry/queries.hpp>
 
 #include "cell_sweep.hpp"
+#include "coverage_raster.hpp"
 #include "coverage_internal.hpp"
 
 #include <CGAL/Polygon_2_algorithms.h>
@@ -170,6 +171,125 @@ CoverageReport plan_at(const Planning& P, const BoustrophedonDecomposition& b, d
   return rep;
 }
 
+// Touch-ups, after every pattern: what its laps left on the raster of the component (a
+// sliver between two offset rings, a corner no front reached) is visited point by point by
+// shortest transits, the largest uncovered patches first, until at most kTouchUpLeft of the
+// samples is left. A touch-up point is a sample centre in the component, so the robot's
+// centre may stand there; it covers the samples within w/2 of it.
+constexpr double kTouchUpLeft = 1e-3;
+
+// Boundary following, straightened (issue 49: a robot slows down at every turn, and most
+// of the turns were the 1 cm jogs of walls): within a run of follow moves, a point is
+// skipped when the straight segment past it is certified (inside the component, r from
+// every obstacle: exact) and no skipped point lies more than w/8 from it, so corners of
+// the room are still followed and only jogs go. Returns how many points were dropped.
+std::size_t straighten_follows(const Planning& P, detail::Polyline& path) {
+  const double tol = P.w / 8;
+  auto certified = [&](const Point& a, const Point& z) {
+    return P.index.visible(a, z) && (P.cs.radius() == 0 || P.cs.admits(a, z));
+  };
+  auto near_segment = [&](const Point& a, const Point& z, std::size_t from, std::size_t to) {
+    const double vx = z.x() - a.x(), vy = z.y() - a.y(), l2 = vx * vx + vy * vy;
+    for (std::size_t k = from; k < to; ++k) {
+      const Point& p = path.points[k];
+      const double t = l2 > 0 ? std::clamp(((p.x() - a.x()) * vx + (p.y() - a.y()) * vy) / l2, 0.0, 1.0) : 0.0;
+      if (std::hypot(p.x() - a.x() - t * vx, p.y() - a.y() - t * vy) > tol) return false;
+    }
+    return true;
+  };
+  detail::Polyline out;
+  out.points.push_back(path.points.front());
+  std::size_t dropped = 0, i = 0;
+  const std::size_t n = path.points.size();
+  while (i + 1 < n) {
+    if (path.moves[i] != Move::Follow) {
+      out.append(path.points[i + 1], path.moves[i]);
+      ++i;
+      continue;
+    }
+    std::size_t end = i;  // the run of follow moves i .. end - 1 ends at point `end`
+    while (end + 1 < n && path.moves[end] == Move::Follow) ++end;
+    // Greedy string pulling from i: the farthest point of the run still reachable straight.
+    std::size_t a = i;
+    while (a < end) {
+      std::size_t j = a + 1;
+      while (j + 1 <= end && certified(path.points[a], path.points[j + 1]) && near_segment(path.points[a], path.points[j + 1], a + 1, j + 1)) ++j;
+      dropped += j - a - 1;
+      out.append(path.points[j], Move::Follow);
+      a = j;
+    }
+    i = end;
+  }
+  path = std::move(out);
+  return dropped;
+}
+
+void touch_up(const Planning& P, CoverageReport& rep) {
+  if (rep.path.empty()) return;
+  {
+    detail::Polyline path;
+    path.points = std::move(rep.path), path.moves = std::move(rep.moves);
+    straighten_follows(P, path);
+    rep.path = std::move(path.points), rep.moves = std::move(path.moves);
+  }
+  const double half = P.w / 2;
+  const detail::CoverageRaster R(P.E, P.index, P.w, 0);
+  std::vector<char> open(R.target.size(), 0);
+  std::size_t total = 0, left = 0;
+  for (std::size_t id = 0; id < R.target.size(); ++id) total += R.target[id], open[id] = R.target[id];
+  for (std::size_t seg = 0; seg + 1 < std::max<std::size_t>(rep.path.size(), 2); ++seg)
+    R.capsule(rep.path[seg], rep.path[std::min(seg + 1, rep.path.size() - 1)], half, half, [&](std::size_t id, bool) { open[id] = 0; });
+  for (char o : open) left += o;
+  const auto allowed = static_cast<std::size_t>(kTouchUpLeft * static_cast<double>(total));
+  // Patches: 4-connected uncovered samples, largest first.
+  std::vector<std::vector<std::size_t>> patches;
+  {
+    std::vector<char> seen(open.size(), 0);
+    for (std::size_t id = 0; id < open.size(); ++id) {
+      if (!open[id] || seen[id]) continue;
+      std::vector<std::size_t> patch{id};
+      seen[id] = 1;
+      for (std::size_t k = 0; k < patch.size(); ++k) {
+        const std::size_t c = patch[k], i = c % R.nx, j = c / R.nx;
+        for (const std::size_t n : {i > 0 ? c - 1 : c, i + 1 < R.nx ? c + 1 : c, j > 0 ? c - R.nx : c, j + 1 < R.ny ? c + R.nx : c})
+          if (open[n] && !seen[n]) seen[n] = 1, patch.push_back(n);
+      }
+      patches.push_back(std::move(patch));
+    }
+    std::stable_sort(patches.begin(), patches.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
+  }
+  std::vector<Point> points;
+  for (const auto& patch : patches) {
+    if (left <= allowed) break;
+    for (const std::size_t id : patch) {
+      if (!open[id] || left <= allowed) continue;
+      const Point q = R.centre(id);
+      points.push_back(q);
+      R.capsule(q, q, half, half, [&](std::size_t c, bool) {
+        if (open[c]) open[c] = 0, --left;
+      });
+    }
+  }
+  // Nearest first from the path's end, each by the shortest transit in the component.
+  detail::Polyline path;
+  path.points = std::move(rep.path), path.moves = std::move(rep.moves);
+  std::vector<char> done(points.size(), 0);
+  for (std::size_t n = 0; n < points.size(); ++n) {
+    const Point from = path.points.back();
+    std::size_t best = points.size();
+    double best_d = INFINITY;
+    for (std::size_t k = 0; k < points.size(); ++k)
+      if (!done[k] && dist(from, points[k]) < best_d) best_d = dist(from, points[k]), best = k;
+    done[best] = 1;
+    const auto sp = P.graph.shortest_path(from, points[best]);
+    if (!sp.found) throw std::logic_error("coverage: no transit to a touch-up point in the component");
+    for (std::size_t k = 1; k < sp.points.size(); ++k) path.append(sp.points[k], Move::Transit);
+  }
+  rep.length = rep.transit_length = rep.rotation_deg = 0, rep.turns = rep.sharp_turns = 0;
+  rep.touch_ups = points.size();
+  detail::finish_path(P, std::move(path), rep);
+}
+
 // 6.2.1's pattern: the sweep direction given, or the two most promising candidates planned
 // and the shorter path kept.
 CoverageReport plan_boustrophedon(const Planning& P) {
@@ -283,6 +403,7 @@ void detail::finish_path(const Planning& P, Polyline path, CoverageReport& rep) 
       if (d > 180) d = 360 - d;
       rep.rotation_deg += d;
       rep.turns += d > 1.0;  // heading changes over a degree, as coverage planners count them
+      rep.sharp_turns += d > 15.0;
     }
     heading_prev = h;
   }
@@ -340,6 +461,7 @@ CoverageReport plan_in_frame(const Environment& env, const CoverageOptions& o) {
                        : o.pattern == Pattern::Brushfire   ? detail::plan_brushfire(P)
                        : o.pattern == Pattern::Wavefront   ? detail::plan_wavefront(P)
                                                            : detail::plan_pattern(P);
+  touch_up(P, rep);
   rep.width = w, rep.robot_radius = r;
   rep.target_area = E.area();
   for (std::size_t k = 0; k < cs.components().size(); ++k)
@@ -411,104 +533,30 @@ CoverageMetrics measure_in_frame(const Environment& env, const CoverageReport& r
   if (!comp) return m;
   const Environment& E = cs.components()[*comp];
   const VisibilityIndex index(E);
-  const auto box = E.bbox();
-  // w/8 by default, but at least 256 samples across the box (a tool wider than the plan
-  // would otherwise leave no sample in it: issue 47), and coarser where that would take more
-  // than 4 million samples.
-  const double extent = std::max(box.xmax() - box.xmin(), box.ymax() - box.ymin());
-  const bool automatic = !(cell > 0);
-  if (automatic) cell = std::max(std::min(w / 8, extent / 256), std::sqrt((box.xmax() - box.xmin()) * (box.ymax() - box.ymin()) / 4e6));
-  std::size_t nx = 0, ny = 0;
-  std::vector<char> target;
-  auto centre = [&](std::size_t i, std::size_t j) { return Point(box.xmin() + (static_cast<double>(i) + 0.5) * cell, box.ymin() + (static_cast<double>(j) + 0.5) * cell); };
-  // A free space thinner than the automatic cell (a sliver of a component) may hold no
-  // sample: the cell is refined, up to the cap, rather than the metrics refused.
-  for (;;) {
-    nx = static_cast<std::size_t>(std::ceil((box.xmax() - box.xmin()) / cell)) + 1;
-    ny = static_cast<std::size_t>(std::ceil((box.ymax() - box.ymin()) / cell)) + 1;
-    if (nx * ny > 50'000'000) throw InputError("coverage metrics: the raster would need more than 5e7 samples; give a coarser cell");
-    target.assign(nx * ny, 0);
-    bool any = false;
-    for (std::size_t j = 0; j < ny; ++j)
-      for (std::size_t i = 0; i < nx; ++i) any |= (target[j * nx + i] = index.in_free_space(centre(i, j))) != 0;
-    if (any || !automatic || nx * ny * 16 > 50'000'000) break;
-    cell /= 4;
-  }
-  std::vector<std::uint32_t> visits(nx * ny, 0), last(nx * ny, UINT32_MAX);
-  std::vector<char> covered(nx * ny, 0);
-  // Row and column indices clamped as doubles before the cast: w/2 over a fine cell can
-  // exceed a long (a double out of a long's range is undefined when cast).
-  auto index_in = [](double v, std::size_t n) {
-    return static_cast<long>(std::clamp(v, 0.0, static_cast<double>(n) - 1));
-  };
+  const detail::CoverageRaster R(E, index, w, cell);
+  std::vector<std::uint32_t> visits(R.target.size(), 0), last(R.target.size(), UINT32_MAX);
+  std::vector<char> covered(R.target.size(), 0);
   // Segment by segment: a sample within w/2 of segment s is covered; it gets a new visit
   // when it comes within w/2 - cell/2 of s without having been that close to s - 1 (the
   // margin keeps samples exactly halfway between two laps, covered by both to the last
-  // bit, from counting as overlap). Row by row, the samples within distance h of a segment
-  // form an interval of x (the capsule around it is convex): its two end discs and the band
-  // between them, each cut by the row's line.
-  auto capsule_row = [](const Point& a, const Point& b, double h, double y, double& lo, double& hi) {
-    lo = INFINITY, hi = -INFINITY;
-    for (const Point& c : {a, b}) {
-      const double dy = y - c.y();
-      if (dy * dy <= h * h) {
-        const double dx = std::sqrt(h * h - dy * dy);
-        lo = std::min(lo, c.x() - dx), hi = std::max(hi, c.x() + dx);
-      }
-    }
-    const double vx = b.x() - a.x(), vy = b.y() - a.y(), L = std::hypot(vx, vy);
-    if (L == 0) return;
-    const double ux = vx / L, uy = vy / L, nx_ = -uy, ny_ = ux;
-    // |n.(P - a)| <= h and 0 <= u.(P - a) <= L for P = (x, y): each linear in x.
-    double blo = -INFINITY, bhi = INFINITY;
-    auto clip = [&](double coef, double rest, double min_v, double max_v) {  // min_v <= coef x + rest <= max_v
-      if (coef == 0) {
-        if (rest < min_v || rest > max_v) blo = INFINITY, bhi = -INFINITY;
-        return;
-      }
-      double x1 = (min_v - rest) / coef, x2 = (max_v - rest) / coef;
-      if (x1 > x2) std::swap(x1, x2);
-      blo = std::max(blo, x1), bhi = std::min(bhi, x2);
-    };
-    clip(nx_, nx_ * -a.x() + ny_ * (y - a.y()), -h, h);
-    clip(ux, ux * -a.x() + uy * (y - a.y()), 0, L);
-    if (blo <= bhi) lo = std::min(lo, blo), hi = std::max(hi, bhi);
-  };
-  const double inner = std::max(0.0, half - cell / 2);
+  // bit, from counting as overlap).
+  const double inner = std::max(0.0, half - R.cell / 2);
   // A path of one point is the tool standing still: the disc of radius w/2 around it.
   for (std::size_t seg = 0; seg + 1 < std::max<std::size_t>(rep.path.size(), 2); ++seg) {
     const Point &a = rep.path[seg], &b = rep.path[std::min(seg + 1, rep.path.size() - 1)];
     const std::uint32_t stamp = static_cast<std::uint32_t>(seg);
-    const long j0 = index_in(std::floor((std::min(a.y(), b.y()) - half - box.ymin()) / cell), ny);
-    const long j1 = index_in(std::ceil((std::max(a.y(), b.y()) + half - box.ymin()) / cell), ny);
-    for (long j = j0; j <= j1; ++j) {
-      const double y = box.ymin() + (static_cast<double>(j) + 0.5) * cell;
-      double lo, hi, ilo, ihi;
-      capsule_row(a, b, half, y, lo, hi);
-      if (!(lo <= hi)) continue;
-      capsule_row(a, b, inner, y, ilo, ihi);
-      const double fi0 = std::ceil((lo - box.xmin()) / cell - 0.5), fi1 = std::floor((hi - box.xmin()) / cell - 0.5);
-      if (fi0 > static_cast<double>(nx) - 1 || fi1 < 0 || fi0 > fi1) continue;
-      const long i0 = index_in(fi0, nx), i1 = index_in(fi1, nx);
-      for (long i = i0; i <= i1; ++i) {
-        const std::size_t id = static_cast<std::size_t>(j) * nx + static_cast<std::size_t>(i);
-        covered[id] = 1;
-        const double x = box.xmin() + (static_cast<double>(i) + 0.5) * cell;
-        if (x < ilo || x > ihi) continue;
-        if (last[id] == UINT32_MAX || (last[id] + 1 != stamp && last[id] != stamp)) ++visits[id];
-        last[id] = stamp;
-      }
-    }
+    R.capsule(a, b, half, inner, [&](std::size_t id, bool in) {
+      covered[id] = 1;
+      if (!in) return;
+      if (last[id] == UINT32_MAX || (last[id] + 1 != stamp && last[id] != stamp)) ++visits[id];
+      last[id] = stamp;
+    });
   }
   std::size_t total = 0, once = 0, twice = 0;
-  for (std::size_t id = 0; id < target.size(); ++id) {
-    if (!target[id]) continue;
+  for (std::size_t id = 0; id < R.target.size(); ++id) {
+    if (!R.target[id]) continue;
     ++total, once += covered[id], twice += visits[id] > 1;
   }
-  // No sample in the free space even at the finest cell: a fraction of nothing is no
-  // answer (refuse, never print 0).
-  if (total == 0)
-    throw InputError("coverage metrics: no raster sample (cell " + geometry::format_number(cell) + ") falls in the free space");
   m.samples = total;
   m.covered_fraction = total ? static_cast<double>(once) / static_cast<double>(total) : 0;
   m.overlap = total ? static_cast<double>(twice) / static_cast<double>(total) : 0;

@@ -21,15 +21,15 @@ namespace preimage::decompose {
 namespace {
 
 using geometry::ShortestPathMap;
-constexpr double kTwoPi = 2 * std::numbers::pi;
+constexpr double kFullTurn = 2 * std::numbers::pi;
 constexpr std::uint32_t kNoSlot = UINT32_MAX;
 
 double wf_length(const Point& a, const Point& b) { return std::hypot(a.x() - b.x(), a.y() - b.y()); }
 double wf_angle(const Point& from, const Point& to) { return std::atan2(to.y() - from.y() + 0.0, to.x() - from.x() + 0.0); }  // + 0.0: no -0.0, so no -pi
 // Angle reduced to [0, 2pi) relative to `base`.
 double wf_offset(double angle, double base) {
-  double d = std::fmod(angle - base, kTwoPi);
-  return d < 0 ? d + kTwoPi : d;
+  double d = std::fmod(angle - base, kFullTurn);
+  return d < 0 ? d + kFullTurn : d;
 }
 
 // What an end of a front piece is: an obstacle edge (a free end), the extension of the
@@ -67,8 +67,8 @@ struct WavefrontDecomposition::Level {
     std::int64_t near = -1;
     for (std::uint32_t a = first[slot]; a < first[slot + 1]; ++a) {
       const double off = wf_offset(angle, arcs[a].from);
-      if (arcs[a].sweep >= kTwoPi || off <= arcs[a].sweep) return a;
-      if (off - arcs[a].sweep < 1e-9 || kTwoPi - off < 1e-9) near = a;
+      if (arcs[a].sweep >= kFullTurn || off <= arcs[a].sweep) return a;
+      if (off - arcs[a].sweep < 1e-9 || kFullTurn - off < 1e-9) near = a;
     }
     return near;
   }
@@ -215,7 +215,7 @@ WavefrontDecomposition::Level WavefrontDecomposition::compute(double lambda) con
     };
     if (cut.empty()) {
       if (on_front(0)) {
-        L.arcs.push_back({root, radius[s], -std::numbers::pi, kTwoPi});
+        L.arcs.push_back({root, radius[s], -std::numbers::pi, kFullTurn});
         L.arc_slot.push_back(s);
         ends.push_back({});
       }
@@ -231,19 +231,19 @@ WavefrontDecomposition::Level WavefrontDecomposition::compute(double lambda) con
       if (angle.empty() || sp.angle - angle.back() > 1e-12) angle.push_back(sp.angle), labels.emplace_back();
       labels.back().push_back(sp.label);
     }
-    if (angle.size() > 1 && angle.front() + kTwoPi - angle.back() <= 1e-12) {  // across -pi
+    if (angle.size() > 1 && angle.front() + kFullTurn - angle.back() <= 1e-12) {  // across -pi
       labels.front().insert(labels.front().end(), labels.back().begin(), labels.back().end());
       angle.pop_back(), labels.pop_back();
     }
     const std::size_t k = angle.size();
     std::vector<char> on(k);  // piece i: from angle[i] to angle[i + 1] (cyclically)
     for (std::size_t i = 0; i < k; ++i) {
-      const double a0 = angle[i], span = k == 1 ? kTwoPi : wf_offset(angle[(i + 1) % k], a0);
+      const double a0 = angle[i], span = k == 1 ? kFullTurn : wf_offset(angle[(i + 1) % k], a0);
       on[i] = on_front(a0 + span / 2);
     }
     const std::size_t all = static_cast<std::size_t>(std::count(on.begin(), on.end(), 1));
     if (all == k) {  // the whole circle (every cut spurious)
-      L.arcs.push_back({root, radius[s], -std::numbers::pi, kTwoPi});
+      L.arcs.push_back({root, radius[s], -std::numbers::pi, kFullTurn});
       L.arc_slot.push_back(s);
       ends.push_back({});
       continue;
@@ -256,7 +256,7 @@ WavefrontDecomposition::Level WavefrontDecomposition::compute(double lambda) con
       std::size_t j = i;
       double sweep = 0;
       while (on[j]) {
-        sweep += k == 1 ? kTwoPi : wf_offset(angle[(j + 1) % k], angle[j]);
+        sweep += k == 1 ? kFullTurn : wf_offset(angle[(j + 1) % k], angle[j]);
         j = (j + 1) % k;
       }
       L.arcs.push_back({root, radius[s], angle[i], sweep});
@@ -274,7 +274,7 @@ WavefrontDecomposition::Level WavefrontDecomposition::compute(double lambda) con
   for (std::size_t a = 0; a < n; ++a)
     for (int e = 0; e < 2; ++e) {
       const auto& lab = ends[a][static_cast<std::size_t>(e)].labels;
-      if (L.arcs[a].sweep >= kTwoPi) continue;
+      if (L.arcs[a].sweep >= kFullTurn) continue;
       if (std::any_of(lab.begin(), lab.end(), wf_free_end)) {
         free_end[2 * a + static_cast<std::size_t>(e)] = 1;
         continue;
@@ -310,7 +310,7 @@ WavefrontDecomposition::Level WavefrontDecomposition::compute(double lambda) con
   };
   std::vector<std::size_t> loose;
   for (std::size_t x = 0; x < 2 * n; ++x)
-    if (!free_end[x] && L.link[x] < 0 && L.arcs[x / 2].sweep < kTwoPi) loose.push_back(x);
+    if (!free_end[x] && L.link[x] < 0 && L.arcs[x / 2].sweep < kFullTurn) loose.push_back(x);
   std::vector<std::tuple<double, std::size_t, std::size_t>> close;
   for (std::size_t i = 0; i < loose.size(); ++i)
     for (std::size_t j = i + 1; j < loose.size(); ++j)
@@ -333,7 +333,7 @@ WavefrontDecomposition::Level WavefrontDecomposition::compute(double lambda) con
   }
   L.end_rings.assign(L.fronts, {});
   for (std::size_t x = 0; x < 2 * n; ++x)
-    if (L.link[x] < 0 && L.arcs[x / 2].sweep < kTwoPi) {
+    if (L.link[x] < 0 && L.arcs[x / 2].sweep < kFullTurn) {
       L.closed[L.front[x / 2]] = 0;
       std::uint32_t ring = UINT32_MAX;  // the obstacle the end lies on (the lowest ring at a vertex)
       for (const auto l : ends[x / 2][x % 2].labels)
@@ -365,7 +365,7 @@ std::int64_t WavefrontDecomposition::arc_on_path(const Level& A, std::uint32_t s
   // (in line to 1e-9 rad: a start collinear with a chain only to rounding bends by 1e-16)
   auto in_line = [&](double a) {
     const double d = wf_offset(a, angle);
-    return d < 1e-9 || d > kTwoPi - 1e-9;
+    return d < 1e-9 || d > kFullTurn - 1e-9;
   };
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint32_t x = todo[i];
@@ -834,7 +834,7 @@ std::vector<WavefrontFront> WavefrontDecomposition::fronts(double lambda) const 
     }
   };
   for (std::uint32_t a = 0; a < C.arcs.size(); ++a)  // chains from their free ends first
-    if (!seen[a] && C.arcs[a].sweep < kTwoPi && (C.link[2 * a] < 0 || C.link[2 * a + 1] < 0)) walk(a, C.link[2 * a] < 0 ? 0 : 1);
+    if (!seen[a] && C.arcs[a].sweep < kFullTurn && (C.link[2 * a] < 0 || C.link[2 * a + 1] < 0)) walk(a, C.link[2 * a] < 0 ? 0 : 1);
   for (std::uint32_t a = 0; a < C.arcs.size(); ++a)
     if (!seen[a]) walk(a, 0);
   for (std::uint32_t f = 0; f < C.fronts; ++f) out[f].closed = C.closed[f], out[f].cell = cell[f];

@@ -313,6 +313,9 @@ PYBIND11_MODULE(preimage, m) {
     d["angle"] = rep.angle;
     d["laps"] = rep.laps;
     d["turns"] = rep.turns;
+    d["turns_over_15_deg"] = rep.sharp_turns;
+    d["rotation_deg"] = rep.rotation_deg;
+    d["touch_ups"] = rep.touch_ups;
     d["covered_fraction"] = met.covered_fraction;
     d["overlap"] = met.overlap;
     return d;

@@ -65,9 +65,13 @@ struct CoverageReport {
   std::vector<Point> path;
   std::vector<Move> moves;  // per segment: path[i] -> path[i + 1]
   std::size_t rounding_detours = 0;
+  // Points visited after the pattern, by transits, where its laps left patches uncovered
+  // (a raster of the component at w/8; until at most 0.1 % of its samples is left).
+  std::size_t touch_ups = 0;
   double angle = 0;          // sweep direction used
   double width = 0, robot_radius = 0;
-  std::size_t laps = 0, turns = 0, cells = 0, critical_points = 0;
+  std::size_t laps = 0, cells = 0, critical_points = 0;
+  std::size_t turns = 0, sharp_turns = 0;  // heading changes over 1 degree, and over 15 degrees
   double length = 0, transit_length = 0, rotation_deg = 0;  // rotation: sum of heading changes
   std::vector<std::uint32_t> cell_order;  // cells in the order covered
   std::vector<std::uint8_t> sweeps;       // per covered cell: 0..3 (bit 0: from the right end, bit 1: first lap down)
