@@ -4,10 +4,10 @@
 // text's depth-first order.
 #include <preimage/decompose/cell_locator.hpp>
 #include <preimage/geometry/random_point.hpp>
-#include <preimage/decompose/coverage.hpp>
+#include <preimage/coverage/coverage.hpp>
 #include <preimage/decompose/brushfire.hpp>
 #include <preimage/decompose/morse.hpp>
-#include <preimage/decompose/online_coverage.hpp>
+#include <preimage/coverage/online_coverage.hpp>
 #include <preimage/geometry/generators.hpp>
 
 #include "ratio_reporter.hpp"
@@ -76,12 +76,12 @@ const geometry::Environment& field() {
 // order with shortest transits; "reference" the order the text gives (6.2.1: depth-first over
 // the adjacency graph, every cell swept the same way) with transits through the trapezoids
 // of the decomposition (the paper's planner), and DFS with shortest transits beside it.
-void coverage(benchmark::State& state, decompose::CellOrder order, decompose::Transit transit) {
-  decompose::CoverageReport rep;
+void coverage(benchmark::State& state, coverage::CellOrder order, coverage::Transit transit) {
+  coverage::CoverageReport rep;
   for (auto _ : state) {
-    decompose::CoverageOptions o;
+    coverage::CoverageOptions o;
     o.width = 2.0, o.angle_deg = 0.0, o.order = order, o.transit = transit;
-    rep = decompose::plan_coverage(field(), o);
+    rep = coverage::plan_coverage(field(), o);
     benchmark::DoNotOptimize(rep);
   }
   state.counters["cells"] = static_cast<double>(rep.cells);
@@ -91,9 +91,9 @@ void coverage(benchmark::State& state, decompose::CellOrder order, decompose::Tr
   state.counters["lower_bound"] = rep.order_lower_bound;
 }
 
-void coverage_preimage(benchmark::State& state) { coverage(state, decompose::CellOrder::Optimised, decompose::Transit::Shortest); }
-void coverage_reference(benchmark::State& state) { coverage(state, decompose::CellOrder::DepthFirst, decompose::Transit::Decomposition); }
-void coverage_dfs_shortest(benchmark::State& state) { coverage(state, decompose::CellOrder::DepthFirst, decompose::Transit::Shortest); }
+void coverage_preimage(benchmark::State& state) { coverage(state, coverage::CellOrder::Optimised, coverage::Transit::Shortest); }
+void coverage_reference(benchmark::State& state) { coverage(state, coverage::CellOrder::DepthFirst, coverage::Transit::Decomposition); }
+void coverage_dfs_shortest(benchmark::State& state) { coverage(state, coverage::CellOrder::DepthFirst, coverage::Transit::Shortest); }
 
 void decomposition_reference(benchmark::State& state) {
   for (auto _ : state) {
@@ -147,13 +147,13 @@ void brushfire_decomposition(benchmark::State& state) {
   state.counters["axis_edges"] = static_cast<double>(axis);
 }
 
-void pattern_coverage(benchmark::State& state, decompose::Pattern p) {
-  decompose::CoverageReport rep;
+void pattern_coverage(benchmark::State& state, coverage::Pattern p) {
+  coverage::CoverageReport rep;
   for (auto _ : state) {
-    decompose::CoverageOptions o;
+    coverage::CoverageOptions o;
     o.width = 2.0, o.pattern = p, o.centre = field_centre();
-    if (p == decompose::Pattern::Boustrophedon) o.angle_deg = 0.0, o.order = decompose::CellOrder::DepthFirst;
-    rep = decompose::plan_coverage(field(), o);
+    if (p == coverage::Pattern::Boustrophedon) o.angle_deg = 0.0, o.order = coverage::CellOrder::DepthFirst;
+    rep = coverage::plan_coverage(field(), o);
     benchmark::DoNotOptimize(rep);
   }
   state.counters["cells"] = static_cast<double>(rep.cells);
@@ -170,11 +170,11 @@ BENCHMARK_CAPTURE(morse_decomposition, squarel, decompose::SliceFamily::Squarel)
 BENCHMARK_CAPTURE(morse_decomposition, linear, decompose::SliceFamily::Linear)->Name("morse/preimage/linear-generic")->Unit(benchmark::kMillisecond);
 BENCHMARK(boustrophedon_decomposition)->Name("morse/reference/linear-generic")->Unit(benchmark::kMillisecond);
 BENCHMARK(brushfire_decomposition)->Name("morse/preimage/brushfire")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(pattern_coverage, brushfire, decompose::Pattern::Brushfire)->Name("pattern-coverage/preimage/brushfire")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(pattern_coverage, spiral, decompose::Pattern::Spiral)->Name("pattern-coverage/preimage/spiral")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(pattern_coverage, spike, decompose::Pattern::Spike)->Name("pattern-coverage/preimage/spike")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(pattern_coverage, squarel, decompose::Pattern::Squarel)->Name("pattern-coverage/preimage/squarel")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(pattern_coverage, boustrophedon, decompose::Pattern::Boustrophedon)->Name("pattern-coverage/boustrophedon-dfs")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(pattern_coverage, brushfire, coverage::Pattern::Brushfire)->Name("pattern-coverage/preimage/brushfire")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(pattern_coverage, spiral, coverage::Pattern::Spiral)->Name("pattern-coverage/preimage/spiral")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(pattern_coverage, spike, coverage::Pattern::Spike)->Name("pattern-coverage/preimage/spike")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(pattern_coverage, squarel, coverage::Pattern::Squarel)->Name("pattern-coverage/preimage/squarel")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(pattern_coverage, boustrophedon, coverage::Pattern::Boustrophedon)->Name("pattern-coverage/boustrophedon-dfs")->Unit(benchmark::kMillisecond);
 
 BENCHMARK(coverage_preimage)->Name("coverage/preimage/n:10000")->Unit(benchmark::kMillisecond);
 BENCHMARK(coverage_reference)->Name("coverage/reference/n:10000")->Unit(benchmark::kMillisecond);
@@ -198,19 +198,19 @@ void online_coverage(benchmark::State& state, int which) {
   const geometry::Environment& env = which == 0 ? gallery : random_env;
   const auto b = env.bbox();
   const double r = which == 0 ? 0.2 : std::max(b.xmax() - b.xmin(), b.ymax() - b.ymin()) / 200, angle = which == 0 ? 17.0 : 0.0;
-  decompose::OnlineReport rep;
+  coverage::OnlineReport rep;
   for (auto _ : state) {
-    decompose::OnlineOptions o;
+    coverage::OnlineOptions o;
     o.robot_radius = r, o.angle_deg = angle;
-    rep = decompose::plan_online_coverage(env, o);
+    rep = coverage::plan_online_coverage(env, o);
     benchmark::DoNotOptimize(rep);
   }
-  decompose::CoverageOptions co;
+  coverage::CoverageOptions co;
   co.robot_radius = r, co.angle_deg = angle;
   const auto t0 = std::chrono::steady_clock::now();
-  const auto off = decompose::plan_coverage(env, co);
+  const auto off = coverage::plan_coverage(env, co);
   const double offline_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  const auto cmp = decompose::compare_with_offline(env, rep, decompose::online_tolerance(rep));
+  const auto cmp = coverage::compare_with_offline(env, rep, coverage::online_tolerance(rep));
   state.counters["complete"] = rep.complete ? 1 : 0;
   state.counters["isomorphic"] = cmp.isomorphic ? 1 : 0;
   state.counters["sensed"] = static_cast<double>(rep.nodes.size());

@@ -4,14 +4,15 @@
 
 #include <preimage/scene/geojson.hpp>
 
-#include <preimage/decompose/coverage.hpp>
-#include <preimage/decompose/online_coverage.hpp>
+#include <preimage/coverage/coverage.hpp>
+#include <preimage/coverage/online_coverage.hpp>
 #include <preimage/geometry/local_frame.hpp>
 #include <preimage/decompose/planner.hpp>
 #include <preimage/decompose/wavefront.hpp>
 #include <preimage/geometry/configuration_space.hpp>
 #include <preimage/geometry/coordinates.hpp>
 #include <preimage/geometry/shortest_path_map.hpp>
+#include <preimage/coverage/figures.hpp>
 #include <preimage/decompose/figures.hpp>
 #include <preimage/error.hpp>
 #include <preimage/render/figures.hpp>
@@ -448,31 +449,31 @@ void run_cover_online(const CoverArgs& a, const scene::Scene& s, double radius, 
     throw InputError("--online: the robot sweeps boustrophedon cells as it finds them; --pattern, --order, --transit and --center do not apply");
   if (!a.geojson.empty()) throw InputError("--online: --geojson is not supported; use --json or --svg");
   const auto& env = s.require_environment();
-  decompose::OnlineOptions o;
+  coverage::OnlineOptions o;
   o.robot_radius = radius;
   o.width = a.width.value_or(0.0);
   o.angle_deg = angle;
   o.sensors = a.sensors, o.range = a.range, o.noise = a.noise, o.seed = a.seed, o.cycle = !a.raster;
   o.start = s.start;
-  const auto rep = decompose::plan_online_coverage(env, o);
-  const double tol = decompose::online_tolerance(rep);
-  const auto cmp = decompose::compare_with_offline(env, rep, tol);
-  decompose::CoverageReport cr;
+  const auto rep = coverage::plan_online_coverage(env, o);
+  const double tol = coverage::online_tolerance(rep);
+  const auto cmp = coverage::compare_with_offline(env, rep, tol);
+  coverage::CoverageReport cr;
   cr.path = rep.path, cr.moves = rep.moves, cr.width = rep.width, cr.robot_radius = rep.robot_radius, cr.length = rep.length;
-  const auto m = decompose::measure_coverage(env, cr);
+  const auto m = coverage::measure_coverage(env, cr);
   if (!a.svg.empty()) {
     render::SvgCanvas c(render::scene_box(s));
     render::draw_scene(c, s);
     render::draw_configuration_space(c, geometry::ConfigurationSpace(env, rep.robot_radius));
-    decompose::draw_online_coverage(c, rep, rep.path.size());
+    coverage::draw_online_coverage(c, rep, rep.path.size());
     c.save(a.svg);
   }
   if (a.json) {
     json moves = json::array(), nodes = json::array(), edges = json::array();
-    for (auto mv : rep.moves) moves.push_back(mv == decompose::Move::Lap ? "lap" : mv == decompose::Move::Follow ? "follow" : "transit");
+    for (auto mv : rep.moves) moves.push_back(mv == coverage::Move::Lap ? "lap" : mv == coverage::Move::Follow ? "follow" : "transit");
     for (std::size_t i = 0; i < rep.nodes.size(); ++i) {
       const auto& n = rep.nodes[i];
-      nodes.push_back({{"id", i}, {"kind", std::string(decompose::to_string(n.kind))}, {"at", {n.at.x(), n.at.y()}},
+      nodes.push_back({{"id", i}, {"kind", std::string(coverage::to_string(n.kind))}, {"at", {n.at.x(), n.at.y()}},
                        {"sweep_x", n.x}, {"sweep_y", {n.y_low, n.y_high}}, {"sensed_at", n.sensed_at}, {"ports", n.ports}, {"left_ports", n.left}, {"port_spans", n.spans},
                        {"offline_slice", cmp.offline_of.empty() ? -1 : cmp.offline_of[i]}});
     }
@@ -502,8 +503,8 @@ void run_cover_online(const CoverArgs& a, const scene::Scene& s, double radius, 
   std::cout << "\n";
   for (std::size_t i = 0; i < rep.nodes.size(); ++i) {
     const auto& n = rep.nodes[i];
-    std::cout << "  " << i << ": " << decompose::to_string(n.kind) << " at " << geometry::format_point(n.at);
-    if (n.kind == decompose::OnlineKind::Slice) std::cout << " (" << n.left << " cells left, " << n.ports.size() - n.left << " right)";
+    std::cout << "  " << i << ": " << coverage::to_string(n.kind) << " at " << geometry::format_point(n.at);
+    if (n.kind == coverage::OnlineKind::Slice) std::cout << " (" << n.left << " cells left, " << n.ports.size() - n.left << " right)";
     std::cout << "\n";
   }
   for (const auto& e : rep.edges) std::cout << "  cell " << e.from << " - " << e.to << " (" << e.laps << " laps)\n";
@@ -517,7 +518,7 @@ void run_cover_online(const CoverArgs& a, const scene::Scene& s, double radius, 
 void run_cover(const CoverArgs& a) {
   scene::Scene s = scene::load_scene(a.path);
   const auto& env = s.require_environment();
-  decompose::CoverageOptions o;
+  coverage::CoverageOptions o;
   o.robot_radius = robot_radius(s, a.radius);
   o.width = a.width.value_or(0.0);
   if (!a.width && o.robot_radius == 0)
@@ -540,28 +541,28 @@ void run_cover(const CoverArgs& a) {
   if (a.online) return run_cover_online(a, s, o.robot_radius, *o.angle_deg);
   if (a.raster || a.sensors != 32 || a.range != 0 || a.noise != 0)
     throw InputError("--sensors/--range/--noise/--raster: only with --online");
-  o.order = a.order == "dfs" ? decompose::CellOrder::DepthFirst : decompose::CellOrder::Optimised;
-  o.transit = a.transit == "decomposition" ? decompose::Transit::Decomposition : decompose::Transit::Shortest;
-  o.pattern = *decompose::parse_pattern(a.pattern);
-  if (o.pattern != decompose::Pattern::Boustrophedon) {
+  o.order = a.order == "dfs" ? coverage::CellOrder::DepthFirst : coverage::CellOrder::Optimised;
+  o.transit = a.transit == "decomposition" ? coverage::Transit::Decomposition : coverage::Transit::Shortest;
+  o.pattern = *coverage::parse_pattern(a.pattern);
+  if (o.pattern != coverage::Pattern::Boustrophedon) {
     if (a.angle != "auto") throw InputError("--angle: only the boustrophedon pattern has a sweep direction");
     if (a.order != "optimised" || a.transit != "shortest")
       throw InputError("--order/--transit: the " + a.pattern + " pattern walks its cells depth-first with shortest transits");
     if (!a.centre.empty()) {
-      if (o.pattern == decompose::Pattern::Brushfire) throw InputError("--center: the brushfire pattern grows from the obstacles, it has no centre");
-      if (o.pattern == decompose::Pattern::Wavefront) throw InputError("--center: the wavefront pattern grows from --start (the tether's anchor)");
+      if (o.pattern == coverage::Pattern::Brushfire) throw InputError("--center: the brushfire pattern grows from the obstacles, it has no centre");
+      if (o.pattern == coverage::Pattern::Wavefront) throw InputError("--center: the wavefront pattern grows from --start (the tether's anchor)");
       o.centre = parse_point(a.centre, "--center");
     }
   } else if (!a.centre.empty()) {
     throw InputError("--center: only the spiral, concentric, spike and squarel patterns have a centre");
   }
-  const auto rep = decompose::plan_coverage(env, o);
-  const auto m = decompose::measure_coverage(env, rep);
+  const auto rep = coverage::plan_coverage(env, o);
+  const auto m = coverage::measure_coverage(env, rep);
   if (!a.svg.empty()) {
     render::SvgCanvas c(render::scene_box(s));
     render::draw_scene(c, s);
     if (o.robot_radius > 0) render::draw_configuration_space(c, geometry::ConfigurationSpace(env, o.robot_radius));
-    decompose::draw_coverage(c, rep);
+    coverage::draw_coverage(c, rep);
     c.save(a.svg);
   }
   if (!a.geojson.empty()) {
@@ -571,7 +572,7 @@ void run_cover(const CoverArgs& a) {
     for (std::size_t i = 0; i < rep.moves.size();) {
       std::size_t j = i;
       while (j < rep.moves.size() && rep.moves[j] == rep.moves[i]) ++j;
-      const char* kind = rep.moves[i] == decompose::Move::Lap ? "lap" : rep.moves[i] == decompose::Move::Follow ? "follow" : "transit";
+      const char* kind = rep.moves[i] == coverage::Move::Lap ? "lap" : rep.moves[i] == coverage::Move::Follow ? "follow" : "transit";
       w.line(std::vector<geometry::Point>(rep.path.begin() + static_cast<long>(i), rep.path.begin() + static_cast<long>(j + 1)),
              {{"kind", "coverage path"}, {"move", kind}, {"first_segment", i}});
       i = j;
@@ -580,15 +581,15 @@ void run_cover(const CoverArgs& a) {
   }
   if (a.json) {
     json moves = json::array();
-    for (auto mv : rep.moves) moves.push_back(mv == decompose::Move::Lap ? "lap" : mv == decompose::Move::Follow ? "follow" : "transit");
+    for (auto mv : rep.moves) moves.push_back(mv == coverage::Move::Lap ? "lap" : mv == coverage::Move::Follow ? "follow" : "transit");
     json centre = nullptr;
-    if (o.pattern != decompose::Pattern::Boustrophedon) {
+    if (o.pattern != coverage::Pattern::Boustrophedon) {
       const auto b = env.bbox();
       const auto c = o.centre.value_or(geometry::Point((b.xmin() + b.xmax()) / 2, (b.ymin() + b.ymax()) / 2));
       centre = {c.x(), c.y()};
     }
     print_json({{"pattern", a.pattern}, {"center", centre}, {"width", rep.width}, {"robot_radius", rep.robot_radius}, {"angle", rep.angle},
-                {"order", o.pattern == decompose::Pattern::Boustrophedon ? a.order : "dfs"}, {"transit", a.transit},
+                {"order", o.pattern == coverage::Pattern::Boustrophedon ? a.order : "dfs"}, {"transit", a.transit},
                 {"length", rep.length}, {"transit_length", rep.transit_length}, {"laps", rep.laps}, {"turns", rep.turns},
                 {"turns_over_15_deg", rep.sharp_turns}, {"rotation_deg", rep.rotation_deg}, {"cells", rep.cells}, {"critical_points", rep.critical_points},
                 {"cell_order", rep.cell_order}, {"sweeps", rep.sweeps},
@@ -604,7 +605,7 @@ void run_cover(const CoverArgs& a) {
   }
   std::cout << "coverage with width " << geometry::format_number(rep.width);
   if (rep.robot_radius > 0) std::cout << " (robot radius " << geometry::format_number(rep.robot_radius) << ")";
-  if (o.pattern == decompose::Pattern::Boustrophedon) std::cout << " at " << geometry::format_number(rep.angle) << " degrees";
+  if (o.pattern == coverage::Pattern::Boustrophedon) std::cout << " at " << geometry::format_number(rep.angle) << " degrees";
   else std::cout << ", " << a.pattern << " pattern";
   std::cout << ": length " << geometry::format_number(rep.length)
             << " (transits " << geometry::format_number(rep.transit_length) << "; bound " << geometry::format_number(rep.bound) << "), "
@@ -616,7 +617,7 @@ void run_cover(const CoverArgs& a) {
             << "%, length / (area / width) = " << geometry::format_number(std::round(m.efficiency * 1000) / 1000);
   if (rep.unreachable_area > 0) std::cout << "; unreachable from the start: " << geometry::format_number(rep.unreachable_area);
   std::cout << "\n";
-  if (o.pattern != decompose::Pattern::Boustrophedon)
+  if (o.pattern != coverage::Pattern::Boustrophedon)
     std::cout << "cell order: depth-first walk of the adjacency graph (6.2.1)\n";
   else if (a.order == "optimised")
     std::cout << "cell order: " << (rep.order_optimal ? "optimal" : "local search, lower bound " + geometry::format_number(rep.order_lower_bound)) << "\n";

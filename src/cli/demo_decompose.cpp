@@ -2,9 +2,10 @@
 // Demo section of the decompose module: trapezoidal decomposition and a planned path.
 #include "demo.hpp"
 
-#include <preimage/decompose/coverage.hpp>
+#include <preimage/coverage/coverage.hpp>
+#include <preimage/coverage/figures.hpp>
 #include <preimage/decompose/figures.hpp>
-#include <preimage/decompose/online_coverage.hpp>
+#include <preimage/coverage/online_coverage.hpp>
 #include <preimage/geometry/configuration_space.hpp>
 #include <preimage/geometry/generators.hpp>
 #include <preimage/render/figures.hpp>
@@ -76,19 +77,19 @@ void demo_coverage(DemoContext& ctx) {
            std::to_string(b.cells().size()) + " = " + std::to_string(b.critical_slices().size()) + " + " +
            std::to_string(env.num_holes()) + " - 1.");
   // A robot of radius 0.25 with a tool as wide as itself.
-  decompose::CoverageOptions o;
+  coverage::CoverageOptions o;
   o.robot_radius = 0.25, o.start = field.start, o.angle_deg = 0.0;
-  const auto rep = decompose::plan_coverage(env, o);
-  const auto m = decompose::measure_coverage(env, rep);
-  o.order = decompose::CellOrder::DepthFirst, o.transit = decompose::Transit::Decomposition;
-  const auto dfs = decompose::plan_coverage(env, o);
+  const auto rep = coverage::plan_coverage(env, o);
+  const auto m = coverage::measure_coverage(env, rep);
+  o.order = coverage::CellOrder::DepthFirst, o.transit = coverage::Transit::Decomposition;
+  const auto dfs = coverage::plan_coverage(env, o);
   R.result("Coverage by a robot of radius 0.25 (tool width 0.5) from " + format_point(*field.start) + ", in its configuration space: length " +
            format_number(rep.length) + " (" + format_number(rep.transit_length) + " of it transits), " + std::to_string(rep.laps) + " laps, " +
            std::to_string(rep.turns) + " turns, " + format_number(std::round(m.covered_fraction * 1000) / 10) + "% of the configuration space covered, overlap " +
            format_number(std::round(m.overlap * 1000) / 10) + "%; every segment certified 0.25 away from the obstacles. The chapter's depth-first walk with transits " +
            "through the trapezoids: length " + format_number(dfs.length) + " (bound " + format_number(dfs.bound) + ").");
-  o.order = decompose::CellOrder::Optimised, o.transit = decompose::Transit::Shortest, o.angle_deg.reset();
-  const auto best = decompose::plan_coverage(env, o);
+  o.order = coverage::CellOrder::Optimised, o.transit = coverage::Transit::Shortest, o.angle_deg.reset();
+  const auto best = coverage::plan_coverage(env, o);
   R.result("Automatic sweep direction (axes and the longest edges' directions, ranked by laps and cells): " + format_number(best.angle) +
            " degrees, length " + format_number(best.length) + ".");
   render::SvgCanvas c(render::scene_box(field));
@@ -98,7 +99,7 @@ void demo_coverage(DemoContext& ctx) {
   render::SvgCanvas cc(render::scene_box(field));
   render::draw_scene(cc, field);
   render::draw_configuration_space(cc, geometry::ConfigurationSpace(env, 0.25));
-  decompose::draw_coverage(cc, rep);
+  coverage::draw_coverage(cc, rep);
   ctx.figure("decompose-coverage.svg", cc.str(), "Coverage path of a robot of radius 0.25 in its configuration space");
 }
 
@@ -116,18 +117,18 @@ void demo_morse(DemoContext& ctx) {
   R.result("The field of the boustrophedon section, sliced around " + format_point(centre) +
            " by circles (h = |p - c|), rays (h = angle) and diamonds (h = |x - cx| + |y - cy|). Critical points are "
            "decided exactly (circle crossings as a + b sqrt(d)); cells are faces of the boundary cut by the critical slices.");
-  struct Case { decompose::SliceFamily f; decompose::Pattern p; const char* file; };
-  for (const Case k : {Case{decompose::SliceFamily::Circular, decompose::Pattern::Spiral, "decompose-circular"},
-                       Case{decompose::SliceFamily::Spike, decompose::Pattern::Spike, "decompose-spike"},
-                       Case{decompose::SliceFamily::Squarel, decompose::Pattern::Squarel, "decompose-squarel"}}) {
+  struct Case { decompose::SliceFamily f; coverage::Pattern p; const char* file; };
+  for (const Case k : {Case{decompose::SliceFamily::Circular, coverage::Pattern::Spiral, "decompose-circular"},
+                       Case{decompose::SliceFamily::Spike, coverage::Pattern::Spike, "decompose-spike"},
+                       Case{decompose::SliceFamily::Squarel, coverage::Pattern::Squarel, "decompose-squarel"}}) {
     const decompose::MorseDecomposition m(env, k.f, centre);
-    decompose::CoverageOptions o;
+    coverage::CoverageOptions o;
     o.robot_radius = 0.2, o.pattern = k.p, o.centre = centre;
-    const auto rep = decompose::plan_coverage(env, o);
-    const auto q = decompose::measure_coverage(env, rep);
+    const auto rep = coverage::plan_coverage(env, o);
+    const auto q = coverage::measure_coverage(env, rep);
     const std::string name(decompose::to_string(k.f));
     R.result(name + ": " + std::to_string(m.cells().size()) + " cells, " + std::to_string(m.critical_points().size()) + " critical points in " +
-             std::to_string(m.num_nodes()) + " critical slices; " + std::string(decompose::to_string(k.p)) + " coverage (robot radius 0.2, width 0.4): length " +
+             std::to_string(m.num_nodes()) + " critical slices; " + std::string(coverage::to_string(k.p)) + " coverage (robot radius 0.2, width 0.4): length " +
              format_number(std::round(rep.length * 10) / 10) + ", " + std::to_string(rep.laps) + " laps, " +
              format_number(std::round(q.covered_fraction * 1000) / 10) + "% of the configuration space covered, every segment certified.");
     render::SvgCanvas c(render::scene_box(field));
@@ -138,8 +139,8 @@ void demo_morse(DemoContext& ctx) {
     render::SvgCanvas cc(render::scene_box(field));
     render::draw_scene(cc, field);
     render::draw_configuration_space(cc, geometry::ConfigurationSpace(env, 0.2));
-    decompose::draw_coverage(cc, rep);
-    ctx.figure(std::string(k.file) + "-coverage.svg", cc.str(), std::string(decompose::to_string(k.p)) + " coverage pattern");
+    coverage::draw_coverage(cc, rep);
+    ctx.figure(std::string(k.file) + "-coverage.svg", cc.str(), std::string(coverage::to_string(k.p)) + " coverage pattern");
   }
 }
 
@@ -152,10 +153,10 @@ void demo_brushfire(DemoContext& ctx) {
   const decompose::BrushfireDecomposition b(env);
   std::size_t saddles = 0;
   for (const auto& k : b.critical_points()) saddles += k.kind == decompose::BrushfireCriticalPoint::Kind::Saddle;
-  decompose::CoverageOptions o;
-  o.robot_radius = 0.2, o.pattern = decompose::Pattern::Brushfire;
-  const auto rep = decompose::plan_coverage(env, o);
-  const auto q = decompose::measure_coverage(env, rep);
+  coverage::CoverageOptions o;
+  o.robot_radius = 0.2, o.pattern = coverage::Pattern::Brushfire;
+  const auto rep = coverage::plan_coverage(env, o);
+  const auto q = coverage::measure_coverage(env, rep);
   R.result("Wave fronts grow from the walls and the three obstacles; they collide at " + std::to_string(saddles) + " saddles of D and vanish at " +
            std::to_string(b.critical_points().size() - saddles) + " maxima, giving " + std::to_string(b.cells().size()) + " cells in " +
            std::to_string(b.num_nodes()) + " critical slices. Built on the medial axis (Boost.Polygon's segment Voronoi diagram on a grid of " +
@@ -170,7 +171,7 @@ void demo_brushfire(DemoContext& ctx) {
   render::SvgCanvas cc(render::scene_box(field));
   render::draw_scene(cc, field);
   render::draw_configuration_space(cc, geometry::ConfigurationSpace(env, 0.2));
-  decompose::draw_coverage(cc, rep);
+  coverage::draw_coverage(cc, rep);
   ctx.figure("decompose-brushfire-coverage.svg", cc.str(), "Brushfire coverage pattern (Fig. 6.17)");
 
   // The wave-front decomposition (Fig. 6.18): cells of the fronts of the geodesic distance.
@@ -189,10 +190,10 @@ void demo_brushfire(DemoContext& ctx) {
   ctx.figure("decompose-wavefront.svg", wc.str(), "Wave-front decomposition: fronts coloured by cell, critical slices (Fig. 6.18)");
 
   // The tethered robot (Fig. 6.18): fronts of the geodesic distance from its anchor.
-  decompose::CoverageOptions t;
-  t.robot_radius = 0.2, t.pattern = decompose::Pattern::Wavefront, t.start = Point(0.5, 0.5);
-  const auto tether = decompose::plan_coverage(env, t);
-  const auto tq = decompose::measure_coverage(env, tether);
+  coverage::CoverageOptions t;
+  t.robot_radius = 0.2, t.pattern = coverage::Pattern::Wavefront, t.start = Point(0.5, 0.5);
+  const auto tether = coverage::plan_coverage(env, t);
+  const auto tq = coverage::measure_coverage(env, tether);
   R.result("Tethered coverage from the anchor " + format_point(*t.start) + ": laps along the wave fronts of the geodesic distance (constant "
            "tether length), 0.4 apart, outwards; the fronts' cusps are where the fronts from either side of an obstacle collided. Length " +
            format_number(std::round(tether.length * 10) / 10) + ", " + std::to_string(tether.laps) + " laps, " +
@@ -200,7 +201,7 @@ void demo_brushfire(DemoContext& ctx) {
   render::SvgCanvas tc(render::scene_box(field));
   render::draw_scene(tc, field);
   render::draw_configuration_space(tc, geometry::ConfigurationSpace(env, 0.2));
-  decompose::draw_coverage(tc, tether);
+  coverage::draw_coverage(tc, tether);
   ctx.figure("decompose-wavefront-coverage.svg", tc.str(), "Tethered robot: wave fronts of constant tether length (Fig. 6.18)");
 }
 
@@ -212,13 +213,13 @@ void demo_online(DemoContext& ctx) {
   R.section("Sensor-based coverage of an unknown environment: the incremental Reeb graph (Choset et al., 6.2.4)");
   const scene::Scene field = coverage_field();
   const Environment& env = *field.environment;
-  decompose::OnlineOptions o;
+  coverage::OnlineOptions o;
   o.robot_radius = 0.25, o.angle_deg = 17;
-  const auto rep = decompose::plan_online_coverage(env, o);
-  const auto cmp = decompose::compare_with_offline(env, rep, decompose::online_tolerance(rep));
-  decompose::CoverageOptions co;
+  const auto rep = coverage::plan_online_coverage(env, o);
+  const auto cmp = coverage::compare_with_offline(env, rep, coverage::online_tolerance(rep));
+  coverage::CoverageOptions co;
   co.robot_radius = 0.25, co.angle_deg = 17;
-  const auto off = decompose::plan_coverage(env, co);
+  const auto off = coverage::plan_coverage(env, co);
   std::string order;
   for (auto k : rep.sensing_order) order.append(order.empty() ? "" : " ").append(std::to_string(k));
   R.result(std::string("Robot of radius 0.25, sweep at 17 degrees, ").append(std::to_string(rep.sensors)).append(" range sensors: ")
@@ -238,7 +239,7 @@ void demo_online(DemoContext& ctx) {
     render::SvgCanvas c(render::scene_box(field));
     render::draw_scene(c, field);
     render::draw_configuration_space(c, cs);
-    decompose::draw_online_coverage(c, rep, stages[k]);
+    coverage::draw_online_coverage(c, rep, stages[k]);
     ctx.figure(std::string("decompose-online-").append(names[k]).append(".svg"), c.str(),
                k < 3 ? std::string("Online coverage, stage (").append(names[k]).append("): the path so far, the critical points sensed (numbered) and the cells covered; dashed stubs are unexplored ports (Fig. 6.21)")
                      : std::string("Online coverage, final (d): every critical point has all its edges explored, so the robot concludes it has covered the space"));

@@ -3,14 +3,12 @@
 #include <preimage/geometry/clearance.hpp>
 #include <preimage/geometry/local_frame.hpp>
 
-#include "coverage_internal.hpp"
 
 #include <preimage/error.hpp>
 #include <preimage/geometry/configuration_space.hpp>
 #include <preimage/geometry/queries.hpp>
 #include <preimage/geometry/visibility_graph.hpp>
 
-#include "coverage_internal.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -219,7 +217,7 @@ RobotPlan plan_path(const Environment& env, const Point& start, const Point& goa
   const geometry::Clearance clear(env, radius);
   RobotPlan out = plan_in_frame(frame.to_local(env), frame.to_local(start), frame.to_local(goal), radius, method, shorten);
   if (!out.found) return out;
-  if (const std::size_t bad = detail::round_back(out.path, frame, clear); bad < out.path.size())
+  if (const std::size_t bad = frame.to_input_certified(out.path, clear); bad < out.path.size())
     throw std::logic_error("plan: segment " + geometry::format_point(out.path[bad]) + " -> " + geometry::format_point(out.path[bad + 1]) +
                            " failed certification in input coordinates");
   return out;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <preimage/geometry/local_frame.hpp>
 
+#include <preimage/geometry/clearance.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -53,6 +55,31 @@ Environment LocalFrame::to_local(const Environment& env) const {
     if (!exact_difference(env.vertex(v).x(), dx_) || !exact_difference(env.vertex(v).y(), dy_))
       throw std::logic_error("local frame: a translation was not exact");
   return out;
+}
+
+std::size_t LocalFrame::to_input_certified(std::vector<Point>& path, const Clearance& clear) const {
+  const std::vector<Point> local = path;
+  for (Point& p : path) p = to_input(p);
+  std::vector<std::size_t> failing;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i)
+    if (!clear.admits(path[i], path[i + 1])) failing.push_back(i);
+  for (int pass = 0; pass < 4 && !failing.empty(); ++pass) {
+    const double push = std::ldexp(margin(), pass);
+    for (const std::size_t i : failing)
+      for (const std::size_t k : {i, i + 1}) {
+        // Away from the nearest obstacle, from the point as planned.
+        const Point p = to_input(local[k]), c = clear.nearest(p);
+        const double dx = p.x() - c.x(), dy = p.y() - c.y(), d = std::hypot(dx, dy);
+        if (d > 0) path[k] = Point(p.x() + push * dx / d, p.y() + push * dy / d);
+      }
+    // A moved point changes both its segments: check them all again.
+    std::vector<std::size_t> again;
+    for (const std::size_t i : failing)
+      for (const std::size_t j : {i == 0 ? i : i - 1, i, i + 1})
+        if (j + 1 < path.size() && (again.empty() || again.back() < j) && !clear.admits(path[j], path[j + 1])) again.push_back(j);
+    failing = std::move(again);
+  }
+  return failing.empty() ? path.size() : failing.front();
 }
 
 }  // namespace preimage::geometry

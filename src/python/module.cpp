@@ -5,7 +5,7 @@
 #include <preimage/beams/arrangement.hpp>
 #include <preimage/beams/region_filter.hpp>
 #include <preimage/decompose/boustrophedon.hpp>
-#include <preimage/decompose/coverage.hpp>
+#include <preimage/coverage/coverage.hpp>
 #include <preimage/decompose/planner.hpp>
 #include <preimage/decompose/trapezoidal.hpp>
 #include <preimage/error.hpp>
@@ -296,16 +296,16 @@ PYBIND11_MODULE(preimage, m) {
 
   m.def("cover", [](const geometry::Environment& env, double radius, std::optional<double> width, std::optional<double> angle,
                     const py::object& start) {
-    decompose::CoverageOptions o;
+    coverage::CoverageOptions o;
     o.robot_radius = radius;
     o.width = width.value_or(0.0);
     if (!width && radius == 0) throw InputError("width: not given, and without a robot radius it has no default of 2r");
     o.angle_deg = angle;
     if (!start.is_none()) o.start = to_point(start, "start");
-    const auto rep = decompose::plan_coverage(env, o);
-    const auto met = decompose::measure_coverage(env, rep);
+    const auto rep = coverage::plan_coverage(env, o);
+    const auto met = coverage::measure_coverage(env, rep);
     py::list moves;
-    for (auto mv : rep.moves) moves.append(mv == decompose::Move::Lap ? "lap" : mv == decompose::Move::Follow ? "follow" : "transit");
+    for (auto mv : rep.moves) moves.append(mv == coverage::Move::Lap ? "lap" : mv == coverage::Move::Follow ? "follow" : "transit");
     py::dict d;
     d["path"] = to_array(rep.path);
     d["moves"] = moves;

@@ -3,7 +3,7 @@
 // (issue 28). Checked independently of the decomposition with CGAL's Boolean set
 // operations on exact polygons (GPL, test-only), rational areas, and exact visibility.
 #include <gtest/gtest.h>
-#include <preimage/decompose/coverage.hpp>
+#include <preimage/coverage/coverage.hpp>
 #include <preimage/geometry/generators.hpp>
 #include <preimage/geometry/queries.hpp>
 #include <preimage/scene/import.hpp>
@@ -91,9 +91,9 @@ void check_cells(const Environment& env, double angle, const std::string& what) 
 // (d) every segment of the coverage path lies in closed free space (exact, O(n) per
 // segment, independent of the library's own certification).
 void check_cover(const Environment& env, double width, std::optional<double> angle, const std::string& what) {
-  decompose::CoverageOptions o;
+  coverage::CoverageOptions o;
   o.width = width, o.angle_deg = angle;
-  const auto rep = decompose::plan_coverage(env, o);
+  const auto rep = coverage::plan_coverage(env, o);
   ASSERT_GE(rep.path.size(), 2u) << what;
   for (std::size_t i = 0; i + 1 < rep.path.size(); ++i)
     ASSERT_TRUE(geometry::visible(env, rep.path[i], rep.path[i + 1]))

@@ -7,7 +7,7 @@
 // pattern covers the configuration space and keeps clear of the walls.
 #include <gtest/gtest.h>
 #include <preimage/decompose/brushfire.hpp>
-#include <preimage/decompose/coverage.hpp>
+#include <preimage/coverage/coverage.hpp>
 #include <preimage/geometry/configuration_space.hpp>
 #include <preimage/geometry/generators.hpp>
 #include <preimage/scene/import.hpp>
@@ -254,10 +254,10 @@ TEST(BrushfireCoverage, CoversTheConfigurationSpaceAndKeepsClear) {
     envs.emplace_back(name, *scene::import_houseexpo(std::string(PREIMAGE_FLOORPLANS) + "/" + name).environment);
   for (const auto& [what, env] : envs) {
     const double r = extent(env) / 120;
-    decompose::CoverageOptions o;
-    o.robot_radius = r, o.pattern = decompose::Pattern::Brushfire;
-    const auto rep = decompose::plan_coverage(env, o);
-    const auto m = decompose::measure_coverage(env, rep);
+    coverage::CoverageOptions o;
+    o.robot_radius = r, o.pattern = coverage::Pattern::Brushfire;
+    const auto rep = coverage::plan_coverage(env, o);
+    const auto m = coverage::measure_coverage(env, rep);
     EXPECT_GE(m.covered_fraction, 0.99) << what;
     double worst = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i + 1 < rep.path.size(); ++i)

@@ -4,7 +4,7 @@
 // (flat edges, several critical points on one slice, the centre on the boundary).
 #include <gtest/gtest.h>
 #include <preimage/decompose/boustrophedon.hpp>
-#include <preimage/decompose/coverage.hpp>
+#include <preimage/coverage/coverage.hpp>
 #include <preimage/decompose/morse.hpp>
 #include <preimage/error.hpp>
 #include <preimage/geometry/generators.hpp>
@@ -363,13 +363,13 @@ TEST(MorseCoverage, PatternsCoverTheConfigurationSpaceAndKeepClear) {
   for (const auto& [what, env] : envs) {
     const auto box = env.bbox();
     const double r = std::max(box.xmax() - box.xmin(), box.ymax() - box.ymin()) / 120;
-    for (const auto pattern : {decompose::Pattern::Spiral, decompose::Pattern::Concentric, decompose::Pattern::Spike, decompose::Pattern::Squarel}) {
-      decompose::CoverageOptions o;
+    for (const auto pattern : {coverage::Pattern::Spiral, coverage::Pattern::Concentric, coverage::Pattern::Spike, coverage::Pattern::Squarel}) {
+      coverage::CoverageOptions o;
       o.robot_radius = r, o.pattern = pattern;
       o.centre = Point((box.xmin() + box.xmax()) / 2 + r / 7, (box.ymin() + box.ymax()) / 2 + r / 11);
-      const auto rep = decompose::plan_coverage(env, o);
-      const auto m = decompose::measure_coverage(env, rep);
-      const std::string tag = what + " " + std::string(decompose::to_string(pattern));
+      const auto rep = coverage::plan_coverage(env, o);
+      const auto m = coverage::measure_coverage(env, rep);
+      const std::string tag = what + " " + std::string(coverage::to_string(pattern));
       EXPECT_GE(m.covered_fraction, 0.99) << tag;
       EXPECT_GE(min_clearance(env, rep.path), r * (1 - 1e-6)) << tag;
       EXPECT_GT(rep.laps, 0u) << tag;
@@ -383,15 +383,15 @@ TEST(MorseCoverage, SpiralReplacesCirclesInAnnularCells) {
   // from the hole's far corner to the nearest wall, one annular cell swept by one spiral
   // instead of concentric circles joined by radial steps (Fig. 6.12).
   const Environment env = Environment::make({{-10, -10}, {10, -10}, {10, 10}, {-10, 10}}, {{{-1, -1}, {-1, 1}, {1, 1}, {1, -1}}});
-  decompose::CoverageOptions o;
+  coverage::CoverageOptions o;
   o.robot_radius = 0.25, o.centre = Point(0.25, 0.125);
-  o.pattern = decompose::Pattern::Spiral;
-  const auto spiral = decompose::plan_coverage(env, o);
-  o.pattern = decompose::Pattern::Concentric;
-  const auto circles = decompose::plan_coverage(env, o);
+  o.pattern = coverage::Pattern::Spiral;
+  const auto spiral = coverage::plan_coverage(env, o);
+  o.pattern = coverage::Pattern::Concentric;
+  const auto circles = coverage::plan_coverage(env, o);
   EXPECT_LT(spiral.laps + 10, circles.laps);
-  EXPECT_GE(decompose::measure_coverage(env, spiral).covered_fraction, 0.99);
-  EXPECT_GE(decompose::measure_coverage(env, circles).covered_fraction, 0.99);
+  EXPECT_GE(coverage::measure_coverage(env, spiral).covered_fraction, 0.99);
+  EXPECT_GE(coverage::measure_coverage(env, circles).covered_fraction, 0.99);
   // A spiral has no radial steps: fewer turns over a degree.
   EXPECT_LT(spiral.turns, circles.turns);
 }

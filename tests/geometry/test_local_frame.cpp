@@ -2,7 +2,7 @@
 // The local frame: a plan far from the origin gives the answers it gives at the origin,
 // moved (issue 49: a 10 x 10 room with a hole shifted by 1e10 had target area -32768 and
 // 18 % covered, exit 0).
-#include <preimage/decompose/coverage.hpp>
+#include <preimage/coverage/coverage.hpp>
 #include <preimage/geometry/configuration_space.hpp>
 #include <preimage/geometry/local_frame.hpp>
 
@@ -51,13 +51,13 @@ TEST(LocalFrame, ConfigurationSpaceFarFromTheOriginIsTheOriginsMoved) {
 // The case of the issue: cover's path at 1e10 is the origin's moved, within the margins
 // that rounding back needs; the target area is the origin's.
 TEST(LocalFrame, CoverageFarFromTheOriginIsTheOriginsMoved) {
-  decompose::CoverageOptions o;
+  coverage::CoverageOptions o;
   o.robot_radius = 0.25, o.angle_deg = 0;
   const Environment origin = room_with_hole(0);
-  const auto a = decompose::plan_coverage(origin, o);
+  const auto a = coverage::plan_coverage(origin, o);
   for (const double off : {5e5, 1e10}) {
     const Environment env = room_with_hole(off);
-    const auto b = decompose::plan_coverage(env, o);
+    const auto b = coverage::plan_coverage(env, o);
     const double tol = 16 * LocalFrame::of(env).margin();
     ASSERT_EQ(a.path.size(), b.path.size()) << off;
     for (std::size_t i = 0; i < a.path.size(); ++i) {
@@ -66,7 +66,7 @@ TEST(LocalFrame, CoverageFarFromTheOriginIsTheOriginsMoved) {
     }
     EXPECT_EQ(a.laps, b.laps);
     EXPECT_NEAR(b.target_area, a.target_area, 1e-9 * a.target_area) << off;
-    EXPECT_NEAR(decompose::measure_coverage(env, b).covered_fraction, decompose::measure_coverage(origin, a).covered_fraction, 1e-3) << off;
+    EXPECT_NEAR(coverage::measure_coverage(env, b).covered_fraction, coverage::measure_coverage(origin, a).covered_fraction, 1e-3) << off;
   }
 }
 

@@ -3,9 +3,7 @@
 #pragma once
 #include <preimage/decompose/boustrophedon.hpp>
 #include <preimage/decompose/brushfire.hpp>
-#include <preimage/decompose/coverage.hpp>
 #include <preimage/decompose/morse.hpp>
-#include <preimage/decompose/online_coverage.hpp>
 #include <preimage/decompose/planner.hpp>
 #include <preimage/decompose/wavefront.hpp>
 #include <preimage/render/svg.hpp>
@@ -33,13 +31,5 @@ void draw_brushfire(render::SvgCanvas& canvas, const BrushfireDecomposition& b);
 /// the largest h, each coloured by its cell, the critical slices' points and the start.
 void draw_wavefront(render::SvgCanvas& canvas, const WavefrontDecomposition& w, int levels = 24);
 
-/// A coverage path: laps, boundary following and transits in three styles, arrows along
-/// it, start and end markers.
-void draw_coverage(render::SvgCanvas& canvas, const CoverageReport& report);
-
-/// Online coverage as it stood after the first `upto` path points (Fig. 6.21): the path so
-/// far, the critical points sensed by then (numbered in order) and the Reeb graph edges of
-/// the cells covered by then; ports still unexplored drawn as short stubs.
-void draw_online_coverage(render::SvgCanvas& canvas, const OnlineReport& report, std::size_t upto);
 
 }  // namespace preimage::decompose

@@ -14,7 +14,11 @@
 #pragma once
 #include <preimage/geometry/environment.hpp>
 
+#include <vector>
+
 namespace preimage::geometry {
+
+class Clearance;
 
 class LocalFrame {
  public:
@@ -37,6 +41,13 @@ class LocalFrame {
   Point to_local(const Point& p) const { return Point(p.x() - dx_, p.y() - dy_); }
   /// A constructed point back to input coordinates, rounded to the nearest double.
   Point to_input(const Point& p) const { return Point(p.x() + dx_, p.y() + dy_); }
+  /// A path certified in the frame, mapped back to input coordinates and certified there
+  /// (clear.admits, exact). Rounding moves each point by under an ulp; where that brings a
+  /// segment within r of an obstacle (a transit along a chord of a configuration space's
+  /// arcs lies a few grid units outside the circle of radius r), the segment's ends are
+  /// pushed margin() (up to 8 margins) away from the nearest obstacle. Returns the first
+  /// segment still failing, or path.size() when all are certified.
+  std::size_t to_input_certified(std::vector<Point>& path, const Clearance& clear) const;
 
  private:
   double dx_ = 0, dy_ = 0, margin_ = 0;

@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace preimage::decompose::detail {
+namespace preimage::coverage::detail {
 
 CoverageRaster::CoverageRaster(const Environment& E, const geometry::VisibilityIndex& index, double w, double cell_) : cell(cell_) {
   const auto box = E.bbox();
@@ -64,4 +64,4 @@ void capsule_row(const geometry::Point& a, const geometry::Point& b, double h, d
   if (blo <= bhi) lo = std::min(lo, blo), hi = std::max(hi, bhi);
 }
 
-}  // namespace preimage::decompose::detail
+}  // namespace preimage::coverage::detail

@@ -21,7 +21,7 @@
 #include <map>
 #include <optional>
 
-namespace preimage::decompose::detail {
+namespace preimage::coverage::detail {
 
 namespace {
 
@@ -178,4 +178,4 @@ CoverageReport plan_wavefront(const Planning& P) {
   return rep;
 }
 
-}  // namespace preimage::decompose::detail
+}  // namespace preimage::coverage::detail

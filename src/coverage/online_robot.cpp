@@ -7,7 +7,7 @@
 #include <numbers>
 #include <stdexcept>
 
-namespace preimage::decompose::detail {
+namespace preimage::coverage::detail {
 
 OnlineRobot::OnlineRobot(const Environment& Q, const Environment& W, const OnlineOptions& o, const Point& start)
     : Q_(Q), W_(W), n_(o.sensors), range_(o.range), noise_(o.noise), rng_(o.seed), pos_(start) {
@@ -123,4 +123,4 @@ bool OnlineRobot::follow_step(int dir, double stop_x, bool& on_slice, double sto
 
 void OnlineRobot::retrace_to(const Point& p, const Contact& c, Move m) { go(p, c, m); }
 
-}  // namespace preimage::decompose::detail
+}  // namespace preimage::coverage::detail

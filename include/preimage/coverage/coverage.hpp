@@ -25,7 +25,13 @@
 #include <string>
 #include <string_view>
 
-namespace preimage::decompose {
+namespace preimage::coverage {
+
+// Coverage turns the cells of decompose into a robot's path (docs/architecture.md: one
+// arrow, decompose -> coverage).
+using decompose::BoustrophedonDecomposition;
+using geometry::Environment;
+using geometry::Point;
 
 enum class CellOrder { Optimised, DepthFirst };  // GTSP over sweeps, or 6.2.1's exhaustive walk
 enum class Transit { Shortest, Decomposition };  // visibility-graph shortest paths, or trapezoid midpoints
@@ -108,4 +114,4 @@ CoverageMetrics measure_coverage(const Environment& env, const CoverageReport& r
 /// it only enters the reported bound, never a decision).
 double min_disc_diameter(std::vector<Point> pts);
 
-}  // namespace preimage::decompose
+}  // namespace preimage::coverage

@@ -20,7 +20,7 @@
 #include <limits>
 #include <map>
 
-namespace preimage::decompose::detail {
+namespace preimage::coverage::detail {
 
 CoverageReport plan_brushfire(const Planning& P) {
   const BrushfireDecomposition bd(P.E);
@@ -167,4 +167,4 @@ CoverageReport plan_brushfire(const Planning& P) {
   return pattern_report(P, std::move(path), builder.detours, lap_count, n, bd.num_nodes(), order);
 }
 
-}  // namespace preimage::decompose::detail
+}  // namespace preimage::coverage::detail

@@ -21,7 +21,7 @@
 #include <optional>
 #include <vector>
 
-namespace preimage::decompose {
+namespace preimage::coverage {
 
 using geometry::Point;
 
@@ -46,4 +46,4 @@ SweepOrder order_sweeps(const std::vector<std::vector<Sweep>>& cells, const std:
                         const std::function<double(const Point&, const Point&)>& transit,
                         std::size_t exact_up_to = kExactClusters);
 
-}  // namespace preimage::decompose
+}  // namespace preimage::coverage

@@ -1,18 +1,18 @@
 // SPDX-License-Identifier: Apache-2.0
-// Private to decompose: the simulated robot of online coverage (online_coverage.hpp). It owns
+// Private to coverage: the simulated robot of online coverage (online_coverage.hpp). It owns
 // the map — the configuration space component in the sweep frame, where its centre moves,
 // and the workspace in the same frame, which its range sensors see — and offers only the
 // motion primitives of 6.2.4 and the sensor ring. Every decision that touches the map
 // (contact, where a follow stops, whether a retraced segment is free) is exact.
 #pragma once
-#include <preimage/decompose/online_coverage.hpp>
+#include <preimage/coverage/online_coverage.hpp>
 
 #include "cell_sweep.hpp"
 
 #include <cmath>
 #include <random>
 
-namespace preimage::decompose::detail {
+namespace preimage::coverage::detail {
 
 /// Where the robot is on the contact boundary (or nowhere on it).
 struct Contact {
@@ -74,4 +74,4 @@ class OnlineRobot {
   std::vector<CGAL::Bbox_2> wboxes_;
 };
 
-}  // namespace preimage::decompose::detail
+}  // namespace preimage::coverage::detail

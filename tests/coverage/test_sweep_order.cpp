@@ -2,7 +2,7 @@
 // The generalised TSP over sweeps: the exact DP against enumeration of every order and
 // choice of sweeps; the local search against the exact optimum, and its reported cost and
 // lower bound against the walk it returns.
-#include <preimage/decompose/sweep_order.hpp>
+#include <preimage/coverage/sweep_order.hpp>
 #include <preimage/geometry/random_point.hpp>
 
 #include <gtest/gtest.h>
@@ -13,7 +13,7 @@
 #include <random>
 
 using namespace preimage;
-using decompose::Sweep;
+using coverage::Sweep;
 
 namespace {
 
@@ -70,7 +70,7 @@ double brute_force(const std::vector<std::vector<Sweep>>& cells, const std::opti
 }
 
 void expect_valid(const std::vector<std::vector<Sweep>>& cells, const std::optional<geometry::Point>& start,
-                  const decompose::SweepOrder& so) {
+                  const coverage::SweepOrder& so) {
   ASSERT_EQ(so.cells.size(), cells.size());
   ASSERT_EQ(so.sweeps.size(), cells.size());
   std::vector<std::uint32_t> sorted = so.cells;
@@ -89,7 +89,7 @@ TEST(SweepOrder, ExactDpMatchesEnumeration) {
     const auto cells = random_cells(1 + trial % 6, rng);
     const std::optional<geometry::Point> start =
         trial % 2 ? std::optional<geometry::Point>(geometry::Point(-60, 10)) : std::nullopt;
-    const auto so = decompose::order_sweeps(cells, start, transit);
+    const auto so = coverage::order_sweeps(cells, start, transit);
     expect_valid(cells, start, so);
     EXPECT_TRUE(so.optimal);
     EXPECT_NEAR(so.cost, brute_force(cells, start), 1e-9 * (1 + so.cost)) << "trial " << trial;
@@ -103,8 +103,8 @@ TEST(SweepOrder, LocalSearchIsCloseToTheOptimumAndItsBoundIsBelowIt) {
   for (int trial = 0; trial < 40; ++trial) {
     const auto cells = random_cells(8 + trial % 5, rng);
     const std::optional<geometry::Point> start(geometry::Point(0.5, -55));
-    const auto opt = decompose::order_sweeps(cells, start, transit);
-    const auto heur = decompose::order_sweeps(cells, start, transit, 0);
+    const auto opt = coverage::order_sweeps(cells, start, transit);
+    const auto heur = coverage::order_sweeps(cells, start, transit, 0);
     expect_valid(cells, start, heur);
     EXPECT_FALSE(heur.optimal);
     EXPECT_GE(heur.cost, opt.cost * (1 - 1e-12)) << "better than the exact optimum: one of them is wrong";
@@ -119,7 +119,7 @@ TEST(SweepOrder, LargeInstancesGiveAValidWalkBetterThanTheInputOrder) {
   std::mt19937_64 rng(47);
   for (const std::size_t n : {40u, 300u, 2000u}) {
     const auto cells = random_cells(n, rng);
-    const auto so = decompose::order_sweeps(cells, std::nullopt, transit);
+    const auto so = coverage::order_sweeps(cells, std::nullopt, transit);
     expect_valid(cells, std::nullopt, so);
     // The cells come in random order: the input order with its cheapest sweeps is a poor walk.
     std::vector<std::uint32_t> identity(n);

@@ -7,7 +7,7 @@
 // - graceful failure: whenever the robot claims completion its graph is the offline one
 //   (with noise, with the cycle algorithm switched off, on scenes it cannot finish).
 #include <gtest/gtest.h>
-#include <preimage/decompose/online_coverage.hpp>
+#include <preimage/coverage/online_coverage.hpp>
 #include <preimage/error.hpp>
 #include <preimage/geometry/generators.hpp>
 #include <preimage/geometry/queries.hpp>
@@ -18,8 +18,8 @@
 #include <string>
 
 using namespace preimage;
-using decompose::OnlineOptions;
-using decompose::OnlineReport;
+using coverage::OnlineOptions;
+using coverage::OnlineReport;
 using geometry::Environment;
 using geometry::ExactFT;
 using geometry::Point;
@@ -28,18 +28,18 @@ namespace {
 
 struct Outcome {
   OnlineReport rep;
-  decompose::OnlineComparison cmp;
+  coverage::OnlineComparison cmp;
   double covered = 0;
 };
 
 Outcome run(const Environment& env, double r, double angle, bool cycle = true, double noise = 0, std::uint64_t seed = 1) {
   OnlineOptions o;
   o.robot_radius = r, o.angle_deg = angle, o.cycle = cycle, o.noise = noise, o.seed = seed;
-  Outcome out{decompose::plan_online_coverage(env, o), {}, 0};
-  out.cmp = decompose::compare_with_offline(env, out.rep, decompose::online_tolerance(out.rep));
-  decompose::CoverageReport cr;
+  Outcome out{coverage::plan_online_coverage(env, o), {}, 0};
+  out.cmp = coverage::compare_with_offline(env, out.rep, coverage::online_tolerance(out.rep));
+  coverage::CoverageReport cr;
   cr.path = out.rep.path, cr.moves = out.rep.moves, cr.width = out.rep.width, cr.robot_radius = r;
-  out.covered = decompose::measure_coverage(env, cr).covered_fraction;
+  out.covered = coverage::measure_coverage(env, cr).covered_fraction;
   return out;
 }
 
@@ -149,7 +149,7 @@ TEST(OnlineCoverage, Office) {
     expect_done(env, o, 0.2);
     if (std::fmod(angle, 45.0) == 0) {
       std::size_t general = 0;
-      for (const auto& n : o.rep.nodes) general += n.kind == decompose::OnlineKind::Slice;
+      for (const auto& n : o.rep.nodes) general += n.kind == coverage::OnlineKind::Slice;
       EXPECT_GT(general, 0u) << "no critical slice with more than three cells";
     }
   }
@@ -178,7 +178,7 @@ TEST(OnlineCoverage, ObstaclesStartingOnOneSlice) {
     expect_done(env, o, *s.robot_radius);
     std::size_t found = 0;
     for (const auto& n : o.rep.nodes) {
-      if (n.kind != decompose::OnlineKind::Slice) continue;
+      if (n.kind != coverage::OnlineKind::Slice) continue;
       ++found;
       // Where they start (1 | 3) and where they end (3 | 1): the single port spans the
       // piece, the three are separated by the two obstacles, bottom to top.
@@ -205,7 +205,7 @@ TEST(OnlineCoverage, PocketsEndingOnOneSlice) {
   const Outcome o = run(env, *s.robot_radius, 0);
   expect_done(env, o, *s.robot_radius);
   std::size_t deaths = 0, splits = 0;
-  for (const auto& n : o.rep.nodes) deaths += n.kind == decompose::OnlineKind::Death, splits += n.kind == decompose::OnlineKind::Split;
+  for (const auto& n : o.rep.nodes) deaths += n.kind == coverage::OnlineKind::Death, splits += n.kind == coverage::OnlineKind::Split;
   EXPECT_EQ(deaths, 2u);
   EXPECT_EQ(splits, 1u);
   for (double angle : {90.0, 180.0, 270.0}) {
@@ -270,11 +270,11 @@ TEST(OnlineCoverage, ComparisonChecksTheCellsOfEachNode) {
   Outcome o = run(env, 0.2, 0);
   ASSERT_TRUE(o.cmp.isomorphic) << o.cmp.detail;
   for (auto& n : o.rep.nodes)
-    if (n.kind == decompose::OnlineKind::Slice) {
+    if (n.kind == coverage::OnlineKind::Slice) {
       n.left = n.left > 1 ? n.left - 1 : n.left + 1;  // one cell moved to the other side
       break;
     }
-  const auto c = decompose::compare_with_offline(env, o.rep, decompose::online_tolerance(o.rep));
+  const auto c = coverage::compare_with_offline(env, o.rep, coverage::online_tolerance(o.rep));
   EXPECT_FALSE(c.isomorphic);
   EXPECT_NE(c.detail.find("cells (left | right)"), std::string::npos) << c.detail;
 }
@@ -285,15 +285,15 @@ TEST(OnlineCoverage, RejectsBadInput) {
   OnlineOptions o;
   o.robot_radius = 0.2;
   o.width = 0.5;  // > 2r: an obstacle could hide between laps
-  EXPECT_THROW(decompose::plan_online_coverage(env, o), InputError);
+  EXPECT_THROW(coverage::plan_online_coverage(env, o), InputError);
   o.width = 0, o.sensors = 10;
-  EXPECT_THROW(decompose::plan_online_coverage(env, o), InputError);
+  EXPECT_THROW(coverage::plan_online_coverage(env, o), InputError);
   o.sensors = 32, o.range = 0.1;
-  EXPECT_THROW(decompose::plan_online_coverage(env, o), InputError);
+  EXPECT_THROW(coverage::plan_online_coverage(env, o), InputError);
   o.range = 0, o.noise = -1;
-  EXPECT_THROW(decompose::plan_online_coverage(env, o), InputError);
+  EXPECT_THROW(coverage::plan_online_coverage(env, o), InputError);
   o.noise = 0, o.robot_radius = 0;
-  EXPECT_THROW(decompose::plan_online_coverage(env, o), InputError);
+  EXPECT_THROW(coverage::plan_online_coverage(env, o), InputError);
   o.robot_radius = 0.2, o.start = Point(2.5, 2.5);  // inside a pillar
-  EXPECT_THROW(decompose::plan_online_coverage(env, o), InputError);
+  EXPECT_THROW(coverage::plan_online_coverage(env, o), InputError);
 }

@@ -24,7 +24,7 @@
 #include <limits>
 #include <numbers>
 
-namespace preimage::decompose {
+namespace preimage::coverage {
 
 std::string_view to_string(Pattern p) {
   switch (p) {
@@ -376,4 +376,4 @@ CoverageReport pattern_report(const Planning& P, Polyline path, std::size_t deto
 }
 
 }  // namespace detail
-}  // namespace preimage::decompose
+}  // namespace preimage::coverage

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-#include <preimage/decompose/coverage.hpp>
+#include <preimage/coverage/coverage.hpp>
 
 #include <preimage/decompose/planner.hpp>
-#include <preimage/decompose/sweep_order.hpp>
+#include <preimage/coverage/sweep_order.hpp>
 #include <preimage/error.hpp>
 #include <preimage/geometry/clearance.hpp>
 #include <preimage/geometry/configuration_space.hpp>
@@ -22,7 +22,7 @@
 #include <random>
 #include <set>
 
-namespace preimage::decompose {
+namespace preimage::coverage {
 
 double min_disc_diameter(std::vector<Point> pts) {
   if (pts.empty()) return 0;
@@ -351,31 +351,6 @@ std::vector<std::uint32_t> detail::depth_first_order(const std::vector<std::vect
   return order;
 }
 
-std::size_t detail::round_back(std::vector<Point>& path, const geometry::LocalFrame& frame, const geometry::Clearance& clear) {
-  const std::vector<Point> local = path;
-  for (Point& p : path) p = frame.to_input(p);
-  std::vector<std::size_t> failing;
-  for (std::size_t i = 0; i + 1 < path.size(); ++i)
-    if (!clear.admits(path[i], path[i + 1])) failing.push_back(i);
-  for (int pass = 0; pass < 4 && !failing.empty(); ++pass) {
-    const double push = std::ldexp(frame.margin(), pass);
-    for (const std::size_t i : failing)
-      for (const std::size_t k : {i, i + 1}) {
-        // Away from the nearest obstacle, from the point as planned.
-        const Point p = frame.to_input(local[k]), c = clear.nearest(p);
-        const double dx = p.x() - c.x(), dy = p.y() - c.y(), d = std::hypot(dx, dy);
-        if (d > 0) path[k] = Point(p.x() + push * dx / d, p.y() + push * dy / d);
-      }
-    // A moved point changes both its segments: check them all again.
-    std::vector<std::size_t> again;
-    for (const std::size_t i : failing)
-      for (const std::size_t j : {i == 0 ? i : i - 1, i, i + 1})
-        if (j + 1 < path.size() && (again.empty() || again.back() < j) && !clear.admits(path[j], path[j + 1])) again.push_back(j);
-    failing = std::move(again);
-  }
-  return failing.empty() ? path.size() : failing.front();
-}
-
 void detail::finish_path(const Planning& P, Polyline path, CoverageReport& rep) {
   // Certified output: every segment in the component (exact walk) and, with a footprint,
   // at distance >= r from every obstacle (exact arithmetic).
@@ -504,7 +479,7 @@ CoverageReport plan_coverage(const Environment& env, const CoverageOptions& o) {
                          " fits: this far from the origin a path needs that much room to be rounded; move it inwards");
       throw;  // the same error at the origin (its points are the local ones plus the shift)
     }
-    const std::size_t bad = detail::round_back(rep.path, frame, clear);
+    const std::size_t bad = frame.to_input_certified(rep.path, clear);
     if (bad == rep.path.size()) {
       rep.cspace_error += extra;
       break;
@@ -576,4 +551,4 @@ CoverageMetrics measure_coverage(const Environment& env, const CoverageReport& r
   return measure_in_frame(frame.to_local(env), local, cell);
 }
 
-}  // namespace preimage::decompose
+}  // namespace preimage::coverage

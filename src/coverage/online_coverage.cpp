@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Online coverage: the planner of 6.2.4 (critical point sensing, the cycle algorithm, the
 // incremental Reeb graph) driving the simulated robot of online_robot.hpp.
-#include <preimage/decompose/online_coverage.hpp>
+#include <preimage/coverage/online_coverage.hpp>
 #include <preimage/geometry/clearance.hpp>
 #include <preimage/geometry/local_frame.hpp>
 
@@ -19,7 +19,7 @@
 #include <queue>
 #include <set>
 
-namespace preimage::decompose {
+namespace preimage::coverage {
 
 std::string_view to_string(OnlineKind k) {
   switch (k) {
@@ -898,7 +898,7 @@ OnlineReport plan_online_coverage(const Environment& env, const OnlineOptions& o
     lo.robot_radius = r + extra;
     OnlineReport rep = plan_online_in_frame(local, lo);
     for (OnlineNode& n : rep.nodes) n.at = frame.to_input(n.at);
-    const std::size_t bad = detail::round_back(rep.path, frame, clear);
+    const std::size_t bad = frame.to_input_certified(rep.path, clear);
     if (bad == rep.path.size()) {
       rep.robot_radius = r;
       return rep;
@@ -928,4 +928,4 @@ OnlineComparison compare_with_offline(const Environment& env, const OnlineReport
   return compare_with_offline(b, rep, tol);
 }
 
-}  // namespace preimage::decompose
+}  // namespace preimage::coverage

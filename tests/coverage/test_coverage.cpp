@@ -6,7 +6,7 @@
 //   configuration space polygon, with the O(n) edge-scan visibility test;
 // - the chapter's bound for the exhaustive walk, and the optimised order never longer.
 #include <gtest/gtest.h>
-#include <preimage/decompose/coverage.hpp>
+#include <preimage/coverage/coverage.hpp>
 #include <preimage/error.hpp>
 #include <preimage/geometry/configuration_space.hpp>
 #include <preimage/geometry/generators.hpp>
@@ -21,8 +21,8 @@
 #include "support/path_oracle.hpp"
 
 using namespace preimage;
-using decompose::CoverageOptions;
-using decompose::Move;
+using coverage::CoverageOptions;
+using coverage::Move;
 using geometry::Environment;
 using geometry::ExactFT;
 using geometry::Point;
@@ -55,7 +55,7 @@ struct Raster {
 // within w/2 of the path. Samples the library puts in another component of the
 // configuration space than the path's are left out: the robot cannot reach them (the
 // report counts their area as unreachable).
-Raster raster(const Environment& env, const decompose::CoverageReport& rep, double r, double w, int n) {
+Raster raster(const Environment& env, const coverage::CoverageReport& rep, double r, double w, int n) {
   Raster out;
   const geometry::ConfigurationSpace cs(env, r);
   const auto home = cs.component_of(rep.path[1]);
@@ -78,11 +78,11 @@ Raster raster(const Environment& env, const decompose::CoverageReport& rep, doub
 }
 
 
-decompose::CoverageReport check(const Environment& env, double w, double r, std::optional<double> angle, const std::string& what,
+coverage::CoverageReport check(const Environment& env, double w, double r, std::optional<double> angle, const std::string& what,
                                 int n = 100, double min_fraction = 0.995) {
   CoverageOptions o;
   o.width = w, o.robot_radius = r, o.angle_deg = angle;
-  const auto rep = decompose::plan_coverage(env, o);
+  const auto rep = coverage::plan_coverage(env, o);
   EXPECT_GE(rep.path.size(), 2u) << what;
   EXPECT_EQ(rep.moves.size() + 1, rep.path.size()) << what;
   for (std::size_t i = 0; i + 1 < rep.path.size(); ++i)
@@ -132,7 +132,7 @@ TEST(Coverage, TransitsAreShortestPaths) {
     for (double r : {0.0, 0.01 * size}) {
       CoverageOptions o;
       o.width = 0.05 * size, o.robot_radius = r, o.angle_deg = 0.0;
-      const auto rep = decompose::plan_coverage(env, o);
+      const auto rep = coverage::plan_coverage(env, o);
       const geometry::ConfigurationSpace cs(env, r);
       const Environment& E = cs.components()[*cs.component_of(rep.path.front())];
       for (std::size_t i = 0; i < rep.moves.size();) {
@@ -163,9 +163,9 @@ TEST(Coverage, OptimisedOrderBeatsTheDepthFirstWalkAndRespectsItsBound) {
     const double w = 0.04 * std::max(b.xmax() - b.xmin(), b.ymax() - b.ymin());
     CoverageOptions o;
     o.width = w, o.angle_deg = 0.0;
-    const auto best = decompose::plan_coverage(env, o);
-    o.order = decompose::CellOrder::DepthFirst, o.transit = decompose::Transit::Decomposition;
-    const auto dfs = decompose::plan_coverage(env, o);
+    const auto best = coverage::plan_coverage(env, o);
+    o.order = coverage::CellOrder::DepthFirst, o.transit = coverage::Transit::Decomposition;
+    const auto dfs = coverage::plan_coverage(env, o);
     EXPECT_LE(dfs.length, dfs.bound) << "seed " << s;  // 6.2.5's bound is for the exhaustive walk
     EXPECT_LE(best.length, dfs.length * (1 + 1e-9)) << "seed " << s;
     EXPECT_GE(best.length, best.order_lower_bound * (1 - 1e-9)) << "seed " << s;
@@ -176,31 +176,31 @@ TEST(Coverage, OptimisedOrderBeatsTheDepthFirstWalkAndRespectsItsBound) {
 TEST(Coverage, WidthDefaultsToTheDiameterAndBadInputIsRefused) {
   auto env = geometry::generators::office(1, 1);
   CoverageOptions o;
-  EXPECT_THROW(decompose::plan_coverage(env, o), InputError);  // no width and no radius
+  EXPECT_THROW(coverage::plan_coverage(env, o), InputError);  // no width and no radius
   o.robot_radius = 0.1;
-  EXPECT_EQ(decompose::plan_coverage(env, o).width, 0.2);
+  EXPECT_EQ(coverage::plan_coverage(env, o).width, 0.2);
   o.start = Point(-5, -5);
-  EXPECT_THROW(decompose::plan_coverage(env, o), InputError);
+  EXPECT_THROW(coverage::plan_coverage(env, o), InputError);
   // A start 2 cm from a wall is refused for a robot of radius 0.1.
   o.start = Point(0.02, 1);
   try {
-    decompose::plan_coverage(env, o);
+    coverage::plan_coverage(env, o);
     ADD_FAILURE() << "a start 0.02 from a wall was accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("does not fit there"), std::string::npos) << e.what();
   }
   o.start = Point(1, 1);
-  auto rep = decompose::plan_coverage(env, o);
+  auto rep = coverage::plan_coverage(env, o);
   EXPECT_EQ(rep.path.front(), Point(1, 1));  // the path begins where the robot stands
   o.robot_radius = 100;
-  EXPECT_THROW(decompose::plan_coverage(env, o), InputError);  // fits nowhere
+  EXPECT_THROW(coverage::plan_coverage(env, o), InputError);  // fits nowhere
 }
 
 TEST(Coverage, MetricsAgreeWithTheRasterOracle) {
   CoverageOptions o;
   o.width = 0.6, o.robot_radius = 0.3, o.angle_deg = 0.0;
-  const auto rep = decompose::plan_coverage(gallery, o);
-  const auto m = decompose::measure_coverage(gallery, rep);
+  const auto rep = coverage::plan_coverage(gallery, o);
+  const auto m = coverage::measure_coverage(gallery, rep);
   const Raster ras = raster(gallery, rep, 0.3, 0.6, 160);
   EXPECT_NEAR(m.covered_fraction, ras.fraction(), 0.01);
   EXPECT_GT(m.efficiency, 1.0);
@@ -214,19 +214,19 @@ TEST(Coverage, MetricsOfAToolWiderThanThePlan) {
   // the disc around it, and a raster with no sample in the free space is refused.
   CoverageOptions o;
   o.width = 1e12, o.robot_radius = 0.3, o.angle_deg = 0.0;
-  auto rep = decompose::plan_coverage(gallery, o);
-  const auto m = decompose::measure_coverage(gallery, rep);
+  auto rep = coverage::plan_coverage(gallery, o);
+  const auto m = coverage::measure_coverage(gallery, rep);
   EXPECT_GT(m.samples, 1000u);
   EXPECT_EQ(m.covered_fraction, 1.0);
   rep.path.resize(1);  // the tool standing at the first point still covers everything
-  EXPECT_EQ(decompose::measure_coverage(gallery, rep).covered_fraction, 1.0);
+  EXPECT_EQ(coverage::measure_coverage(gallery, rep).covered_fraction, 1.0);
   o.width = 0.6;  // a point tool of width 0.6 standing still covers a disc of it: about 0.28 / 75
-  auto small = decompose::plan_coverage(gallery, o);
+  auto small = coverage::plan_coverage(gallery, o);
   small.path.resize(1);
-  const auto ms = decompose::measure_coverage(gallery, small, 0.05);
+  const auto ms = coverage::measure_coverage(gallery, small, 0.05);
   EXPECT_GT(ms.covered_fraction, 0.0);
   EXPECT_LT(ms.covered_fraction, 0.01);
-  EXPECT_THROW(decompose::measure_coverage(gallery, small, 1e6), InputError);  // no sample inside
+  EXPECT_THROW(coverage::measure_coverage(gallery, small, 1e6), InputError);  // no sample inside
 }
 
 TEST(Coverage, HouseExpoFixtureStaysInsideTheConfigurationSpace) {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Private to decompose: a square raster of one configuration space component and the
+// Private to coverage: a square raster of one configuration space component and the
 // samples a path's tool covers (a measurement in floating point, never a decision on the
 // geometry). measure_coverage reports from it; the touch-up pass finds what a pattern left.
 #pragma once
@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace preimage::decompose::detail {
+namespace preimage::coverage::detail {
 
 struct CoverageRaster {
   double x0 = 0, y0 = 0, cell = 0;
@@ -54,4 +54,4 @@ void CoverageRaster::capsule(const geometry::Point& a, const geometry::Point& b,
   }
 }
 
-}  // namespace preimage::decompose::detail
+}  // namespace preimage::coverage::detail

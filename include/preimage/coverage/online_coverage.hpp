@@ -81,14 +81,14 @@
 // configuration space polygon exactly and r from every obstacle) like plan_coverage's.
 #pragma once
 #include <preimage/decompose/boustrophedon.hpp>
-#include <preimage/decompose/coverage.hpp>
+#include <preimage/coverage/coverage.hpp>
 
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
-namespace preimage::decompose {
+namespace preimage::coverage {
 
 struct OnlineOptions {
   double robot_radius = 0;          // r > 0
@@ -173,4 +173,4 @@ OnlineComparison compare_with_offline(const BoustrophedonDecomposition& offline,
 /// Default matching tolerance: how far a sensed critical point may sit from the true one.
 double online_tolerance(const OnlineReport& report);
 
-}  // namespace preimage::decompose
+}  // namespace preimage::coverage

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include <preimage/decompose/sweep_order.hpp>
+#include <preimage/coverage/sweep_order.hpp>
 
 #include <algorithm>
 #include <array>
@@ -8,7 +8,7 @@
 #include <numeric>
 #include <stdexcept>
 
-namespace preimage::decompose {
+namespace preimage::coverage {
 
 namespace {
 
@@ -513,4 +513,4 @@ SweepOrder order_sweeps(const std::vector<std::vector<Sweep>>& cells, const std:
   return out;
 }
 
-}  // namespace preimage::decompose
+}  // namespace preimage::coverage

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// Private to decompose: what every coverage pattern shares (coverage.cpp, morse_coverage.cpp).
+// Private to coverage: what every coverage pattern shares (coverage.cpp, morse_coverage.cpp).
 #pragma once
-#include <preimage/decompose/coverage.hpp>
+#include <preimage/coverage/coverage.hpp>
 #include <preimage/geometry/clearance.hpp>
 #include <preimage/geometry/configuration_space.hpp>
 #include <preimage/geometry/local_frame.hpp>
@@ -12,7 +12,7 @@
 
 #include <cmath>
 
-namespace preimage::decompose::detail {
+namespace preimage::coverage::detail {
 
 /// The problem once the configuration space is built: the component covered and its indexes.
 struct Planning {
@@ -30,14 +30,6 @@ struct Planning {
 /// failure is a bug (std::logic_error) — and fills the report's path, moves, length,
 /// transit length, rotation and turns.
 void finish_path(const Planning& P, Polyline path, CoverageReport& rep);
-
-/// Maps a path certified in the local frame (geometry::LocalFrame) back to input coordinates
-/// and certifies it there (clear.admits, exact). Rounding moves each point by under an ulp;
-/// where that brings a segment within r of an obstacle (a transit along a chord of the
-/// configuration space's arcs lies a few grid units outside the circle of radius r), the
-/// segment's ends are pushed frame.margin() away from the nearest obstacle. Returns the
-/// first segment still failing after that, or path.size() when all are certified.
-std::size_t round_back(std::vector<Point>& path, const geometry::LocalFrame& frame, const geometry::Clearance& clear);
 
 /// Euclidean distance, for ordering laps (a choice, never a decision on geometry).
 inline double planar_distance(const Point& a, const Point& b) { return std::hypot(a.x() - b.x(), a.y() - b.y()); }
@@ -71,4 +63,4 @@ CoverageReport plan_brushfire(const Planning& P);
 /// the start, w apart (wavefront_coverage.cpp).
 CoverageReport plan_wavefront(const Planning& P);
 
-}  // namespace preimage::decompose::detail
+}  // namespace preimage::coverage::detail

@@ -4,7 +4,7 @@
 // non-decreasing order of tether length (the geodesic distance of the configuration space,
 // from the shortest path map tested against brute force in tests/geometry).
 #include <gtest/gtest.h>
-#include <preimage/decompose/coverage.hpp>
+#include <preimage/coverage/coverage.hpp>
 #include <preimage/error.hpp>
 #include <preimage/geometry/configuration_space.hpp>
 #include <preimage/geometry/generators.hpp>
@@ -46,10 +46,10 @@ TEST(WavefrontCoverage, FrontsRunOutwardsCoverAndKeepClear) {
   for (const auto& [what, env, start] : cases) {
     const auto box = env.bbox();
     const double r = std::max(box.xmax() - box.xmin(), box.ymax() - box.ymin()) / 60, w = 2 * r;
-    decompose::CoverageOptions o;
-    o.robot_radius = r, o.pattern = decompose::Pattern::Wavefront, o.start = start;
-    const auto rep = decompose::plan_coverage(env, o);
-    EXPECT_GE(decompose::measure_coverage(env, rep).covered_fraction, 0.99) << what;
+    coverage::CoverageOptions o;
+    o.robot_radius = r, o.pattern = coverage::Pattern::Wavefront, o.start = start;
+    const auto rep = coverage::plan_coverage(env, o);
+    EXPECT_GE(coverage::measure_coverage(env, rep).covered_fraction, 0.99) << what;
     double worst = std::numeric_limits<double>::infinity();
     for (const Point& p : rep.path) worst = std::min(worst, preimage::testing::brute_clearance(env, p));
     EXPECT_GE(worst, r * (1 - 1e-6)) << what;
@@ -62,7 +62,7 @@ TEST(WavefrontCoverage, FrontsRunOutwardsCoverAndKeepClear) {
     long last = -1;
     std::size_t on_front = 0, lap_points = 0;
     for (std::size_t i = 0; i < rep.moves.size(); ++i) {
-      if (rep.moves[i] != decompose::Move::Lap) continue;
+      if (rep.moves[i] != coverage::Move::Lap) continue;
       const double h = spm.distance(rep.path[i + 1]);
       ASSERT_TRUE(std::isfinite(h)) << what;
       const long k = std::lround((h - w / 2) / w);
@@ -77,7 +77,7 @@ TEST(WavefrontCoverage, FrontsRunOutwardsCoverAndKeepClear) {
 }
 
 TEST(WavefrontCoverage, NeedsAnAnchor) {
-  decompose::CoverageOptions o;
-  o.robot_radius = 0.2, o.pattern = decompose::Pattern::Wavefront;
-  EXPECT_THROW(decompose::plan_coverage(geometry::generators::office(1, 2), o), InputError);
+  coverage::CoverageOptions o;
+  o.robot_radius = 0.2, o.pattern = coverage::Pattern::Wavefront;
+  EXPECT_THROW(coverage::plan_coverage(geometry::generators::office(1, 2), o), InputError);
 }

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace preimage::decompose::detail {
+namespace preimage::coverage::detail {
 
 namespace {
 
@@ -288,4 +288,4 @@ Polyline to_input_frame(const BoustrophedonDecomposition& b, const Environment& 
   return out;
 }
 
-}  // namespace preimage::decompose::detail
+}  // namespace preimage::coverage::detail

@@ -1,12 +1,34 @@
 // SPDX-License-Identifier: Apache-2.0
-// Private to decompose: the four ways to sweep one boustrophedon cell, built in the sweep
+// Private to coverage: the four ways to sweep one boustrophedon cell, built in the sweep
 // frame and brought back to the input frame with exact certification (coverage.cpp).
 #pragma once
-#include <preimage/decompose/coverage.hpp>
+#include <preimage/coverage/coverage.hpp>
+#include <preimage/decompose/brushfire.hpp>
+#include <preimage/decompose/morse.hpp>
+#include <preimage/decompose/planner.hpp>
+#include <preimage/decompose/trapezoidal.hpp>
+#include <preimage/decompose/wavefront.hpp>
 #include <preimage/geometry/visibility.hpp>
 #include <preimage/geometry/visibility_graph.hpp>
 
-namespace preimage::decompose::detail {
+namespace preimage::coverage {
+
+// The decompositions coverage sweeps, by their names (private to coverage's sources).
+using decompose::BoustrophedonCell;
+using decompose::BrushfireCell;
+using decompose::BrushfireDecomposition;
+using decompose::CellChains;
+using decompose::MorseDecomposition;
+using decompose::SliceFamily;
+using decompose::TrapezoidalDecomposition;
+using decompose::TrapezoidalPlanner;
+using decompose::WavefrontDecomposition;
+using geometry::ExactFT;
+using geometry::ExactPoint;
+
+}  // namespace preimage::coverage
+
+namespace preimage::coverage::detail {
 
 /// A path point in the sweep frame with what it is: an environment vertex, a point on an
 /// environment edge, or neither; `move` is the kind of the segment that ends here.
@@ -41,4 +63,4 @@ Polyline to_input_frame(const BoustrophedonDecomposition& b, const Environment& 
                         const geometry::VisibilityIndex& index, const geometry::VisibilityGraph& graph,
                         const geometry::VisibilityIndex* sweep_index);
 
-}  // namespace preimage::decompose::detail
+}  // namespace preimage::coverage::detail
