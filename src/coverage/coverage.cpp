@@ -456,11 +456,17 @@ CoverageReport plan_coverage(const Environment& env, const CoverageOptions& o) {
   if (frame.identity()) return plan_in_frame(env, o);
   // Far from the origin (georeferenced plans): plan in the local frame, where rasters,
   // offsets and GVD snapping keep the digits the plan needs, round the path back to input
-  // coordinates and certify it again there. Rounding moves a point by at most half an ulp;
-  // should that bring a segment within r of an obstacle, plan again with the robot
-  // frame.margin() wider, which rounding cannot undo.
+  // coordinates and certify it again there (to_input_certified pushes the ends of a segment
+  // that rounding took within r of a wall); should a segment still fail, plan again with the
+  // robot frame.margin() wider, which rounding cannot undo.
   const double r = o.robot_radius, w = checked_width(o);
   const geometry::Clearance clear(env, r);
+  // The start's errors in the user's coordinates (the local plan would name local ones).
+  if (o.start && !geometry::locate(env, *o.start).in_free_space())
+    throw InputError("start " + geometry::format_point(*o.start) + " is not in free space");
+  if (o.start && !clear.admits(*o.start))
+    throw InputError("start " + geometry::format_point(*o.start) + " is " + geometry::format_number(clear.distance(*o.start)) +
+                     " from an obstacle: a robot of radius " + geometry::format_number(r) + " does not fit there");
   const Environment local = frame.to_local(env);
   CoverageOptions lo = o;
   lo.width = w;
@@ -477,7 +483,7 @@ CoverageReport plan_coverage(const Environment& env, const CoverageOptions& o) {
         throw InputError("start " + geometry::format_point(*o.start) + " is within " + geometry::format_number(frame.margin()) +
                          " of where a robot of radius " + geometry::format_number(r) +
                          " fits: this far from the origin a path needs that much room to be rounded; move it inwards");
-      throw;  // the same error at the origin (its points are the local ones plus the shift)
+      throw;  // not about the start: the same error as at the origin
     }
     const std::size_t bad = frame.to_input_certified(rep.path, clear);
     if (bad == rep.path.size()) {

@@ -15,15 +15,15 @@ namespace {
 // Unit in the last place of |x| (x normal or 0).
 double ulp(double x) { return std::nextafter(std::fabs(x), std::numeric_limits<double>::infinity()) - std::fabs(x); }
 
-// The translation of one axis spanning [lo, hi] in an environment of extent `extent`: lo (or
-// hi when negative) when every coordinate is more than 16 extents from 0, else 0. Then x and
-// the shift lie within a factor 17/16 of each other, so x - shift is exact (Sterbenz).
 // Is a - b exact in double? (Knuth's TwoSum: the rounding error of a + (-b), computed exactly.)
 bool exact_difference(double a, double b) {
   const double s = a - b, bb = s - a;
   return (a - (s - bb)) + (-b - bb) == 0;
 }
 
+// The translation of one axis spanning [lo, hi] in an environment of extent `extent`: lo (or
+// hi when negative) when every coordinate is more than 16 extents from 0, else 0. Then x and
+// the shift lie within a factor 17/16 of each other, so x - shift is exact (Sterbenz).
 double axis_shift(double lo, double hi, double extent) {
   if (lo > 16 * extent) return lo;
   if (hi < -16 * extent) return hi;

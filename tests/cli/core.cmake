@@ -303,6 +303,8 @@ endforeach()
 cli_test(cover_far_from_the_origin_keeps_its_area 0 "covered 99\\.98% of the configuration space \\(84\\.0420140764 m2\\)" -
          cover ${FIX}/scenes/room_with_hole_at_1e10.json --radius 0.25)
 cli_test(cover_spiral_far_from_the_origin 0 "spiral pattern: length 281\\.26573028.*19 touch-ups" - cover ${FIX}/scenes/room_with_hole_at_1e10.json --radius 0.25 --pattern spiral)
+cli_test(cover_far_from_the_origin_names_the_start_as_given fail "start \\(10000000005, 10000000005\\) is not in free space" -
+         cover ${FIX}/scenes/room_with_hole_at_1e10.json --radius 0.25 --start 10000000005,10000000005)
 find_package(Python3 COMPONENTS Interpreter REQUIRED)
 add_test(NAME cli.translation_invariance COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/cli/translation_invariance.py
          $<TARGET_FILE:preimage_cli> ${PROJECT_SOURCE_DIR}/examples/floorplans/office_mlstruct_302.json ${CMAKE_CURRENT_BINARY_DIR}/translation-scratch)

@@ -8,9 +8,10 @@
 // box starts at 0 along each such axis. The translation is exact (Sterbenz: x and x0 of the same
 // sign within a factor 2 have an exact difference), so the local environment is the input one,
 // moved, and every decision on it is the decision on the input. Only mapping constructed points
-// back rounds: by at most half an ulp of the input's largest coordinate per axis, which callers
-// make room for with `margin()` (a robot planned `margin()` farther from every obstacle stays
-// clear of them once its path is rounded back).
+// back rounds: by at most half an ulp of the input's largest coordinate per axis. A path is
+// therefore certified again in input coordinates (to_input_certified), where points that
+// rounding took within r of a wall are pushed `margin()` away; a configuration space's rings
+// get `margin()` more erosion when their rounded copy fails its certificate.
 #pragma once
 #include <preimage/geometry/environment.hpp>
 
