@@ -24,7 +24,8 @@ ConfigurationSpace::ConfigurationSpace(const Environment& workspace, double radi
     return;
   }
   // Clipper works in the local frame (a plan far from the origin keeps its digits); its
-  // rings come back rounded by at most frame.margin(), which the erosion adds.
+  // rings come back rounded by at most frame.margin(), which a second try adds to the
+  // erosion when the rounded rings fail their certificate.
   const LocalFrame frame = LocalFrame::of(workspace);
   // Integer grid for Clipper: a power of two, so scaling and unscaling are exact, with
   // every coordinate below 2^51 in magnitude.

@@ -67,9 +67,11 @@ std::size_t LocalFrame::to_input_certified(std::vector<Point>& path, const Clear
     const double push = std::ldexp(margin(), pass);
     for (const std::size_t i : failing)
       for (const std::size_t k : {i, i + 1}) {
-        // Away from the nearest obstacle, from the point as planned.
-        const Point p = to_input(local[k]), c = clear.nearest(p);
-        const double dx = p.x() - c.x(), dy = p.y() - c.y(), d = std::hypot(dx, dy);
+        // Away from the nearest obstacle, the direction taken in the frame: rounding may
+        // have put the point on the obstacle itself (a path rounding a corner r = 1e-7 away,
+        // 1e10 from the origin, lands on the corner).
+        const Point p = to_input(local[k]), c = to_local(clear.nearest(p));
+        const double dx = local[k].x() - c.x(), dy = local[k].y() - c.y(), d = std::hypot(dx, dy);
         if (d > 0) path[k] = Point(p.x() + push * dx / d, p.y() + push * dy / d);
       }
     // A moved point changes both its segments: check them all again.

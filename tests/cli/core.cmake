@@ -305,6 +305,10 @@ cli_test(cover_far_from_the_origin_keeps_its_area 0 "covered 99\\.98% of the con
 cli_test(cover_spiral_far_from_the_origin 0 "spiral pattern: length 281\\.26573028.*19 touch-ups" - cover ${FIX}/scenes/room_with_hole_at_1e10.json --radius 0.25 --pattern spiral)
 cli_test(cover_far_from_the_origin_names_the_start_as_given fail "start \\(10000000005, 10000000005\\) is not in free space" -
          cover ${FIX}/scenes/room_with_hole_at_1e10.json --radius 0.25 --start 10000000005,10000000005)
+# Rounding back put the path's corner point on the hole's corner (r = 1e-7 at 1e10): pushed
+# out in the direction taken in the local frame, not from the rounded point (internal error).
+cli_test(plan_far_from_the_origin_tiny_robot_rounds_off_a_corner 0 "for a robot of radius 1e-07: 9 points.*every segment certified" -
+         plan ${FIX}/scenes/room_with_hole_at_1e10.json --start 10000000001,10000000001 --goal 10000000009,10000000009 --radius 1e-7)
 find_package(Python3 COMPONENTS Interpreter REQUIRED)
 add_test(NAME cli.translation_invariance COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/cli/translation_invariance.py
          $<TARGET_FILE:preimage_cli> ${PROJECT_SOURCE_DIR}/examples/floorplans/office_mlstruct_302.json ${CMAKE_CURRENT_BINARY_DIR}/translation-scratch)
