@@ -171,19 +171,13 @@ CoverageReport plan_at(const Planning& P, const BoustrophedonDecomposition& b, d
   return rep;
 }
 
-// Touch-ups, after every pattern: what its laps left on the raster of the component (a
-// sliver between two offset rings, a corner no front reached) is visited point by point by
-// shortest transits, the largest uncovered patches first, until at most kTouchUpLeft of the
-// samples is left. A touch-up point is a sample centre in the component, so the robot's
-// centre may stand there; it covers the samples within w/2 of it.
-constexpr double kTouchUpLeft = 1e-3;
-
 // Boundary following, straightened (issue 49: a robot slows down at every turn, and most
 // of the turns were the 1 cm jogs of walls): within a run of follow moves, a point is
 // skipped when the straight segment past it is certified (inside the component, r from
 // every obstacle: exact) and no skipped point lies more than w/8 from it, so corners of
-// the room are still followed and only jogs go. Returns how many points were dropped.
-std::size_t straighten_follows(const Planning& P, detail::Polyline& path) {
+// the room are still followed and only jogs go. Every segment it makes is certified by the
+// same test as finish_path's.
+void straighten_follows(const Planning& P, detail::Polyline& path) {
   const double tol = P.w / 8;
   auto certified = [&](const Point& a, const Point& z) {
     return P.index.visible(a, z) && (P.cs.radius() == 0 || P.cs.admits(a, z));
@@ -199,7 +193,7 @@ std::size_t straighten_follows(const Planning& P, detail::Polyline& path) {
   };
   detail::Polyline out;
   out.points.push_back(path.points.front());
-  std::size_t dropped = 0, i = 0;
+  std::size_t i = 0;
   const std::size_t n = path.points.size();
   while (i + 1 < n) {
     if (path.moves[i] != Move::Follow) {
@@ -214,31 +208,36 @@ std::size_t straighten_follows(const Planning& P, detail::Polyline& path) {
     while (a < end) {
       std::size_t j = a + 1;
       while (j + 1 <= end && certified(path.points[a], path.points[j + 1]) && near_segment(path.points[a], path.points[j + 1], a + 1, j + 1)) ++j;
-      dropped += j - a - 1;
       out.append(path.points[j], Move::Follow);
       a = j;
     }
     i = end;
   }
   path = std::move(out);
-  return dropped;
 }
 
+// Touch-ups, after every pattern: what its laps left on the raster of the component (a
+// sliver between two offset rings, a corner no front reached) is visited point by point by
+// shortest transits, the largest uncovered patches first, until at most kTouchUpLeft of the
+// samples is left. A touch-up point is a sample centre in the component, so the robot's
+// centre may stand there; it covers the samples within w/2 of it.
+constexpr double kTouchUpLeft = 1e-3;
+
+// The pattern's path (certified by finish_path), straightened, then touched up; only the
+// touch-ups' transits are certified again.
 void touch_up(const Planning& P, CoverageReport& rep) {
   if (rep.path.empty()) return;
-  {
-    detail::Polyline path;
-    path.points = std::move(rep.path), path.moves = std::move(rep.moves);
-    straighten_follows(P, path);
-    rep.path = std::move(path.points), rep.moves = std::move(path.moves);
-  }
+  detail::Polyline path;
+  path.points = std::move(rep.path), path.moves = std::move(rep.moves);
+  straighten_follows(P, path);
+  const std::size_t certified = path.points.size() - 1;
   const double half = P.w / 2;
   const detail::CoverageRaster R(P.E, P.index, P.w, 0);
   std::vector<char> open(R.target.size(), 0);
   std::size_t total = 0, left = 0;
   for (std::size_t id = 0; id < R.target.size(); ++id) total += R.target[id], open[id] = R.target[id];
-  for (std::size_t seg = 0; seg + 1 < std::max<std::size_t>(rep.path.size(), 2); ++seg)
-    R.capsule(rep.path[seg], rep.path[std::min(seg + 1, rep.path.size() - 1)], half, half, [&](std::size_t id, bool) { open[id] = 0; });
+  for (std::size_t seg = 0; seg + 1 < std::max<std::size_t>(path.points.size(), 2); ++seg)
+    R.capsule(path.points[seg], path.points[std::min(seg + 1, path.points.size() - 1)], half, half, [&](std::size_t id, bool) { open[id] = 0; });
   for (char o : open) left += o;
   const auto allowed = static_cast<std::size_t>(kTouchUpLeft * static_cast<double>(total));
   // Patches: 4-connected uncovered samples, largest first.
@@ -271,8 +270,6 @@ void touch_up(const Planning& P, CoverageReport& rep) {
     }
   }
   // Nearest first from the path's end, each by the shortest transit in the component.
-  detail::Polyline path;
-  path.points = std::move(rep.path), path.moves = std::move(rep.moves);
   std::vector<char> done(points.size(), 0);
   for (std::size_t n = 0; n < points.size(); ++n) {
     const Point from = path.points.back();
@@ -285,9 +282,8 @@ void touch_up(const Planning& P, CoverageReport& rep) {
     if (!sp.found) throw std::logic_error("coverage: no transit to a touch-up point in the component");
     for (std::size_t k = 1; k < sp.points.size(); ++k) path.append(sp.points[k], Move::Transit);
   }
-  rep.length = rep.transit_length = rep.rotation_deg = 0, rep.turns = rep.sharp_turns = 0;
   rep.touch_ups = points.size();
-  detail::finish_path(P, std::move(path), rep);
+  detail::finish_path(P, std::move(path), rep, certified);
 }
 
 // 6.2.1's pattern: the sweep direction given, or the two most promising candidates planned
@@ -351,10 +347,10 @@ std::vector<std::uint32_t> detail::depth_first_order(const std::vector<std::vect
   return order;
 }
 
-void detail::finish_path(const Planning& P, Polyline path, CoverageReport& rep) {
+void detail::finish_path(const Planning& P, Polyline path, CoverageReport& rep, std::size_t certified_before) {
   // Certified output: every segment in the component (exact walk) and, with a footprint,
   // at distance >= r from every obstacle (exact arithmetic).
-  for (std::size_t i = 0; i + 1 < path.points.size(); ++i) {
+  for (std::size_t i = certified_before; i + 1 < path.points.size(); ++i) {
     const Point &a = path.points[i], &z = path.points[i + 1];
     const bool inside = (i == 0 && P.o.start && *P.o.start != *P.start) ? P.cs.admits(a, z) : P.index.visible(a, z);
     const bool clear = P.cs.radius() == 0 || P.cs.admits(a, z);
@@ -367,6 +363,7 @@ void detail::finish_path(const Planning& P, Polyline path, CoverageReport& rep) 
   }
   rep.path = std::move(path.points);
   rep.moves = std::move(path.moves);
+  rep.length = rep.transit_length = rep.rotation_deg = 0, rep.turns = rep.sharp_turns = 0;
   double heading_prev = NAN;
   for (std::size_t i = 0; i + 1 < rep.path.size(); ++i) {
     const double len = dist(rep.path[i], rep.path[i + 1]);

@@ -26,10 +26,11 @@ struct Planning {
   std::optional<Point> start;                 // in E (the entry point when the start lies in the band)
 };
 
-/// Certifies every segment of `path` (inside E exactly, and r from every obstacle) — a
-/// failure is a bug (std::logic_error) — and fills the report's path, moves, length,
-/// transit length, rotation and turns.
-void finish_path(const Planning& P, Polyline path, CoverageReport& rep);
+/// Certifies every segment of `path` from `certified_before` on (inside E exactly, and r
+/// from every obstacle; the earlier ones the caller has certified) — a failure is a bug
+/// (std::logic_error) — and sets the report's path, moves, length, transit length, rotation
+/// and turns.
+void finish_path(const Planning& P, Polyline path, CoverageReport& rep, std::size_t certified_before = 0);
 
 /// Euclidean distance, for ordering laps (a choice, never a decision on geometry).
 inline double planar_distance(const Point& a, const Point& b) { return std::hypot(a.x() - b.x(), a.y() - b.y()); }
