@@ -18,6 +18,7 @@
 #include <preimage/render/figures.hpp>
 
 #include <cmath>
+#include <numbers>
 #include <iostream>
 #include <limits>
 #include <optional>
@@ -441,12 +442,14 @@ struct CoverArgs {
   std::size_t sensors = 32;
   double range = 0, noise = 0;
   std::uint64_t seed = 1;
+  double min_turn_radius = 0;
 };
 
 // cover --online: the robot does not know the map (6.2.4).
 void run_cover_online(const CoverArgs& a, const scene::Scene& s, double radius, double angle) {
   if (a.pattern != "boustrophedon" || a.order != "optimised" || a.transit != "shortest" || !a.centre.empty())
     throw InputError("--online: the robot sweeps boustrophedon cells as it finds them; --pattern, --order, --transit and --center do not apply");
+  if (a.min_turn_radius > 0) throw InputError("--min-turn-radius: not with --online (the online robot turns in place at critical points)");
   if (!a.geojson.empty()) throw InputError("--online: --geojson is not supported; use --json or --svg");
   const auto& env = s.require_environment();
   coverage::OnlineOptions o;
@@ -470,7 +473,7 @@ void run_cover_online(const CoverArgs& a, const scene::Scene& s, double radius, 
   }
   if (a.json) {
     json moves = json::array(), nodes = json::array(), edges = json::array();
-    for (auto mv : rep.moves) moves.push_back(mv == coverage::Move::Lap ? "lap" : mv == coverage::Move::Follow ? "follow" : "transit");
+    for (auto mv : rep.moves) moves.push_back(std::string(coverage::to_string(mv)));
     for (std::size_t i = 0; i < rep.nodes.size(); ++i) {
       const auto& n = rep.nodes[i];
       nodes.push_back({{"id", i}, {"kind", std::string(coverage::to_string(n.kind))}, {"at", {n.at.x(), n.at.y()}},
@@ -544,6 +547,7 @@ void run_cover(const CoverArgs& a) {
   o.order = a.order == "dfs" ? coverage::CellOrder::DepthFirst : coverage::CellOrder::Optimised;
   o.transit = a.transit == "decomposition" ? coverage::Transit::Decomposition : coverage::Transit::Shortest;
   o.pattern = *coverage::parse_pattern(a.pattern);
+  o.min_turn_radius = a.min_turn_radius;
   if (o.pattern != coverage::Pattern::Boustrophedon) {
     if (a.angle != "auto") throw InputError("--angle: only the boustrophedon pattern has a sweep direction");
     if (a.order != "optimised" || a.transit != "shortest")
@@ -572,7 +576,7 @@ void run_cover(const CoverArgs& a) {
     for (std::size_t i = 0; i < rep.moves.size();) {
       std::size_t j = i;
       while (j < rep.moves.size() && rep.moves[j] == rep.moves[i]) ++j;
-      const char* kind = rep.moves[i] == coverage::Move::Lap ? "lap" : rep.moves[i] == coverage::Move::Follow ? "follow" : "transit";
+      const std::string kind(coverage::to_string(rep.moves[i]));
       w.line(std::vector<geometry::Point>(rep.path.begin() + static_cast<long>(i), rep.path.begin() + static_cast<long>(j + 1)),
              {{"kind", "coverage path"}, {"move", kind}, {"first_segment", i}});
       i = j;
@@ -581,7 +585,11 @@ void run_cover(const CoverArgs& a) {
   }
   if (a.json) {
     json moves = json::array();
-    for (auto mv : rep.moves) moves.push_back(mv == coverage::Move::Lap ? "lap" : mv == coverage::Move::Follow ? "follow" : "transit");
+    for (auto mv : rep.moves) moves.push_back(std::string(coverage::to_string(mv)));
+    json arcs = json::array();
+    for (const auto& arc : rep.arcs)
+      arcs.push_back({{"center", {arc.centre.x(), arc.centre.y()}}, {"radius", arc.radius}, {"turn_deg", arc.turn * 180 / std::numbers::pi},
+                      {"first", arc.first}, {"last", arc.last}, {"reverse", arc.reverse}});
     json centre = nullptr;
     if (o.pattern != coverage::Pattern::Boustrophedon) {
       const auto b = env.bbox();
@@ -598,6 +606,7 @@ void run_cover(const CoverArgs& a) {
                              {"samples", m.samples}}},
                 {"target_area", rep.target_area}, {"unreachable_area", rep.unreachable_area}, {"cspace_error", rep.cspace_error},
                 {"rounding_detours", rep.rounding_detours}, {"touch_ups", rep.touch_ups},
+                {"min_turn_radius", rep.min_turn_radius}, {"arcs", arcs}, {"shortened_laps", rep.shortened_laps}, {"skipped", rep.skipped}, {"unreached", rep.unreached}, {"cusps", rep.cusps},
                 {"bound", {{"value", rep.bound}, {"diameter", rep.diameter}, {"perimeter", rep.perimeter},
                            {"formula", "D^2/w + 4 D (N_cp + N_ob) + 5 P_total - 4 D"}}},
                 {"path", points_json(rep.path)}, {"moves", moves}});
@@ -612,6 +621,10 @@ void run_cover(const CoverArgs& a) {
             << rep.laps << " laps, " << rep.turns << " turns (" << rep.sharp_turns << " over 15 degrees), " << rep.cells << " cells, " << rep.critical_points << " critical points";
   if (rep.touch_ups > 0) std::cout << ", " << rep.touch_ups << " touch-ups";
   std::cout << "\n";
+  if (rep.min_turn_radius > 0)
+    std::cout << "drivable with turning radius " << geometry::format_number(rep.min_turn_radius) << ": " << rep.arcs.size()
+              << " arcs, every one certified; " << rep.cusps.size() << " changes of direction (reversing); " << rep.shortened_laps << " laps cut back to make room for a turn, " << rep.skipped
+              << " laps or wall runs out of reach, " << rep.unreached << " uncovered places out of reach\n";
   std::cout << "covered " << geometry::format_number(std::round(m.covered_fraction * 10000) / 100) << "% of the configuration space ("
             << geometry::format_number(rep.target_area) << " m2), overlap " << geometry::format_number(std::round(m.overlap * 10000) / 100)
             << "%, length / (area / width) = " << geometry::format_number(std::round(m.efficiency * 1000) / 1000);
@@ -697,6 +710,8 @@ void add_decompose_commands(CLI::App& app) {
     add_json_flag(cmd, a->json, "Machine-readable output on stdout");
     cmd->add_option("--svg", a->svg, "Draw the configuration space and the coverage path to this SVG file");
     cmd->add_option("--geojson", a->geojson, "Also write the environment and the path (a LineString per run of laps, follows or transits) as GeoJSON");
+    cmd->add_option("--min-turn-radius", a->min_turn_radius, "A robot that cannot turn in place: every turn an arc of at least this radius, forward only (Dubins curves; laps cut back where a turn needs room)")
+        ->check(number_in(0, geometry::kMaxCoordinate));
     cmd->add_flag("--online", a->online, "The robot does not know the map: it senses critical points with a range ring and builds the Reeb graph as it covers (6.2.4; --angle auto means 0)");
     cmd->add_option("--sensors", a->sensors, "--online: range sensors on the ring (a multiple of 4)")->capture_default_str();
     cmd->add_option("--range", a->range, "--online: the sensors' maximum range (default 10 r)");

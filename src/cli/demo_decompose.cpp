@@ -101,6 +101,19 @@ void demo_coverage(DemoContext& ctx) {
   render::draw_configuration_space(cc, geometry::ConfigurationSpace(env, 0.25));
   coverage::draw_coverage(cc, rep);
   ctx.figure("decompose-coverage.svg", cc.str(), "Coverage path of a robot of radius 0.25 in its configuration space");
+  // The same robot unable to turn in place: every turn an arc of radius >= 0.4.
+  o.angle_deg = 0.0, o.min_turn_radius = 0.4;
+  const auto car = coverage::plan_coverage(env, o);
+  const auto mc = coverage::measure_coverage(env, car);
+  R.result("The same robot unable to turn in place (turning radius 0.4, Dubins curves, reversing where no forward curve fits): length " +
+           format_number(car.length) + ", " + std::to_string(car.arcs.size()) + " arcs, " + std::to_string(car.cusps.size()) + " changes of direction, " +
+           std::to_string(car.shortened_laps) + " laps cut back for a turn, " + format_number(std::round(mc.covered_fraction * 1000) / 10) +
+           "% covered; every arc certified 0.25 away from the obstacles (the capsule around each chord that holds it).");
+  render::SvgCanvas cd(render::scene_box(field));
+  render::draw_scene(cd, field);
+  render::draw_configuration_space(cd, geometry::ConfigurationSpace(env, 0.25));
+  coverage::draw_coverage(cd, car);
+  ctx.figure("coverage-drivable.svg", cd.str(), "Coverage by a robot with turning radius 0.4: arcs, laps cut back at the walls");
 }
 
 }  // namespace preimage::cli

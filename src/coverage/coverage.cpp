@@ -63,6 +63,16 @@ double min_disc_diameter(std::vector<Point> pts) {
   return 2 * std::sqrt(d.r2);
 }
 
+std::string_view to_string(Move m) {
+  switch (m) {
+    case Move::Lap: return "lap";
+    case Move::Follow: return "follow";
+    case Move::Transit: return "transit";
+    case Move::Turn: return "turn";
+  }
+  return "?";
+}
+
 namespace {
 
 using detail::Planning;
@@ -171,13 +181,15 @@ CoverageReport plan_at(const Planning& P, const BoustrophedonDecomposition& b, d
   return rep;
 }
 
+}  // namespace
+
 // Boundary following, straightened (issue 49: a robot slows down at every turn, and most
 // of the turns were the 1 cm jogs of walls): within a run of follow moves, a point is
 // skipped when the straight segment past it is certified (inside the component, r from
 // every obstacle: exact) and no skipped point lies more than w/8 from it, so corners of
 // the room are still followed and only jogs go. Every segment it makes is certified by the
 // same test as finish_path's.
-void straighten_follows(const Planning& P, detail::Polyline& path) {
+void detail::straighten_follows(const Planning& P, Polyline& path) {
   const double tol = P.w / 8;
   auto certified = [&](const Point& a, const Point& z) {
     return P.index.visible(a, z) && (P.cs.radius() == 0 || P.cs.admits(a, z));
@@ -216,47 +228,55 @@ void straighten_follows(const Planning& P, detail::Polyline& path) {
   path = std::move(out);
 }
 
-// Touch-ups, after every pattern: what its laps left on the raster of the component (a
-// sliver between two offset rings, a corner no front reached) is visited point by point by
-// shortest transits, the largest uncovered patches first, until at most kTouchUpLeft of the
-// samples is left. A touch-up point is a sample centre in the component, so the robot's
-// centre may stand there; it covers the samples within w/2 of it.
-constexpr double kTouchUpLeft = 1e-3;
-
-// The pattern's path (certified by finish_path), straightened, then touched up; only the
-// touch-ups' transits are certified again.
-void touch_up(const Planning& P, CoverageReport& rep) {
-  if (rep.path.empty()) return;
-  detail::Polyline path;
-  path.points = std::move(rep.path), path.moves = std::move(rep.moves);
-  straighten_follows(P, path);
-  const std::size_t certified = path.points.size() - 1;
-  const double half = P.w / 2;
-  const detail::CoverageRaster R(P.E, P.index, P.w, 0);
-  std::vector<char> open(R.target.size(), 0);
-  std::size_t total = 0, left = 0;
+std::vector<std::vector<std::size_t>> detail::uncovered_patches(const CoverageRaster& R, const Polyline& path, double w, std::vector<char>& open,
+                                                                std::size_t& left, std::size_t& allowed) {
+  const double half = w / 2;
+  open.assign(R.target.size(), 0);
+  std::size_t total = 0;
+  left = 0;
   for (std::size_t id = 0; id < R.target.size(); ++id) total += R.target[id], open[id] = R.target[id];
   for (std::size_t seg = 0; seg + 1 < std::max<std::size_t>(path.points.size(), 2); ++seg)
     R.capsule(path.points[seg], path.points[std::min(seg + 1, path.points.size() - 1)], half, half, [&](std::size_t id, bool) { open[id] = 0; });
   for (char o : open) left += o;
-  const auto allowed = static_cast<std::size_t>(kTouchUpLeft * static_cast<double>(total));
+  allowed = static_cast<std::size_t>(kTouchUpLeft * static_cast<double>(total));
   // Patches: 4-connected uncovered samples, largest first.
   std::vector<std::vector<std::size_t>> patches;
-  {
-    std::vector<char> seen(open.size(), 0);
-    for (std::size_t id = 0; id < open.size(); ++id) {
-      if (!open[id] || seen[id]) continue;
-      std::vector<std::size_t> patch{id};
-      seen[id] = 1;
-      for (std::size_t k = 0; k < patch.size(); ++k) {
-        const std::size_t c = patch[k], i = c % R.nx, j = c / R.nx;
-        for (const std::size_t n : {i > 0 ? c - 1 : c, i + 1 < R.nx ? c + 1 : c, j > 0 ? c - R.nx : c, j + 1 < R.ny ? c + R.nx : c})
-          if (open[n] && !seen[n]) seen[n] = 1, patch.push_back(n);
-      }
-      patches.push_back(std::move(patch));
+  std::vector<char> seen(open.size(), 0);
+  for (std::size_t id = 0; id < open.size(); ++id) {
+    if (!open[id] || seen[id]) continue;
+    std::vector<std::size_t> patch{id};
+    seen[id] = 1;
+    for (std::size_t k = 0; k < patch.size(); ++k) {
+      const std::size_t c = patch[k], i = c % R.nx, j = c / R.nx;
+      for (const std::size_t n : {i > 0 ? c - 1 : c, i + 1 < R.nx ? c + 1 : c, j > 0 ? c - R.nx : c, j + 1 < R.ny ? c + R.nx : c})
+        if (open[n] && !seen[n]) seen[n] = 1, patch.push_back(n);
     }
-    std::stable_sort(patches.begin(), patches.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
+    patches.push_back(std::move(patch));
   }
+  std::stable_sort(patches.begin(), patches.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
+  return patches;
+}
+
+namespace {
+
+// Touch-ups, after every pattern: what its laps left on the raster of the component (a
+// sliver between two offset rings, a corner no front reached) is visited point by point by
+// shortest transits, the largest uncovered patches first, until at most kTouchUpLeft of the
+// samples is left. A touch-up point is a sample centre in the component, so the robot's
+// centre may stand there; it covers the samples within w/2 of it. The pattern's path
+// (certified by finish_path), straightened, then touched up; only the touch-ups' transits
+// are certified again.
+void touch_up(const Planning& P, CoverageReport& rep) {
+  if (rep.path.empty()) return;
+  detail::Polyline path;
+  path.points = std::move(rep.path), path.moves = std::move(rep.moves);
+  detail::straighten_follows(P, path);
+  const std::size_t certified = path.points.size() - 1;
+  const double half = P.w / 2;
+  const detail::CoverageRaster R(P.E, P.index, P.w, 0);
+  std::vector<char> open;
+  std::size_t left = 0, allowed = 0;
+  const auto patches = detail::uncovered_patches(R, path, P.w, open, left, allowed);
   std::vector<Point> points;
   for (const auto& patch : patches) {
     if (left <= allowed) break;
@@ -396,6 +416,8 @@ double checked_width(const CoverageOptions& o) {
 CoverageReport plan_in_frame(const Environment& env, const CoverageOptions& o) {
   const double r = o.robot_radius;
   const double w = checked_width(o);
+  if (!(o.min_turn_radius >= 0) || !std::isfinite(o.min_turn_radius))
+    throw InputError("--min-turn-radius: must be a finite number >= 0");
   // A path of more than about kMaxLapsAcross laps across the environment is beyond reason
   // (memory grows with the laps): refuse it up front rather than run for hours.
   {
@@ -405,6 +427,10 @@ CoverageReport plan_in_frame(const Environment& env, const CoverageOptions& o) {
       throw InputError("--width " + geometry::format_number(w) + ": the environment is " + geometry::format_number(across) +
                        " across, which needs more than " + geometry::format_number(kMaxLapsAcross) +
                        " laps; the tool width must be at least 1e-5 of the environment's diameter");
+    if (2 * o.min_turn_radius > across)
+      throw InputError("--min-turn-radius " + geometry::format_number(o.min_turn_radius) + ": a U-turn needs " +
+                       geometry::format_number(2 * o.min_turn_radius) + " across, and the whole environment is " + geometry::format_number(across) +
+                       " across");
   }
   const ConfigurationSpace cs(env, r);
   if (cs.components().empty())
@@ -433,7 +459,10 @@ CoverageReport plan_in_frame(const Environment& env, const CoverageOptions& o) {
                        : o.pattern == Pattern::Brushfire   ? detail::plan_brushfire(P)
                        : o.pattern == Pattern::Wavefront   ? detail::plan_wavefront(P)
                                                            : detail::plan_pattern(P);
-  touch_up(P, rep);
+  if (o.min_turn_radius > 0)
+    detail::make_drivable(P, rep, o.min_turn_radius);  // straightened, driven, touched up with curves
+  else
+    touch_up(P, rep);
   rep.width = w, rep.robot_radius = r;
   rep.target_area = E.area();
   for (std::size_t k = 0; k < cs.components().size(); ++k)
@@ -483,6 +512,10 @@ CoverageReport plan_coverage(const Environment& env, const CoverageOptions& o) {
       throw;  // not about the start: the same error as at the origin
     }
     const std::size_t bad = frame.to_input_certified(rep.path, clear);
+    // Arcs were certified in the local frame, whose environment is the input's translated
+    // exactly (LocalFrame), so the same arcs moved back keep r; their centres are given in
+    // input coordinates (rounded: a description, the chords are what was certified here).
+    for (CoverageArc& a : rep.arcs) a.centre = frame.to_input(a.centre);
     if (bad == rep.path.size()) {
       rep.cspace_error += extra;
       break;

@@ -64,4 +64,22 @@ CoverageReport plan_brushfire(const Planning& P);
 /// the start, w apart (wavefront_coverage.cpp).
 CoverageReport plan_wavefront(const Planning& P);
 
+/// Boundary following straightened: within a run of follow moves, a point is skipped when
+/// the straight segment past it is certified and no skipped point is more than w/8 off it.
+void straighten_follows(const Planning& P, Polyline& path);
+
+/// Touch-ups stop when at most this fraction of the component's raster samples is left.
+inline constexpr double kTouchUpLeft = 1e-3;
+
+struct CoverageRaster;
+/// The samples of R the tool (width w) leaves uncovered along `path` (open[id] = 1), in
+/// 4-connected patches, largest first; `left` of them, of which `allowed` may stay.
+std::vector<std::vector<std::size_t>> uncovered_patches(const CoverageRaster& R, const Polyline& path, double w, std::vector<char>& open,
+                                                        std::size_t& left, std::size_t& allowed);
+
+/// The path made drivable by a robot with turning radius R: laps and long segments kept,
+/// corners turned by certified Dubins curves, laps cut back where the turn needs room,
+/// what cannot be reached skipped and counted (drivable.cpp).
+void make_drivable(const Planning& P, CoverageReport& rep, double R);
+
 }  // namespace preimage::coverage::detail

@@ -9,19 +9,21 @@ namespace preimage::coverage {
 void draw_coverage(render::SvgCanvas& c, const CoverageReport& rep) {
   if (rep.path.size() < 2) return;
   const render::Style lap{"none", "#d93025", 1.6, 0.9, ""}, follow{"none", "#1a73e8", 1.6, 0.9, ""}, transit{"none", "#188038", 2.2, 0.95, "6 4"};
+  const render::Style turn{"none", "#9334e6", 2.2, 0.95, ""};
   // Runs of one kind of move as one polyline each.
   std::size_t i = 0;
   while (i < rep.moves.size()) {
     std::size_t j = i;
     while (j < rep.moves.size() && rep.moves[j] == rep.moves[i]) ++j;
     const std::vector<Point> run(rep.path.begin() + static_cast<long>(i), rep.path.begin() + static_cast<long>(j + 1));
-    const auto& st = rep.moves[i] == Move::Lap ? lap : rep.moves[i] == Move::Follow ? follow : transit;
+    const auto& st = rep.moves[i] == Move::Lap ? lap : rep.moves[i] == Move::Follow ? follow : rep.moves[i] == Move::Turn ? turn : transit;
     c.path(run, st, "", 90, 4, i);
     i = j;
   }
   c.legend("laps along the slice", lap);
   c.legend("boundary following between laps", follow);
-  c.legend("transits (shortest collision-free paths)", transit);
+  c.legend(rep.min_turn_radius > 0 ? "transits (straight parts of turns)" : "transits (shortest collision-free paths)", transit);
+  if (rep.min_turn_radius > 0) c.legend("arcs of the turning radius (certified)", turn);
   const render::Style start{"#ffffff", "#202124", 2.5, 1.0, ""}, end{"#202124", "#202124", 1.0, 1.0, ""};
   c.point(rep.path.front(), 6, start, "start");
   c.point(rep.path.back(), 5, end, "end");

@@ -71,25 +71,28 @@ namespace {
 
 using ExactSegment = ExactKernel::Segment_2;
 
-// Distance from p to segment ab in double (a clamped projection: well-conditioned even for
-// a segment of zero length).
-double point_segment(const Point& p, const Point& a, const Point& b) {
+// Squared distance from p to segment ab in double (a clamped projection: well-conditioned
+// even for a segment of zero length).
+double point_segment2(const Point& p, const Point& a, const Point& b) {
   const double vx = b.x() - a.x(), vy = b.y() - a.y(), wx = p.x() - a.x(), wy = p.y() - a.y();
   const double l2 = vx * vx + vy * vy;
   const double t = l2 > 0 ? std::clamp((wx * vx + wy * vy) / l2, 0.0, 1.0) : 0.0;
-  return std::hypot(wx - t * vx, wy - t * vy);
+  const double dx = wx - t * vx, dy = wy - t * vy;
+  return dx * dx + dy * dy;
 }
 
 // Is segment pq at distance >= r from workspace edge e? Crossing segments are at distance
 // 0 (exact orientations); otherwise the distance is the least of the four endpoint-to-
-// segment distances, filtered in double, decided in exact (rational) arithmetic when the
-// filter cannot tell.
+// segment distances, filtered in double (squared: no square roots in the hot loop; the
+// slack dwarfs their rounding), decided in exact (rational) arithmetic when the filter
+// cannot tell.
 bool clear_of(const Environment& env, std::uint32_t e, const Point& p, const Point& q, double r, double slack) {
   const Point &a = env.vertex(e), &b = env.vertex(env.next(e));
   if (CGAL::do_intersect(Kernel::Segment_2(p, q), Kernel::Segment_2(a, b))) return false;
-  const double d = std::min({point_segment(p, a, b), point_segment(q, a, b), point_segment(a, p, q), point_segment(b, p, q)});
-  if (d >= r + slack) return true;
-  if (d + slack < r) return false;
+  const double d2 = std::min({point_segment2(p, a, b), point_segment2(q, a, b), point_segment2(a, p, q), point_segment2(b, p, q)});
+  const double hi = r + slack, lo = r - slack;
+  if (d2 >= hi * hi) return true;
+  if (lo > 0 && d2 < lo * lo) return false;
   const ExactFT exact = CGAL::squared_distance(ExactSegment(to_exact(p), to_exact(q)), ExactSegment(env.exact_vertex(e), env.exact_vertex(env.next(e))));
   return exact >= ExactFT(r) * ExactFT(r);
 }

@@ -295,17 +295,18 @@ PYBIND11_MODULE(preimage, m) {
      "target point the keeping observer points ((n, 2) array); with an observer too, escape_steps (None: kept forever)");
 
   m.def("cover", [](const geometry::Environment& env, double radius, std::optional<double> width, std::optional<double> angle,
-                    const py::object& start) {
+                    const py::object& start, double min_turn_radius) {
     coverage::CoverageOptions o;
     o.robot_radius = radius;
     o.width = width.value_or(0.0);
     if (!width && radius == 0) throw InputError("width: not given, and without a robot radius it has no default of 2r");
     o.angle_deg = angle;
     if (!start.is_none()) o.start = to_point(start, "start");
+    o.min_turn_radius = min_turn_radius;
     const auto rep = coverage::plan_coverage(env, o);
     const auto met = coverage::measure_coverage(env, rep);
     py::list moves;
-    for (auto mv : rep.moves) moves.append(mv == coverage::Move::Lap ? "lap" : mv == coverage::Move::Follow ? "follow" : "transit");
+    for (auto mv : rep.moves) moves.append(std::string(coverage::to_string(mv)));
     py::dict d;
     d["path"] = to_array(rep.path);
     d["moves"] = moves;
@@ -316,9 +317,14 @@ PYBIND11_MODULE(preimage, m) {
     d["turns_over_15_deg"] = rep.sharp_turns;
     d["rotation_deg"] = rep.rotation_deg;
     d["touch_ups"] = rep.touch_ups;
+    d["arcs"] = rep.arcs.size();
+    d["shortened_laps"] = rep.shortened_laps;
+    d["skipped"] = rep.skipped;
     d["covered_fraction"] = met.covered_fraction;
     d["overlap"] = met.overlap;
     return d;
   }, py::arg("environment"), py::arg("radius") = 0.0, py::arg("width") = py::none(), py::arg("angle") = py::none(),
-     py::arg("start") = py::none(), "A boustrophedon coverage path (certified); angle None tries candidates and keeps the shortest");
+     py::arg("start") = py::none(), py::arg("min_turn_radius") = 0.0,
+     "A boustrophedon coverage path (certified); angle None tries candidates and keeps the shortest; min_turn_radius > 0: "
+     "drivable by a robot that cannot turn in place (moves 'turn' are chords of certified arcs)");
 }

@@ -321,3 +321,23 @@ add_test(NAME cli.pattern_completeness COMMAND ${Python_EXECUTABLE} ${CMAKE_CURR
          $<TARGET_FILE:preimage_cli> ${CMAKE_CURRENT_BINARY_DIR}/completeness-scratch
          ${FLOORPLANS}/house_expo_room_0000.json ${FLOORPLANS}/house_expo_room_1451.json
          ${FLOORPLANS}/office_mlstruct_302.json ${FLOORPLANS}/office_mlstruct_848.json)
+
+# Issue 49: a robot that cannot turn in place (--min-turn-radius): every arc certified, the
+# floor still covered, the arcs in --json, far from the origin too; bad radii refused.
+cli_test(cover_min_turn_radius_gallery 0 "drivable with turning radius 0\\.3: [0-9]+ arcs, every one certified" -
+         cover ${EXAMPLES}/gallery.json --width 0.5 --radius 0.25 --angle 0 --min-turn-radius 0.3)
+cli_test(cover_min_turn_radius_covers_the_floor 0 "covered 99\\.9[0-9]*% of the configuration space" -
+         cover ${EXAMPLES}/gallery.json --width 0.5 --radius 0.25 --angle 0 --min-turn-radius 0.3)
+add_test(NAME cli.cover_min_turn_radius_json COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/cli/json_expect.py
+         "d['min_turn_radius'] == 0.3 and len(d['arcs']) > 50 and all(a['radius'] == 0.3 for a in d['arcs']) and 'turn' in d['moves'] and d['metrics']['covered_fraction'] > 0.995"
+         -- $<TARGET_FILE:preimage_cli> cover ${EXAMPLES}/gallery.json --width 0.5 --radius 0.25 --angle 0 --min-turn-radius 0.3 --json)
+# A turning radius larger than the gaps: the robot reverses where no forward curve fits.
+cli_test(cover_min_turn_radius_reverses_where_needed 0 "drivable with turning radius 1: [0-9]+ arcs, every one certified. [1-9][0-9]* changes of direction" -
+         cover ${EXAMPLES}/gallery.json --width 0.5 --radius 0.25 --angle 0 --min-turn-radius 1)
+cli_test(cover_min_turn_radius_far_from_the_origin 0 "covered 99\\.9[0-9]*% of the configuration space \\(84\\.0420140764 m2\\)" -
+         cover ${FIX}/scenes/room_with_hole_at_1e10.json --radius 0.25 --min-turn-radius 0.4)
+cli_test(cover_min_turn_radius_too_large fail "--min-turn-radius 9: a U-turn needs 18 across, and the whole environment is 14\\.4222051019 across" -
+         cover ${EXAMPLES}/gallery.json --width 0.5 --min-turn-radius 9)
+cli_test(cover_min_turn_radius_negative fail "--min-turn-radius" - cover ${EXAMPLES}/gallery.json --width 0.5 --min-turn-radius -1)
+cli_test(cover_min_turn_radius_not_online fail "--min-turn-radius: not with --online" -
+         cover ${EXAMPLES}/gallery.json --radius 0.25 --online --min-turn-radius 0.5)

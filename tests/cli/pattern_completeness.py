@@ -6,7 +6,12 @@ in, checked independently of the library: shapely (GEOS) erodes the plan by r (a
 segments a quarter), buffers the path by w/2 and compares exact polygon areas. On the given
 floor plans at W = 0.3 and 0.5 (r = W/2; the offices at 0.5 only, the wave front's slowest
 case), on 6 random rooms with 2-5 holes, and with the variable-slice patterns' centre
-outside the free space (in a hole, outside the boundary)."""
+outside the free space (in a hole, outside the boundary).
+
+A robot that cannot turn in place (--min-turn-radius) is held to the same floor on the house
+plans and the random rooms, and every arc it drives — the exact circle about the arc's
+centre, 32 points per chord — must keep r from the walls (numpy distances to every wall
+segment) and start inside the plan."""
 import json
 import math
 import os
@@ -14,6 +19,7 @@ import random
 import subprocess
 import sys
 
+import numpy
 from shapely.geometry import LineString, Point, Polygon, box
 from shapely.affinity import rotate
 
@@ -57,6 +63,33 @@ def covered(path, scene, w, pattern, extra=()):
     pts = d["path"]
     comp = min(components(cspace(scene_obj, r)), key=lambda g: g.distance(Point(pts[0])))
     tool = LineString(pts).buffer(w / 2, resolution=16) if len(pts) > 1 else Point(pts[0]).buffer(w / 2)
+    if d.get("arcs"):
+        # Distances to every wall segment (numpy, brute force): the circle points keep r, and
+        # each arc starts inside the plan (so, never nearer than r to a wall, stays inside).
+        e = scene_obj["environment"]
+        plan = Polygon(e["boundary"], e.get("obstacles", []))
+        rings = [e["boundary"]] + e.get("obstacles", [])
+        A = numpy.array([p for ring in rings for p in ring], dtype=float)
+        B = numpy.array([p for ring in rings for p in ring[1:] + ring[:1]], dtype=float)
+        V = B - A
+        L2 = numpy.maximum((V * V).sum(axis=1), 1e-300)
+        for a in d["arcs"]:
+            cx, cy = a["center"]
+            if not plan.contains(Point(pts[a["first"]])):
+                return None, "arc about (%.9g, %.9g) starts outside the plan" % (cx, cy)
+            ts = []
+            for k in range(a["first"], a["last"]):
+                t0 = math.atan2(pts[k][1] - cy, pts[k][0] - cx)
+                dt = math.remainder(math.atan2(pts[k + 1][1] - cy, pts[k + 1][0] - cx) - t0, 2 * math.pi)
+                ts.extend(t0 + dt * j / 32 for j in range(33))
+            ts = numpy.array(ts)
+            Q = numpy.stack([cx + a["radius"] * numpy.cos(ts), cy + a["radius"] * numpy.sin(ts)], axis=1)
+            W = Q[:, None, :] - A[None, :, :]
+            t = numpy.clip((W * V[None, :, :]).sum(axis=2) / L2[None, :], 0, 1)
+            D = numpy.sqrt(((W - t[:, :, None] * V[None, :, :]) ** 2).sum(axis=2)).min(axis=1)
+            if D.min() < r - 1e-9:
+                q = Q[D.argmin()]
+                return None, "arc about (%.9g, %.9g) passes %.9g from a wall at (%.9g, %.9g)" % (cx, cy, D.min(), q[0], q[1])
     return comp.intersection(tool).area / comp.area, d.get("touch_ups", 0)
 
 
@@ -93,6 +126,15 @@ for seed in range(6):
     for pattern in ["spiral", "concentric", "spike", "squarel"]:
         for c in [(inside_hole.x, inside_hole.y), (-3.0, -2.0)]:
             cases.append((f, 0.4, pattern, ("--center", "%.9g,%.9g" % c)))
+
+# Curvature-limited robots: turning radius W and 2W on the house plans, 0.6 in the rooms.
+for plan in plans:
+    if "mlstruct" not in plan and "office" not in plan:
+        for w in (0.3, 0.5):
+            for R in (w, 2 * w):
+                cases.append((plan, w, "boustrophedon", ("--min-turn-radius", str(R))))
+for seed in range(6):
+    cases.append((os.path.join(work, "random_room_%d.json" % seed), 0.4, "boustrophedon", ("--min-turn-radius", "0.6")))
 
 failures = 0
 worst = 1.0

@@ -2,8 +2,8 @@
 """translation_invariance.py PREIMAGE SCENE WORKDIR
 
 Runs every geometric command (decompose with each method, gvd, plan, cover with each
-pattern and online, visibility, visibility-graph) on a real floor plan at the origin and
-shifted by 5e5, 4e6, 2e7 (UTM, Web Mercator) and 1e10, and checks that every answer is the
+pattern, online and with a turning radius, visibility, visibility-graph) on a real floor
+plan at the origin and shifted by 5e5, 4e6, 2e7 (UTM, Web Mercator) and 1e10, and checks that every answer is the
 origin's, moved: the same counts, cells and structure, areas and lengths equal, and every
 coordinate equal to the origin's plus the shift, within what the shifted coordinates
 resolve. A shift to 1e12 must be refused with a clear error (the supported range ends
@@ -62,6 +62,7 @@ COMMANDS = {
 for pattern in ["boustrophedon", "spiral", "concentric", "spike", "squarel", "brushfire", "wavefront"]:
     COMMANDS["cover " + pattern] = (lambda pat: lambda o: ["cover", "--radius", "0.25", "--pattern", pat, "--start", pt(START, o)])(pattern)
 COMMANDS["cover boustrophedon 30"] = lambda o: ["cover", "--radius", "0.25", "--angle", "30", "--start", pt(START, o)]
+COMMANDS["cover min-turn-radius"] = lambda o: ["cover", "--radius", "0.25", "--angle", "0", "--min-turn-radius", "0.3", "--start", pt(START, o)]
 COMMANDS["cover online"] = lambda o: ["cover", "--radius", "0.25", "--online", "--start", pt(START, o)]
 
 IGNORED = {"scene"}

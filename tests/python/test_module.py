@@ -50,6 +50,16 @@ def test_cover_matches_cli():
     assert r["covered_fraction"] == pytest.approx(c["metrics"]["covered_fraction"])
 
 
+def test_cover_with_a_turning_radius_matches_cli():
+    scene = preimage.load_scene(GALLERY)
+    r = preimage.cover(scene.environment, radius=0.2, angle=0, start=scene.start, min_turn_radius=0.4)
+    c = cli_json("cover", GALLERY, "--radius", "0.2", "--angle", "0", "--min-turn-radius", "0.4")
+    assert r["length"] == pytest.approx(c["length"], rel=1e-12)
+    assert r["moves"] == c["moves"] and "turn" in r["moves"]
+    assert r["arcs"] == len(c["arcs"]) > 0
+    assert (r["shortened_laps"], r["skipped"]) == (c["shortened_laps"], c["skipped"])
+
+
 @pytest.mark.parametrize("method", ["trapezoidal", "boustrophedon"])
 def test_decompose_matches_cli(method):
     env = preimage.load_scene(GALLERY).environment

@@ -58,10 +58,24 @@ struct CoverageOptions {
   Transit transit = Transit::Shortest;
   Pattern pattern = Pattern::Boustrophedon;
   std::optional<Point> centre;       // of the variable-slice patterns; default: the middle of the bounding box
+  // A robot that cannot turn in place (car-like): every turn an arc of radius >= this,
+  // forward only (turn_model.hpp). 0: turns in place.
+  double min_turn_radius = 0;
 };
 
-/// What a path segment is doing (for figures and metrics).
-enum class Move : std::uint8_t { Lap, Follow, Transit };
+/// What a path segment is doing (for figures and metrics); Turn: a chord of an arc a
+/// curvature-limited robot drives (CoverageReport::arcs).
+enum class Move : std::uint8_t { Lap, Follow, Transit, Turn };
+std::string_view to_string(Move m);
+
+/// An arc of a curvature-limited path: path points first..last lie on it (the chords are
+/// the path's segments); it turns by `turn` radians (positive: left) about `centre`.
+struct CoverageArc {
+  Point centre;
+  double radius = 0, turn = 0;
+  std::size_t first = 0, last = 0;
+  bool reverse = false;  // driven backwards (the heading still changes by `turn`)
+};
 
 struct CoverageReport {
   // Input coordinates, certified (see above). At angles that are not quarter turns the path
@@ -75,9 +89,23 @@ struct CoverageReport {
   // (a raster of the component at w/8; until at most 0.1 % of its samples is left).
   std::size_t touch_ups = 0;
   double angle = 0;          // sweep direction used
+  // With a minimum turning radius: the arcs (every one certified, not only its chords: the
+  // capsule around each chord that holds the arc keeps r from every obstacle), laps whose
+  // ends were cut back so the turn fits in the room, and laps and points of the plan the
+  // robot could not reach forward with its turning radius (left out; measure_coverage says
+  // what that costs).
+  double min_turn_radius = 0;
+  std::vector<CoverageArc> arcs;
+  std::size_t shortened_laps = 0, skipped = 0;
+  std::size_t unreached = 0;  // uncovered places (touch-up points) no curve reaches: given up
+  // Path points where the robot stops and changes its direction of travel: it drives
+  // forward from the first point, backwards after the first cusp, and so on.
+  std::vector<std::size_t> cusps;
   double width = 0, robot_radius = 0;
   std::size_t laps = 0, cells = 0, critical_points = 0;
-  std::size_t turns = 0, sharp_turns = 0;  // heading changes over 1 degree, and over 15 degrees
+  // Heading changes over 1 degree, and over 15 degrees; a curvature-limited path changes
+  // heading only along arcs, so there each arc (a run turning one way) is one turn.
+  std::size_t turns = 0, sharp_turns = 0;
   double length = 0, transit_length = 0, rotation_deg = 0;  // rotation: sum of heading changes
   std::vector<std::uint32_t> cell_order;  // cells in the order covered
   std::vector<std::uint8_t> sweeps;       // per covered cell: 0..3 (bit 0: from the right end, bit 1: first lap down)
