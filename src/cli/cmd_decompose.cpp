@@ -443,6 +443,7 @@ struct CoverArgs {
   double range = 0, noise = 0;
   std::uint64_t seed = 1;
   double min_turn_radius = 0;
+  double turn_cost = 0.1;
 };
 
 // cover --online: the robot does not know the map (6.2.4).
@@ -548,6 +549,7 @@ void run_cover(const CoverArgs& a) {
   o.transit = a.transit == "decomposition" ? coverage::Transit::Decomposition : coverage::Transit::Shortest;
   o.pattern = *coverage::parse_pattern(a.pattern);
   o.min_turn_radius = a.min_turn_radius;
+  o.turn_cost = a.turn_cost;
   if (o.pattern != coverage::Pattern::Boustrophedon) {
     if (a.angle != "auto") throw InputError("--angle: only the boustrophedon pattern has a sweep direction");
     if (a.order != "optimised" || a.transit != "shortest")
@@ -712,6 +714,8 @@ void add_decompose_commands(CLI::App& app) {
     cmd->add_option("--geojson", a->geojson, "Also write the environment and the path (a LineString per run of laps, follows or transits) as GeoJSON");
     cmd->add_option("--min-turn-radius", a->min_turn_radius, "A robot that cannot turn in place: every turn an arc of at least this radius, forward only (Dubins curves; laps cut back where a turn needs room)")
         ->check(number_in(0, geometry::kMaxCoordinate));
+    cmd->add_option("--turn-cost", a->turn_cost, "Metres of path a turn is worth: runs of small turns round corners become fewer corners where that adds at most this much per turn saved (0: shortest transits)")
+        ->check(number_in(0, geometry::kMaxCoordinate))->capture_default_str();
     cmd->add_flag("--online", a->online, "The robot does not know the map: it senses critical points with a range ring and builds the Reeb graph as it covers (6.2.4; --angle auto means 0)");
     cmd->add_option("--sensors", a->sensors, "--online: range sensors on the ring (a multiple of 4)")->capture_default_str();
     cmd->add_option("--range", a->range, "--online: the sensors' maximum range (default 10 r)");

@@ -228,6 +228,81 @@ void detail::straighten_follows(const Planning& P, Polyline& path) {
   path = std::move(out);
 }
 
+// Bends merged (issue 49: most turns over 1 degree left were the chords of the
+// configuration space's arcs, about 5 degrees each, that transits and follow moves round
+// an obstacle's corner on). A run of small turns one way, outside laps, is replaced by the
+// tangent polygon of some of its segments: consecutive kept segments' lines meet outside
+// the run (away from the obstacle the run bends round), each new corner turning at most
+// kBendTurn, so a quarter turn takes 7 turns instead of 18. A new corner is kept only when
+// both segments to it are certified (inside the component, r from every obstacle: exact);
+// else fewer segments are merged, down to none, and only when the path it adds is at most
+// the turn cost (CoverageOptions::turn_cost, metres a turn is worth) per turn it saves:
+// with a turn cost of 0 transits stay shortest paths.
+constexpr double kBendTurn = 14 * std::numbers::pi / 180;
+
+void detail::merge_bends(const Planning& P, Polyline& path) {
+  const std::size_t n = path.points.size();
+  if (n < 3 || !(P.o.turn_cost > 0)) return;
+  auto certified = [&](const Point& a, const Point& z) {
+    return P.index.visible(a, z) && (P.cs.radius() == 0 || P.cs.admits(a, z));
+  };
+  const auto& q = path.points;
+  std::vector<double> h(n - 1);
+  for (std::size_t k = 0; k + 1 < n; ++k) h[k] = std::atan2(q[k + 1].y() - q[k].y(), q[k + 1].x() - q[k].x());
+  auto turn = [&](std::size_t a, std::size_t b) { return std::remainder(h[b] - h[a], 2 * std::numbers::pi); };
+  // Vertex k joins segments k - 1 and k; it may go when both are not laps and it turns
+  // less than kBendTurn, the same way as the run.
+  auto bendable = [&](std::size_t k, double sign) {
+    const double t = turn(k - 1, k);
+    return path.moves[k - 1] != Move::Lap && path.moves[k] != Move::Lap && std::fabs(t) < kBendTurn && t * sign > 0 &&
+           q[k] != q[k - 1] && q[k + 1] != q[k];
+  };
+  Polyline out;
+  out.points.push_back(q[0]);
+  std::size_t k = 1;
+  while (k + 1 < n) {
+    const double sign = turn(k - 1, k) >= 0 ? 1.0 : -1.0;
+    if (!bendable(k, sign)) {
+      out.append(q[k], path.moves[k - 1]);
+      ++k;
+      continue;
+    }
+    std::size_t j = k;  // the run: vertices k .. j, segments k - 1 .. j
+    while (j + 2 < n && bendable(j + 1, sign)) ++j;
+    // Greedy from segment c: the farthest segment e whose heading is within kBendTurn and
+    // whose line meets c's where both new segments are certified.
+    std::size_t c = k - 1;
+    Point at = q[k - 1];
+    while (c < j) {
+      std::size_t e = c + 1;
+      Point corner = q[c + 1];
+      for (std::size_t f = j; f > c + 1; --f) {
+        if (std::fabs(turn(c, f)) >= kBendTurn) continue;
+        // Lines of segments c and f: at + s (q[c+1] - q[c]) = q[f] + u (q[f+1] - q[f]).
+        const double dx = q[c + 1].x() - q[c].x(), dy = q[c + 1].y() - q[c].y();
+        const double ex = q[f + 1].x() - q[f].x(), ey = q[f + 1].y() - q[f].y();
+        const double den = dx * ey - dy * ex;
+        if (den == 0) continue;
+        const double s = ((q[f].x() - q[c].x()) * ey - (q[f].y() - q[c].y()) * ex) / den;
+        const Point x(q[c].x() + s * dx, q[c].y() + s * dy);
+        double before = dist(at, q[c + 1]);
+        for (std::size_t g = c + 1; g <= f; ++g) before += dist(q[g], q[g + 1]);
+        const double added = dist(at, x) + dist(x, q[f + 1]) - before;
+        if (added > P.o.turn_cost * static_cast<double>(f - c - 1)) continue;
+        if (certified(at, x) && certified(x, q[f + 1])) {
+          e = f, corner = x;
+          break;
+        }
+      }
+      out.append(corner, path.moves[c]);
+      at = corner, c = e;
+    }
+    k = j + 1;
+  }
+  out.append(q[n - 1], path.moves[n - 2]);
+  path = std::move(out);
+}
+
 std::vector<std::vector<std::size_t>> detail::uncovered_patches(const CoverageRaster& R, const Polyline& path, double w, std::vector<char>& open,
                                                                 std::size_t& left, std::size_t& allowed) {
   const double half = w / 2;
@@ -304,6 +379,11 @@ void touch_up(const Planning& P, CoverageReport& rep) {
   }
   rep.touch_ups = points.size();
   detail::finish_path(P, std::move(path), rep, certified);
+  // Then bends merged; every segment it makes is certified there.
+  path.points = std::move(rep.path), path.moves = std::move(rep.moves);
+  detail::merge_bends(P, path);
+  const std::size_t all = path.points.size();
+  detail::finish_path(P, std::move(path), rep, all);
 }
 
 // 6.2.1's pattern: the sweep direction given, or the two most promising candidates planned
@@ -418,6 +498,7 @@ CoverageReport plan_in_frame(const Environment& env, const CoverageOptions& o) {
   const double w = checked_width(o);
   if (!(o.min_turn_radius >= 0) || !std::isfinite(o.min_turn_radius))
     throw InputError("--min-turn-radius: must be a finite number >= 0");
+  if (!(o.turn_cost >= 0) || !std::isfinite(o.turn_cost)) throw InputError("--turn-cost: must be a finite number >= 0");
   // A path of more than about kMaxLapsAcross laps across the environment is beyond reason
   // (memory grows with the laps): refuse it up front rather than run for hours.
   {

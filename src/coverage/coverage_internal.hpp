@@ -68,6 +68,10 @@ CoverageReport plan_wavefront(const Planning& P);
 /// the straight segment past it is certified and no skipped point is more than w/8 off it.
 void straighten_follows(const Planning& P, Polyline& path);
 
+/// Runs of small turns one way outside laps (the chords of an arc) replaced by fewer
+/// corners, each turning less than 14 degrees, where the new segments are certified.
+void merge_bends(const Planning& P, Polyline& path);
+
 /// Touch-ups stop when at most this fraction of the component's raster samples is left.
 inline constexpr double kTouchUpLeft = 1e-3;
 

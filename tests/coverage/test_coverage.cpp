@@ -132,6 +132,7 @@ TEST(Coverage, TransitsAreShortestPaths) {
     for (double r : {0.0, 0.01 * size}) {
       CoverageOptions o;
       o.width = 0.05 * size, o.robot_radius = r, o.angle_deg = 0.0;
+      o.turn_cost = 0;  // no bends merged: the transits are shortest paths
       const auto rep = coverage::plan_coverage(env, o);
       const geometry::ConfigurationSpace cs(env, r);
       const Environment& E = cs.components()[*cs.component_of(rep.path.front())];
@@ -238,5 +239,27 @@ TEST(Coverage, HouseExpoFixtureStaysInsideTheConfigurationSpace) {
       for (std::optional<double> a : {std::optional<double>(0.0), std::optional<double>(90.0), std::optional<double>(45.0), std::optional<double>()})
         check(env, w, w / 2, a, std::string(name) + " r " + std::to_string(w / 2) + " at " + (a ? std::to_string(*a) : std::string("auto")), 120);
     }
+  }
+}
+
+// Issue 49: runs of small turns round corners (the chords of the configuration space's
+// arcs) become fewer corners, certified, each adding at most the turn cost per turn saved.
+TEST(Coverage, MergedBendsCostAtMostTheTurnCostPerVertexSaved) {
+  const Environment house = load_houseexpo("house_expo_room_0000.json");
+  for (const double w : {0.3, 0.5}) {
+    CoverageOptions o;
+    o.width = w, o.robot_radius = w / 2;
+    o.turn_cost = 0;
+    const auto hug = coverage::plan_coverage(house, o);
+    o.turn_cost = 0.1;
+    const auto merged = coverage::plan_coverage(house, o);
+    ASSERT_LT(merged.path.size(), hug.path.size());
+    const double saved = static_cast<double>(hug.path.size() - merged.path.size());
+    EXPECT_LE(merged.length, hug.length + 0.1 * saved + 1e-9) << "W " << w;
+    EXPECT_GE(merged.length, hug.length - 1e-9) << "W " << w;  // the corners go outwards
+    EXPECT_LT(static_cast<double>(merged.turns), 0.85 * static_cast<double>(hug.turns)) << "W " << w << ": " << merged.turns << " vs " << hug.turns;
+    EXPECT_LE(merged.sharp_turns, hug.sharp_turns) << "W " << w;
+    for (std::size_t i = 0; i + 1 < merged.path.size(); ++i)
+      EXPECT_TRUE(in_cspace(house, merged.path[i], merged.path[i + 1], w / 2)) << "W " << w << " segment " << i;
   }
 }

@@ -61,6 +61,10 @@ struct CoverageOptions {
   // A robot that cannot turn in place (car-like): every turn an arc of radius >= this,
   // forward only (turn_model.hpp). 0: turns in place.
   double min_turn_radius = 0;
+  // What a turn is worth in metres of path: a run of small turns round a corner (the
+  // chords of an arc) becomes fewer corners where that adds at most this much path per
+  // turn saved. 0: transits stay shortest paths, follow moves hug the boundary.
+  double turn_cost = 0.1;
 };
 
 /// What a path segment is doing (for figures and metrics); Turn: a chord of an arc a
