@@ -219,9 +219,46 @@ ShortestPathMap::Samples ShortestPathMap::sample(std::size_t columns, unsigned t
   s.rows = static_cast<std::size_t>(std::floor(h / s.step)) + 1;
   s.x0 = box.xmin(), s.y0 = box.ymin();
   s.values.resize(s.columns * s.rows);
-  parallel_for(s.rows, spm_threads(threads, s.values.size()), [&](std::size_t j) {
-    for (std::size_t i = 0; i < s.columns; ++i) s.values[j * s.columns + i] = query(s.point(i, j));
+  // Samples every 8 steps along both axes are full queries (the visibility of their reflex
+  // vertices: most of the wave front's time, issue 49). Then, level by level (every 4, 2,
+  // 1 steps), a sample between queried ones that all have the same root lies in that
+  // root's cell of the map but for slivers, and takes its distance from the root directly
+  // (when it lies in free space); the others are queried.
+  const unsigned t = spm_threads(threads, s.values.size());
+  constexpr std::size_t kTop = 8;
+  parallel_for(s.rows, t, [&](std::size_t j) {
+    if (j % kTop == 0)
+      for (std::size_t i = 0; i < s.columns; i += kTop) s.values[j * s.columns + i] = query(s.point(i, j));
   });
+  const Environment& env = environment();
+  for (std::size_t g = kTop / 2; g >= 1; g /= 2) {
+    const std::size_t g2 = 2 * g;
+    parallel_for(s.rows, t, [&](std::size_t j) {
+      if (j % g != 0) return;
+      for (std::size_t i = 0; i < s.columns; i += g) {
+        if (i % g2 == 0 && j % g2 == 0) continue;  // done at a coarser level
+        const std::size_t i0 = i - i % g2, i1 = i % g2 ? i0 + g2 : i0, j0 = j - j % g2, j1 = j % g2 ? j0 + g2 : j0;
+        const Point p = s.point(i, j);
+        std::uint32_t root = kNone;
+        bool same = i1 < s.columns && j1 < s.rows;
+        for (const std::size_t a : {i0, i1})
+          for (const std::size_t b : {j0, j1}) {
+            if (!same) break;
+            const std::uint32_t r = s.values[b * s.columns + a].root;
+            if (r == kNone || (root != kNone && r != root)) same = false;
+            root = r;
+          }
+        if (same && !graph_->index().in_free_space(p)) {
+          s.values[j * s.columns + i] = {};  // a thin obstacle between the queried samples
+        } else if (same) {
+          const Point at = root == kSource ? source_ : env.vertex(root);
+          s.values[j * s.columns + i] = {(root == kSource ? 0.0 : dist_[root]) + spm_length(at, p), root};
+        } else {
+          s.values[j * s.columns + i] = query(p);
+        }
+      }
+    });
+  }
   return s;
 }
 

@@ -266,3 +266,35 @@ TEST(ShortestPathMap, SquareAroundASquareHoleByHand) {
   }
   EXPECT_EQ(spm.query({5, 5}).root, kNone);
 }
+
+// sample() queries every 8th sample and takes the others from a root shared by the samples
+// around them (issue 49: the wave front's time): it must agree with a full query almost
+// everywhere, and exactly in root and distance where it agrees.
+TEST(ShortestPathMap, SamplesAgreeWithFullQueries) {
+  std::size_t total = 0, agree = 0;
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    const Environment env = generators::random_environment(60, 1 + seed % 3, seed);
+    const VisibilityIndex index(env);
+    const VisibilityGraph graph(index);
+    const auto b = env.bbox();
+    const Point s = index.in_free_space(Point((b.xmin() + b.xmax()) / 2, (b.ymin() + b.ymax()) / 2))
+                        ? Point((b.xmin() + b.xmax()) / 2, (b.ymin() + b.ymax()) / 2)
+                        : env.vertex(0);
+    if (!index.in_free_space(s)) continue;
+    const ShortestPathMap spm(graph, s);
+    const auto S = spm.sample(150, 1);
+    for (std::size_t j = 0; j < S.rows; ++j)
+      for (std::size_t i = 0; i < S.columns; ++i) {
+        const auto q = spm.query(S.point(i, j));
+        const auto& got = S.at(i, j);
+        if (q.root == geometry::kNone) {
+          EXPECT_EQ(got.root, geometry::kNone) << "seed " << seed << " sample " << i << "," << j << " outside free space";
+          continue;
+        }
+        ++total;
+        agree += got.root == q.root && std::fabs(got.distance - q.distance) <= 1e-9 * (1 + q.distance);
+      }
+  }
+  ASSERT_GT(total, 10000u);
+  EXPECT_GE(static_cast<double>(agree), 0.995 * static_cast<double>(total)) << agree << " of " << total;
+}
