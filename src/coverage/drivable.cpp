@@ -260,9 +260,8 @@ void Driver::drive_plan(const Polyline& plan) {
   if (p.points.empty()) return;
   std::vector<Goal> goals;
   const std::size_t m = p.moves.size();
-  // Keepers: the stretches that cover floor (laps, and boundary following at least R long);
-  // a transit only gets somewhere, so its corners are waypoints, passed only where the
-  // curve to the next keeper needs them.
+  // Keepers: the stretches that cover floor (laps, and boundary following at least R long).
+  // A transit only gets somewhere: the curve or search to the next keeper finds its own way.
   auto keeper = [&](std::size_t i) {
     return p.moves[i] == Move::Lap || (p.moves[i] == Move::Follow && planar_distance(p.points[i], p.points[i + 1]) >= R_);
   };
@@ -273,21 +272,15 @@ void Driver::drive_plan(const Polyline& plan) {
   // The start: standing at the plan's first point, facing any way.
   at_ = Track{p.points[0], p.points[0], 0.0, Move::Transit, SIZE_MAX, true};
   out_.points.push_back(at_.from);
-  std::size_t g = 0;
-  while (g < goals.size()) {
-    // The next keeper: by one curve, else by a search with reverse steps, else skipped.
-    // (The plan's transits between keepers are not followed: the search finds its own way.)
-    std::size_t k = g;
-    while (k < goals.size() && !goals[k].keeper) ++k;
-    if (k < goals.size() && !reach(at_, goals[k])) ++skipped_;
-    g = k + 1;
-  }
+  // Each keeper by one curve, else by a search with reverse steps, else skipped.
+  for (const Goal& goal : goals)
+    if (!reach(at_, goal)) ++skipped_;
 }
 
 // Touch-ups for a robot that cannot turn in place: the nearest sample the path left
-// uncovered, reached by a certified curve (through the corners of the shortest path there
-// when no curve fits directly), until at most kTouchUpLeft of the samples is left; a
-// sample no curve reaches is given up with the samples within w/2 of it, and counted.
+// uncovered, reached by a certified curve (or a search with reverse steps when no curve
+// fits), until at most kTouchUpLeft of the samples is left; a sample nothing reaches is
+// given up with the samples within max(w/2, R/2) of it, and counted.
 void Driver::touch_up() {
   const CoverageRaster R(P_.E, P_.index, P_.w, 0);
   Polyline so_far = out_;
