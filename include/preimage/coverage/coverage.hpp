@@ -59,7 +59,8 @@ struct CoverageOptions {
   Pattern pattern = Pattern::Boustrophedon;
   std::optional<Point> centre;       // of the variable-slice patterns; default: the middle of the bounding box
   // A robot that cannot turn in place (car-like): every turn an arc of radius >= this,
-  // forward only (turn_model.hpp). 0: turns in place.
+  // forward, reversing only where no forward curve fits (turn_model.hpp, drivable.cpp).
+  // 0: turns in place.
   double min_turn_radius = 0;
   // What a turn is worth in metres of path: a run of small turns round a corner (the
   // chords of an arc) becomes fewer corners where that adds at most this much path per
@@ -96,8 +97,8 @@ struct CoverageReport {
   // With a minimum turning radius: the arcs (every one certified, not only its chords: the
   // capsule around each chord that holds the arc keeps r from every obstacle), laps whose
   // ends were cut back so the turn fits in the room, and laps and points of the plan the
-  // robot could not reach forward with its turning radius (left out; measure_coverage says
-  // what that costs).
+  // robot could not reach with its turning radius (left out; measure_coverage says what
+  // that costs).
   double min_turn_radius = 0;
   std::vector<CoverageArc> arcs;
   std::size_t shortened_laps = 0, skipped = 0;

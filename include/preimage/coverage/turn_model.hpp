@@ -4,7 +4,8 @@
 // A car-like robot drives forward with a turning radius of at least R. Between two poses
 // the shortest such path is one of Dubins' six words (Dubins 1957; LaValle, Planning
 // Algorithms 15.3.1): two arcs of radius R joined by a straight segment (LSL, RSR, LSR,
-// RSL) or by a third arc (RLR, LRL). The curves here are computed in double: they are
+// RSL) or by a third arc (RLR, LRL); where none fits, coverage searches with reverse steps
+// too (src/coverage/car_search.hpp). The curves here are computed in double: they are
 // choices, never decisions. Whether a curve may be driven is decided by ArcCertifier,
 // with exact clearance tests on a capsule that provably contains every arc piece.
 #pragma once
