@@ -191,9 +191,6 @@ CoverageReport plan_at(const Planning& P, const BoustrophedonDecomposition& b, d
 // same test as finish_path's.
 void detail::straighten_follows(const Planning& P, Polyline& path) {
   const double tol = P.w / 8;
-  auto certified = [&](const Point& a, const Point& z) {
-    return P.index.visible(a, z) && (P.cs.radius() == 0 || P.cs.admits(a, z));
-  };
   auto near_segment = [&](const Point& a, const Point& z, std::size_t from, std::size_t to) {
     const double vx = z.x() - a.x(), vy = z.y() - a.y(), l2 = vx * vx + vy * vy;
     for (std::size_t k = from; k < to; ++k) {
@@ -219,7 +216,7 @@ void detail::straighten_follows(const Planning& P, Polyline& path) {
     std::size_t a = i;
     while (a < end) {
       std::size_t j = a + 1;
-      while (j + 1 <= end && certified(path.points[a], path.points[j + 1]) && near_segment(path.points[a], path.points[j + 1], a + 1, j + 1)) ++j;
+      while (j + 1 <= end && certified(P, path.points[a], path.points[j + 1]) && near_segment(path.points[a], path.points[j + 1], a + 1, j + 1)) ++j;
       out.append(path.points[j], Move::Follow);
       a = j;
     }
@@ -243,9 +240,6 @@ constexpr double kBendTurn = 14 * std::numbers::pi / 180;
 void detail::merge_bends(const Planning& P, Polyline& path) {
   const std::size_t n = path.points.size();
   if (n < 3 || !(P.o.turn_cost > 0)) return;
-  auto certified = [&](const Point& a, const Point& z) {
-    return P.index.visible(a, z) && (P.cs.radius() == 0 || P.cs.admits(a, z));
-  };
   const auto& q = path.points;
   std::vector<double> h(n - 1);
   for (std::size_t k = 0; k + 1 < n; ++k) h[k] = std::atan2(q[k + 1].y() - q[k].y(), q[k + 1].x() - q[k].x());
@@ -289,7 +283,7 @@ void detail::merge_bends(const Planning& P, Polyline& path) {
         for (std::size_t g = c + 1; g <= f; ++g) before += dist(q[g], q[g + 1]);
         const double added = dist(at, x) + dist(x, q[f + 1]) - before;
         if (added > P.o.turn_cost * static_cast<double>(f - c - 1)) continue;
-        if (certified(at, x) && certified(x, q[f + 1])) {
+        if (certified(P, at, x) && certified(P, x, q[f + 1])) {
           e = f, corner = x;
           break;
         }
@@ -303,17 +297,19 @@ void detail::merge_bends(const Planning& P, Polyline& path) {
   path = std::move(out);
 }
 
-std::vector<std::vector<std::size_t>> detail::uncovered_patches(const CoverageRaster& R, const Polyline& path, double w, std::vector<char>& open,
-                                                                std::size_t& left, std::size_t& allowed) {
+detail::Uncovered detail::uncovered(const CoverageRaster& R, const Polyline& path, double w) {
   const double half = w / 2;
-  open.assign(R.target.size(), 0);
-  std::size_t total = 0;
-  left = 0;
-  for (std::size_t id = 0; id < R.target.size(); ++id) total += R.target[id], open[id] = R.target[id];
+  Uncovered u;
+  u.open.assign(R.target.begin(), R.target.end());
+  const std::size_t total = static_cast<std::size_t>(std::count(R.target.begin(), R.target.end(), 1));
   for (std::size_t seg = 0; seg + 1 < std::max<std::size_t>(path.points.size(), 2); ++seg)
-    R.capsule(path.points[seg], path.points[std::min(seg + 1, path.points.size() - 1)], half, half, [&](std::size_t id, bool) { open[id] = 0; });
-  for (char o : open) left += o;
-  allowed = static_cast<std::size_t>(kTouchUpLeft * static_cast<double>(total));
+    R.capsule(path.points[seg], path.points[std::min(seg + 1, path.points.size() - 1)], half, half, [&](std::size_t id, bool) { u.open[id] = 0; });
+  u.left = static_cast<std::size_t>(std::count(u.open.begin(), u.open.end(), 1));
+  u.allowed = static_cast<std::size_t>(kTouchUpLeft * static_cast<double>(total));
+  return u;
+}
+
+std::vector<std::vector<std::size_t>> detail::patches_of(const CoverageRaster& R, const std::vector<char>& open) {
   // Patches: 4-connected uncovered samples, largest first.
   std::vector<std::vector<std::size_t>> patches;
   std::vector<char> seen(open.size(), 0);
@@ -349,9 +345,11 @@ void touch_up(const Planning& P, CoverageReport& rep) {
   const std::size_t certified = path.points.size() - 1;
   const double half = P.w / 2;
   const detail::CoverageRaster R(P.E, P.index, P.w, 0);
-  std::vector<char> open;
-  std::size_t left = 0, allowed = 0;
-  const auto patches = detail::uncovered_patches(R, path, P.w, open, left, allowed);
+  detail::Uncovered u = detail::uncovered(R, path, P.w);
+  auto& open = u.open;
+  std::size_t& left = u.left;
+  const std::size_t allowed = u.allowed;
+  const auto patches = detail::patches_of(R, open);
   std::vector<Point> points;
   for (const auto& patch : patches) {
     if (left <= allowed) break;

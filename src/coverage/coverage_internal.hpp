@@ -26,6 +26,12 @@ struct Planning {
   std::optional<Point> start;                 // in E (the entry point when the start lies in the band)
 };
 
+/// A straight move of the path: inside E (exact walk) and, with a footprint, r from every
+/// obstacle (exact).
+inline bool certified(const Planning& P, const Point& a, const Point& z) {
+  return P.index.visible(a, z) && (P.cs.radius() == 0 || P.cs.admits(a, z));
+}
+
 /// Certifies every segment of `path` from `certified_before` on (inside E exactly, and r
 /// from every obstacle; the earlier ones the caller has certified) — a failure is a bug
 /// (std::logic_error) — and sets the report's path, moves, length, transit length, rotation
@@ -76,10 +82,15 @@ void merge_bends(const Planning& P, Polyline& path);
 inline constexpr double kTouchUpLeft = 1e-3;
 
 struct CoverageRaster;
-/// The samples of R the tool (width w) leaves uncovered along `path` (open[id] = 1), in
-/// 4-connected patches, largest first; `left` of them, of which `allowed` may stay.
-std::vector<std::vector<std::size_t>> uncovered_patches(const CoverageRaster& R, const Polyline& path, double w, std::vector<char>& open,
-                                                        std::size_t& left, std::size_t& allowed);
+/// The samples of R the tool (width w) leaves uncovered along `path`: open[id] = 1; `left`
+/// of them, of which `allowed` (kTouchUpLeft of the target) may stay.
+struct Uncovered {
+  std::vector<char> open;
+  std::size_t left = 0, allowed = 0;
+};
+Uncovered uncovered(const CoverageRaster& R, const Polyline& path, double w);
+/// The open samples in 4-connected patches, largest first.
+std::vector<std::vector<std::size_t>> patches_of(const CoverageRaster& R, const std::vector<char>& open);
 
 /// The path made drivable by a robot with turning radius R: laps and long segments kept,
 /// corners turned by certified Dubins curves, laps cut back where the turn needs room,

@@ -60,8 +60,8 @@ constexpr std::size_t kMaxExpansions = 30000;
 class Driver {
  public:
   Driver(const Planning& P, double R)
-      : P_(P), R_(R), scale_(scale_of(P.env, R)), cert_(P.env, P.cs.radius()), clear_(P.env, P.cs.radius()),
-        search_(P.E, clear_, cert_, R, std::max(P.w / 2, R / 4), 1e-9 * scale_) {
+      : P_(P), R_(R), scale_(scale_of(P.env, R)), cert_(P.env, P.cs.radius()),
+        search_(P.E, cert_.clearance(), cert_, R, std::max(P.w / 2, R / 4), 1e-9 * scale_) {
     for (const double f : {0.0, 0.25, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0}) cuts_.push_back(f * R);
   }
 
@@ -88,7 +88,6 @@ class Driver {
   const Planning& P_;
   double R_, scale_;
   ArcCertifier cert_;
-  geometry::Clearance clear_;
   CarSearch search_;
   std::vector<double> cuts_;
 
@@ -118,11 +117,11 @@ class Driver {
 // through it are certified).
 Point Driver::off_the_wall(const Point& v) const {
   const double by = std::min(0.05 * R_, P_.w / 8);
-  const Point n = clear_.nearest(v);
+  const Point n = cert_.clearance().nearest(v);
   const double dx = v.x() - n.x(), dy = v.y() - n.y(), d = std::hypot(dx, dy);
   if (!(d > 0) || d >= P_.cs.radius() + by) return v;
   const Point q(v.x() + dx / d * by, v.y() + dy / d * by);
-  return clear_.admits(q) ? q : v;
+  return cert_.clearance().admits(q) ? q : v;
 }
 
 // Departures from a track: its end, or cut back by one of cuts_ (not behind where it
@@ -285,9 +284,10 @@ void Driver::touch_up() {
   const CoverageRaster R(P_.E, P_.index, P_.w, 0);
   Polyline so_far = out_;
   so_far.append(at_.to, at_.move);
-  std::vector<char> open;
-  std::size_t left = 0, allowed = 0;
-  uncovered_patches(R, so_far, P_.w, open, left, allowed);
+  Uncovered u = uncovered(R, so_far, P_.w);
+  auto& open = u.open;
+  std::size_t& left = u.left;
+  const std::size_t allowed = u.allowed;
   const double half = P_.w / 2;
   auto close = [&](const Point& a, const Point& b) {
     R.capsule(a, b, half, half, [&](std::size_t c, bool) {

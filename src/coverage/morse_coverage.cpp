@@ -172,7 +172,7 @@ void PathBuilder::go(const Point& z, Move move) {
   }
   const Point a = path.points.back();
   if (a == z) return;
-  if (P.index.visible(a, z) && (P.cs.radius() == 0 || P.cs.admits(a, z))) {
+  if (certified(P, a, z)) {
     path.append(z, move);
     return;
   }

@@ -76,6 +76,8 @@ class ArcCertifier {
   bool arc(const Point& p, const std::vector<Point>& samples, double radius, double turn) const;
   /// The chord ends of the arc piece from pose p (not including p), at most kChordTurn apart.
   static std::vector<Point> sample_arc(const Pose& p, double radius, double turn);
+  /// The exact clearance tests it decides with (radius r).
+  const geometry::Clearance& clearance() const { return clearance_; }
 
  private:
   double r_;
