@@ -557,10 +557,11 @@ CoverageReport plan_in_frame(const Environment& env, const CoverageOptions& o) {
 }  // namespace
 
 CoverageReport plan_coverage(const Environment& env, const CoverageOptions& o) {
-  const geometry::LocalFrame frame = geometry::LocalFrame::of(env);
+  const geometry::LocalFrame frame = geometry::LocalFrame::canonical(env);
   if (frame.identity()) return plan_in_frame(env, o);
-  // Far from the origin (georeferenced plans): plan in the local frame, where rasters,
-  // offsets and GVD snapping keep the digits the plan needs, round the path back to input
+  // In the plan's canonical frame (its box at 0, the same for every exact translate, so a
+  // georeferenced plan gets the answer it gets at the origin, moved), where rasters, offsets
+  // and GVD snapping keep the digits the plan needs, round the path back to input
   // coordinates and certify it again there (to_input_certified pushes the ends of a segment
   // that rounding took within r of a wall); should a segment still fail, plan again with the
   // robot frame.margin() wider, which rounding cannot undo.
@@ -623,13 +624,16 @@ CoverageMetrics measure_in_frame(const Environment& env, const CoverageReport& r
   if (!comp) return m;
   const Environment& E = cs.components()[*comp];
   const VisibilityIndex index(E);
-  const detail::CoverageRaster R(E, index, w, cell);
+  const detail::CoverageRaster R(E, index, w, cell, true);
   std::vector<std::uint32_t> visits(R.target.size(), 0), last(R.target.size(), UINT32_MAX);
-  std::vector<char> covered(R.target.size(), 0);
-  // Segment by segment: a sample within w/2 of segment s is covered; it gets a new visit
-  // when it comes within w/2 - cell/2 of s without having been that close to s - 1 (the
-  // margin keeps samples exactly halfway between two laps, covered by both to the last
-  // bit, from counting as overlap).
+  std::vector<char> covered(R.target.size(), 0), counted(R.target.size(), 0);
+  // Segment by segment: a sample within w/2 of segment s is covered. A pass over it is a run
+  // of consecutive segments each within w/2 of it; the pass is a visit when one of them
+  // comes within w/2 - cell/2 (the margin keeps samples exactly halfway between two laps,
+  // covered by both to the last bit, from counting as overlap). Runs are cut at w/2, not at
+  // w/2 - cell/2, so a sample near w/2 - cell/2 from a curve of short segments is not
+  // visited anew at each one as one ulp takes it in or out: brushfire's overlap on office
+  // 302 moved by 0.2 % between the plan and its shift by 5e5 when runs were cut there.
   const double inner = std::max(0.0, half - R.cell / 2);
   // A path of one point is the tool standing still: the disc of radius w/2 around it.
   for (std::size_t seg = 0; seg + 1 < std::max<std::size_t>(rep.path.size(), 2); ++seg) {
@@ -637,9 +641,9 @@ CoverageMetrics measure_in_frame(const Environment& env, const CoverageReport& r
     const std::uint32_t stamp = static_cast<std::uint32_t>(seg);
     R.capsule(a, b, half, inner, [&](std::size_t id, bool in) {
       covered[id] = 1;
-      if (!in) return;
-      if (last[id] == UINT32_MAX || (last[id] + 1 != stamp && last[id] != stamp)) ++visits[id];
+      if (last[id] == UINT32_MAX || (last[id] + 1 != stamp && last[id] != stamp)) counted[id] = 0;  // a new pass
       last[id] = stamp;
+      if (in && !counted[id]) ++visits[id], counted[id] = 1;
     });
   }
   std::size_t total = 0, once = 0, twice = 0;
@@ -658,7 +662,7 @@ CoverageMetrics measure_in_frame(const Environment& env, const CoverageReport& r
 }  // namespace
 
 CoverageMetrics measure_coverage(const Environment& env, const CoverageReport& rep, double cell) {
-  const geometry::LocalFrame frame = geometry::LocalFrame::of(env);
+  const geometry::LocalFrame frame = geometry::LocalFrame::canonical(env);
   if (frame.identity()) return measure_in_frame(env, rep, cell);
   // The raster in the local frame (a sample grid at 1e10 would have no digits left for w/8).
   CoverageReport local = rep;

@@ -9,9 +9,10 @@
 
 namespace preimage::coverage::detail {
 
-CoverageRaster::CoverageRaster(const Environment& E, const geometry::VisibilityIndex& index, double w, double cell_) : cell(cell_) {
+CoverageRaster::CoverageRaster(const Environment& E, const geometry::VisibilityIndex& index, double w, double cell_, bool offset_grid)
+    : cell(cell_) {
   const auto box = E.bbox();
-  x0 = box.xmin(), y0 = box.ymin();
+  const double phase = offset_grid ? 0.3819660112501051 : 0;  // 1/phi^2: no simple ratio to a binary grid
   // w/8 by default, but at least 256 samples across the box (a tool wider than the plan
   // would otherwise leave no sample in it: issue 47), and coarser where that would take more
   // than 4 million samples.
@@ -21,8 +22,9 @@ CoverageRaster::CoverageRaster(const Environment& E, const geometry::VisibilityI
   // A free space thinner than the automatic cell (a sliver of a component) may hold no
   // sample: the cell is refined, up to the cap, rather than the metrics refused.
   for (;;) {
-    nx = static_cast<std::size_t>(std::ceil((box.xmax() - box.xmin()) / cell)) + 1;
-    ny = static_cast<std::size_t>(std::ceil((box.ymax() - box.ymin()) / cell)) + 1;
+    x0 = box.xmin() - phase * cell, y0 = box.ymin() - phase * cell;
+    nx = static_cast<std::size_t>(std::ceil((box.xmax() - x0) / cell)) + 1;
+    ny = static_cast<std::size_t>(std::ceil((box.ymax() - y0) / cell)) + 1;
     if (nx * ny > 50'000'000) throw InputError("coverage metrics: the raster would need more than 5e7 samples; give a coarser cell");
     target.assign(nx * ny, 0);
     bool any = false;

@@ -18,8 +18,11 @@ struct CoverageRaster {
   std::vector<char> target;  // sample centre in the component
 
   /// Samples of E at `cell` (0: w/8, at least 256 across, at most about 4 million; refined
-  /// when a sliver of a component holds none).
-  CoverageRaster(const Environment& E, const geometry::VisibilityIndex& index, double w, double cell);
+  /// when a sliver of a component holds none). `offset_grid` moves the samples by 0.382 of a
+  /// cell from E's box: on a plan drawn on a binary grid, samples at (k + 1/2) cells from its
+  /// walls lie exactly at w/2 or w/2 - cell/2 from the laps of a sweep or an offset ring, so
+  /// a rounding of 1e-10 in the path changed 0.2 % of measure_coverage's overlap.
+  CoverageRaster(const Environment& E, const geometry::VisibilityIndex& index, double w, double cell, bool offset_grid = false);
   geometry::Point centre(std::size_t id) const {
     return {x0 + (static_cast<double>(id % nx) + 0.5) * cell, y0 + (static_cast<double>(id / nx) + 0.5) * cell};
   }

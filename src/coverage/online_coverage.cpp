@@ -877,9 +877,9 @@ OnlineComparison compare_with_offline(const BoustrophedonDecomposition& off, con
 }
 
 OnlineReport plan_online_coverage(const Environment& env, const OnlineOptions& o) {
-  const geometry::LocalFrame frame = geometry::LocalFrame::of(env);
+  const geometry::LocalFrame frame = geometry::LocalFrame::canonical(env);
   if (frame.identity()) return plan_online_in_frame(env, o);
-  // Far from the origin: sense and plan in the local frame with the robot frame.margin()
+  // In the plan's canonical frame (the same for every exact translate): sense and plan in the local frame with the robot frame.margin()
   // wider, then certify the path rounded back to input coordinates (as plan_coverage).
   const double r = o.robot_radius;
   if (!(r > 0) || !std::isfinite(r)) throw InputError("--radius: online coverage needs a robot radius > 0");
@@ -911,7 +911,7 @@ OnlineReport plan_online_coverage(const Environment& env, const OnlineOptions& o
 }
 
 OnlineComparison compare_with_offline(const Environment& env, const OnlineReport& rep, double tol) {
-  const geometry::LocalFrame frame = geometry::LocalFrame::of(env);
+  const geometry::LocalFrame frame = geometry::LocalFrame::canonical(env);
   if (!frame.identity()) {
     // The online report's sweep coordinates are those of the local frame: compare there.
     OnlineReport local = rep;

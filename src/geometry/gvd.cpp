@@ -78,8 +78,10 @@ struct EdgeShape {
 GeneralizedVoronoiDiagram GeneralizedVoronoiDiagram::build(const Environment& env, const GvdOptions& options) {
   using namespace gvd_detail;
   // Far from the origin the snapping grid would be as coarse as the coordinates are large
-  // (2^5 at 1e10): build the diagram in the local frame, then move it back.
-  if (const LocalFrame frame = LocalFrame::of(env); !frame.identity()) {
+  // (2^5 at 1e10): build the diagram in the local frame, then move it back. The canonical
+  // frame (the box at 0 wherever that is exact), so the grid sits on the plan, not on the
+  // origin, and a plan and its exact translates get one diagram, moved.
+  if (const LocalFrame frame = LocalFrame::canonical(env); !frame.identity()) {
     GeneralizedVoronoiDiagram g = build(frame.to_local(env), options);
     g.to_input(frame, env);
     return g;

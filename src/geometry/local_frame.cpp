@@ -30,7 +30,31 @@ double axis_shift(double lo, double hi, double extent) {
   return 0;
 }
 
+// Is x - lo exact for every coordinate of env along one axis?
+bool exact_along(const Environment& env, bool x_axis, double lo) {
+  for (std::size_t v = 0; v < env.num_vertices(); ++v)
+    if (!exact_difference(x_axis ? env.vertex(v).x() : env.vertex(v).y(), lo)) return false;
+  return true;
+}
+
 }  // namespace
+
+LocalFrame LocalFrame::canonical(const Environment& env) {
+  LocalFrame f = of(env);
+  if (env.num_vertices() == 0) return f;
+  const auto box = env.bbox();
+  const double extent = std::max(box.xmax() - box.xmin(), box.ymax() - box.ymin());
+  if (!(extent > 0)) return f;
+  // Along an axis the far rule left alone, the box's low end when every difference from it is
+  // exact (x - lo and (x + S) - (lo + S) are one real number: both exact or neither, so a plan
+  // and its exact translates get one local environment).
+  if (f.dx_ == 0 && exact_along(env, true, box.xmin())) f.dx_ = box.xmin();
+  if (f.dy_ == 0 && exact_along(env, false, box.ymin())) f.dy_ = box.ymin();
+  if (f.identity()) return f;
+  const double M = std::max({std::fabs(box.xmin()), std::fabs(box.xmax()), std::fabs(box.ymin()), std::fabs(box.ymax())});
+  f.margin_ = 4 * ulp(M) + std::ldexp(extent, -36);
+  return f;
+}
 
 LocalFrame LocalFrame::of(const Environment& env) {
   LocalFrame f;

@@ -32,6 +32,27 @@ TEST(LocalFrame, IdentityNearTheOriginExactTranslationFarFromIt) {
   }
 }
 
+// The canonical frame is the same for every exact translate of a plan, near the origin as
+// well as far from it (with of() alone, merged bends differed between office 302 as is and
+// shifted by 4e6, as only the shifted plan was translated); where the translation to the box
+// would round, it is of()'s.
+TEST(LocalFrame, EveryExactTranslateGetsTheSameCanonicalEnvironment) {
+  EXPECT_TRUE(LocalFrame::canonical(room_with_hole(0)).identity());
+  const Environment origin = room_with_hole(0);
+  for (const double off : {0.375, 100.0, -7.25, 5e5, 4e6, 2e7, 1e10, 1e12 - 64}) {
+    const Environment env = room_with_hole(off);
+    const LocalFrame f = LocalFrame::canonical(env);
+    ASSERT_FALSE(f.identity()) << off;
+    const Environment local = f.to_local(env);
+    for (std::size_t v = 0; v < env.num_vertices(); ++v) EXPECT_EQ(local.vertex(v), origin.vertex(v)) << off;
+    EXPECT_GE(f.margin(), 2 * (std::nextafter(std::fabs(off), 2 * std::fabs(off)) - std::fabs(off))) << off;
+  }
+  // 1 - 1e-20 is not a double: no translation to 1e-20 (near 0, of() is the identity).
+  const Environment inexact = Environment::make({Point(1e-20, 0), Point(1, 0), Point(1, 1), Point(1e-20, 1)}, {});
+  EXPECT_EQ(LocalFrame::canonical(inexact).dx(), 0);
+  EXPECT_EQ(LocalFrame::canonical(inexact).dy(), 0);
+}
+
 TEST(LocalFrame, AreasDoNotDependOnWhereThePlanSits) {
   for (const double off : {0.0, 5e5, 4e6, 2e7, 1e10, 1e12 - 64}) EXPECT_EQ(room_with_hole(off).area(), 96) << off;
 }

@@ -27,6 +27,15 @@ class LocalFrame {
   /// The frame for env: a translation along each axis whose coordinates all lie more than 16
   /// times the environment's extent from 0, else the identity along it.
   static LocalFrame of(const Environment& env);
+  /// The frame a whole plan is answered in: the box's low end along every axis where the
+  /// translation is exact (always far from 0; near 0 for a plan on a binary grid such as a
+  /// snapped or georeferenced one), else of(env) along it. Every exact translate of env gets
+  /// the same local environment, so floating steps round alike and the answer is the same,
+  /// moved: a plan at its own coordinates and shifted by 4e6 used to get different merged
+  /// bends, as only the shifted one was translated. Used where a command's answer starts
+  /// (plan_coverage, measure_coverage); derived environments inside (a configuration space's
+  /// components) keep of(), whose identity near 0 maps back without rounding.
+  static LocalFrame canonical(const Environment& env);
 
   bool identity() const { return dx_ == 0 && dy_ == 0; }
   double dx() const { return dx_; }
