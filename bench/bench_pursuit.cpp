@@ -3,7 +3,9 @@
 // spiral generators; the search beside one that does not merge equal information states
 // (depth-first over cell walks, pruning only cycles on the walk itself), in the same run.
 #include <preimage/geometry/generators.hpp>
+#include <preimage/pursuit/checker.hpp>
 #include <preimage/pursuit/search.hpp>
+#include <preimage/pursuit/split.hpp>
 
 #include "ratio_reporter.hpp"
 
@@ -109,9 +111,42 @@ void search_unmerged(benchmark::State& state, std::string name) {
   state.counters["crossings"] = found ? static_cast<double>(*found) : -1;
 }
 
+// The contamination checker on a static-guard plan (guards wait while one pursuer moves):
+// samples at the critical rays (preimage) against samples at every crossing of the whole
+// lines through a reflex vertex and a vertex, or a vertex of a waiting V (reference: the
+// sampling before 28 November; both share the rest of the checker).
+void checker(benchmark::State& state, std::string name, bool every_line) {
+  static std::map<std::string, std::unique_ptr<std::pair<geometry::Environment, pursuit::Plan>>> plans;
+  auto& p = plans[name];
+  if (!p) {
+    geometry::Environment env = name == "office-2x3" ? g::office(2, 3) : g::random_rectilinear(6, 5, true, 2024);
+    auto plan = pursuit::split_strategy(env).plan;
+    p = std::make_unique<std::pair<geometry::Environment, pursuit::Plan>>(std::move(env), std::move(plan));
+  }
+  pursuit::CheckOptions o;
+  o.every_critical_line = every_line;
+  pursuit::CheckResult r;
+  for (auto _ : state) {
+    r = pursuit::check_paths(p->first, p->second.paths, o);
+    benchmark::DoNotOptimize(r);
+  }
+  state.counters["pursuers"] = static_cast<double>(p->second.paths.size());
+  state.counters["waypoints"] = static_cast<double>(p->second.paths[0].size());
+  state.counters["moments"] = static_cast<double>(r.moments);
+  state.counters["cleared"] = r.cleared;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  for (const char* n : {"office-2x3", "rectilinear-6x5"}) {
+    benchmark::RegisterBenchmark(("checker/preimage/" + std::string(n)).c_str(), checker, std::string(n), false)
+        ->Unit(benchmark::kMillisecond)
+        ->Iterations(1);
+    benchmark::RegisterBenchmark(("checker/reference/" + std::string(n)).c_str(), checker, std::string(n), true)
+        ->Unit(benchmark::kMillisecond)
+        ->Iterations(1);
+  }
   for (const char* n : kCases) {
     benchmark::RegisterBenchmark(("pursuit-pipeline/" + std::string(n)).c_str(), pipeline, std::string(n))->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("pursuit-cells/" + std::string(n)).c_str(), cells_only, std::string(n))->Unit(benchmark::kMillisecond);

@@ -217,10 +217,23 @@ bool visible(const Environment& env, const ExactPoint& p, const ExactPoint& q) {
 long winding_number(std::span<const ExactPoint> loop, const ExactPoint& c) {
   // Signed crossings of the ray from c towards +x (half-open in y, so a vertex at c's
   // height is counted once): upward with c on the left +1, downward with c on the right -1.
+  // "Above c" is read off the coordinates' intervals where they decide it (no rounding-mode
+  // switch per vertex: the filtered predicate's was most of the pursuit checker's point-in-V
+  // tests), else exactly.
+  const auto cy = c.approx().y();
+  const double clo = cy.inf(), chi = cy.sup();
+  auto up = [&](const ExactPoint& p) {
+    const auto py = p.approx().y();
+    if (py.inf() > chi) return true;
+    if (py.sup() <= clo) return false;
+    return CGAL::compare_y(p, c) == CGAL::LARGER;
+  };
   long w = 0;
+  bool q_up = loop.empty() ? false : up(loop[0]);
   for (std::size_t i = 0; i < loop.size(); ++i) {
     const ExactPoint &p = loop[i], &q = loop[(i + 1) % loop.size()];
-    const bool p_up = CGAL::compare_y(p, c) == CGAL::LARGER, q_up = CGAL::compare_y(q, c) == CGAL::LARGER;
+    const bool p_up = q_up;
+    q_up = up(q);
     if (!p_up && q_up && CGAL::orientation(p, q, c) == CGAL::LEFT_TURN) ++w;
     if (p_up && !q_up && CGAL::orientation(p, q, c) == CGAL::RIGHT_TURN) --w;
   }

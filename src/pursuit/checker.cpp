@@ -81,8 +81,10 @@ struct Moment {
   std::vector<ExactPoint> at_exact;
   std::vector<Point> at;  // rounded
   std::vector<std::vector<ExactPoint>> loops;  // V of each pursuer, exact
-  std::vector<std::vector<ExactPoint>> vertices_of_v;  // the same, for event lines
+  std::vector<CGAL::Bbox_2> boxes;  // per pursuer, V's box (a point outside it is not in V)
+  std::vector<std::vector<ExactPoint>> ray_hits;  // per pursuer, V's constructed vertices (ends of free edges on walls)
   std::vector<FreeSeg> free;
+  std::vector<std::size_t> free_begin;  // pursuer l's free edges: free[free_begin[l] .. free_begin[l + 1])
   std::vector<char> contact_seen;  // per vertex id at a contact: some pursuer sees the point
 };
 
@@ -100,9 +102,12 @@ geometry::SegmentEnd end_of(const geometry::VisibilityPolygon& V, std::size_t i)
 // V of every pursuer at one moment. With `exact`, V is computed at the exact positions
 // (constructed points, e.g. on edges); otherwise at their double rounding, which is how
 // double input paths are sampled (a rounded sample stays within its event interval).
+// A pursuer standing where it stood at `like` (a waiting guard) keeps its V from there
+// (without contacts, whose bookkeeping is per moment): two of three pursuers' Vs were
+// recomputed at every sample of office 848's plan.
 Moment take(const Environment& env, const geometry::VisibilityIndex& vis, std::size_t waypoint, double fraction,
-            std::vector<ExactPoint> at, bool exact) {
-  Moment m{waypoint, fraction, std::move(at), {}, {}, {}, {}, {}};
+            std::vector<ExactPoint> at, bool exact, const Moment* like = nullptr) {
+  Moment m{waypoint, fraction, std::move(at), {}, {}, {}, {}, {}, {}, {}};
   if (env.has_contacts()) m.contact_seen.assign(env.num_vertices(), 0);
   auto see = [&](std::size_t v) {
     if (!env.has_contacts() || !env.is_contact(v)) return;
@@ -112,14 +117,29 @@ Moment take(const Environment& env, const geometry::VisibilityIndex& vis, std::s
       if (w == v) break;
     }
   };
-  for (const ExactPoint& e : m.at_exact) {
+  for (std::size_t l = 0; l < m.at_exact.size(); ++l) {
+    const ExactPoint& e = m.at_exact[l];
     const Point q = geometry::to_double(e);
     m.at.push_back(q);
+    m.free_begin.push_back(m.free.size());
+    if (like && !env.has_contacts() && like->at_exact.size() == m.at_exact.size() && like->at_exact[l] == e) {
+      m.loops.push_back(like->loops[l]);
+      m.boxes.push_back(like->boxes[l]);
+      m.ray_hits.push_back(like->ray_hits[l]);
+      m.free.insert(m.free.end(), like->free.begin() + static_cast<std::ptrdiff_t>(like->free_begin[l]),
+                    like->free.begin() + static_cast<std::ptrdiff_t>(like->free_begin[l + 1]));
+      continue;
+    }
     // A sample of a double path on a sloping wall may round into the obstacle: take V at
     // the exact sample then (V's free edges then have no double carrier).
     const bool at_exact = exact || !vis.in_free_space(q);
     const auto V = at_exact ? vis.compute(e) : vis.compute(q);
     m.loops.push_back(V.points());
+    m.boxes.emplace_back();
+    for (const ExactPoint& x : m.loops.back()) m.boxes.back() += x.bbox();
+    m.ray_hits.emplace_back();
+    for (std::size_t i = 0; i < V.vertices.size(); ++i)
+      if (V.vertices[i].kind == geometry::VisibilityVertex::Kind::RayHit) m.ray_hits.back().push_back(m.loops.back()[i]);
     for (const auto& x : V.vertices)
       if (x.kind == geometry::VisibilityVertex::Kind::EnvironmentVertex) see(x.vertex);
     if (V.location.kind == geometry::Location::Kind::AtVertex) see(V.location.index);
@@ -163,6 +183,7 @@ Moment take(const Environment& env, const geometry::VisibilityIndex& vis, std::s
       add(B, end_of(V, (i + 1) % n));
     }
   }
+  m.free_begin.push_back(m.free.size());
   return m;
 }
 
@@ -172,8 +193,9 @@ constexpr int kRefine = 24;
 bool in_v(const std::vector<ExactPoint>& loop, const ExactPoint& p) { return geometry::winding_number(loop, p) != 0; }
 
 bool hidden(const Moment& m, const ExactPoint& p) {
-  for (auto& loop : m.loops)
-    if (in_v(loop, p)) return false;
+  const CGAL::Bbox_2 box = p.bbox();
+  for (std::size_t l = 0; l < m.loops.size(); ++l)
+    if (CGAL::do_overlap(box, m.boxes[l]) && in_v(m.loops[l], p)) return false;
   return true;
 }
 
@@ -212,17 +234,21 @@ Contamination step(const Environment& env, const Moment* prev, const Contaminati
   if (prev)
     for (auto& f : prev->free) items.push_back({f, true});
   for (auto& f : next.free) items.push_back({f, false});
+  // A waiting pursuer's free edges are the same lazy points in both moments (take reuses
+  // its V): compare the handles first, as equal constructed points cannot be told apart by
+  // their intervals and went to exact arithmetic through an exception every time.
+  auto cmp = [](const ExactPoint& a, const ExactPoint& b) { return CGAL::identical(a, b) ? CGAL::EQUAL : CGAL::compare_xy(a, b); };
   for (auto& it : items)
-    if (CGAL::compare_xy(it.s.a, it.s.b) == CGAL::LARGER) std::swap(it.s.a, it.s.b), std::swap(it.s.ea, it.s.eb);
-  std::sort(items.begin(), items.end(), [](const Item& x, const Item& y) {
-    const auto c = CGAL::compare_xy(x.s.a, y.s.a);
+    if (cmp(it.s.a, it.s.b) == CGAL::LARGER) std::swap(it.s.a, it.s.b), std::swap(it.s.ea, it.s.eb);
+  std::sort(items.begin(), items.end(), [&](const Item& x, const Item& y) {
+    const auto c = cmp(x.s.a, y.s.a);
     if (c != CGAL::EQUAL) return c == CGAL::SMALLER;
-    return CGAL::compare_xy(x.s.b, y.s.b) == CGAL::SMALLER;
+    return cmp(x.s.b, y.s.b) == CGAL::SMALLER;
   });
   std::vector<geometry::ArrangementSegment> segs;
   std::vector<char> of_prev, of_next;
   for (auto& it : items) {
-    if (segs.empty() || segs.back().from != it.s.a || segs.back().to != it.s.b) {
+    if (segs.empty() || cmp(segs.back().from, it.s.a) != CGAL::EQUAL || cmp(segs.back().to, it.s.b) != CGAL::EQUAL) {
       segs.push_back({it.s.a, it.s.b, it.s.ea, it.s.eb, it.s.carrier});
       of_prev.push_back(0), of_next.push_back(0);
     }
@@ -325,6 +351,34 @@ Contamination step(const Environment& env, const Moment* prev, const Contaminati
   return out;
 }
 
+// Is the line through reflex vertex u and point z tangent to the obstacle at u (u's
+// neighbours not strictly on opposite sides of it)? Only then can a ray graze u along it.
+bool tangent_at(const Environment& env, std::uint32_t u, const ExactPoint& z) {
+  const ExactPoint& U = env.exact_vertex(u);
+  const int sp = geometry::orientation(U, z, env.exact_vertex(static_cast<std::uint32_t>(env.prev(u))));
+  const int sn = geometry::orientation(U, z, env.exact_vertex(static_cast<std::uint32_t>(env.next(u))));
+  return sp * sn >= 0;
+}
+
+// Where a pursuer moving on a -> b has an event on the line through p and q (4.3's critical
+// rays): only on the ray from p away from q when p is a tangent reflex vertex (from_p),
+// there a ray of V from the pursuer grazes p and ends at q, or the one from q away from p
+// (from_q). Between p and q, or past a vertex that is not tangent, V keeps its structure,
+// so a crossing there is no event: most of a corridor's lines on office floors were such.
+void ray_crossings(const ExactPoint& ea, const ExactPoint& eb, const ExactPoint& p, const ExactPoint& q, bool from_p, bool from_q,
+                   std::vector<std::pair<ExactFT, std::pair<ExactPoint, ExactPoint>>>& out) {
+  if (!from_p && !from_q) return;
+  const int sa = geometry::orientation(p, q, ea), sb = geometry::orientation(p, q, eb);
+  if (sa * sb >= 0) return;
+  const auto d = q - p;
+  const ExactFT ca = d.x() * (ea.y() - p.y()) - d.y() * (ea.x() - p.x());
+  const ExactFT cb = d.x() * (eb.y() - p.y()) - d.y() * (eb.x() - p.x());
+  const ExactFT t = ca / (ca - cb);
+  const ExactPoint x = ea + t * (eb - ea);
+  const ExactFT along = (x - p) * d;  // < 0: x beyond p; > |d|^2: beyond q
+  if ((from_p && along < 0) || (from_q && along > d.squared_length())) out.push_back({t, {p, q}});
+}
+
 // Parameters in (0, 1) where segment a -> b crosses the line through p and q.
 void crossings(const ExactPoint& ea, const ExactPoint& eb, const ExactPoint& p, const ExactPoint& q,
                std::vector<std::pair<ExactFT, std::pair<ExactPoint, ExactPoint>>>& out) {
@@ -343,17 +397,25 @@ CheckResult check(const Environment& env, const ExactPaths& paths, const CheckOp
   std::vector<std::uint32_t> reflex;
   for (std::uint32_t v = 0; v < env.num_vertices(); ++v)
     if (env.is_reflex(v)) reflex.push_back(v);
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> lines;
+  struct CriticalLine {
+    std::uint32_t u, w;
+    bool from_u, from_w;  // its critical rays: past u away from w, past w away from u
+  };
+  std::vector<CriticalLine> lines;
   for (std::uint32_t u : reflex)
     for (std::uint32_t w = 0; w < env.num_vertices(); ++w)
-      if (w != u && (!env.is_reflex(w) || w > u) && geometry::visible(env, env.vertex(u), env.vertex(w))) lines.push_back({u, w});
+      if (w != u && (!env.is_reflex(w) || w > u) && geometry::visible(env, env.vertex(u), env.vertex(w))) {
+        const bool from_u = options.every_critical_line || tangent_at(env, u, env.exact_vertex(w));
+        const bool from_w = options.every_critical_line || (env.is_reflex(w) && tangent_at(env, w, env.exact_vertex(u)));
+        if (from_u || from_w) lines.push_back({u, w, from_u, from_w});
+      }
 
   CheckResult res;
   auto at_time = [&](std::size_t j, const ExactFT& f) {
     std::vector<ExactPoint> at;
     for (auto& p : paths) {
       const ExactPoint &a = p[j], &b = p[std::min(j + 1, steps - 1)];
-      at.push_back(f == 0 ? a : a + f * (b - a));
+      at.push_back(f == 0 || a == b ? a : a + f * (b - a));
     }
     return at;
   };
@@ -397,13 +459,31 @@ CheckResult check(const Environment& env, const ExactPaths& paths, const CheckOp
   // step "meets" can also pair a region with another one that slid into the place it
   // held (a window onto a wall, its view sliding along the wall), which read a cleared
   // region as contaminated (found on a wall-following pursuer's plan).
+  std::vector<ExactFT> events_now;  // the event fractions of the segment being sampled (one mover)
   std::function<void(std::size_t, const ExactFT&, const ExactFT&, int)> along = [&](std::size_t j, const ExactFT& f0,
                                                                                    const ExactFT& f1, int depth) {
     const bool end = f1 >= 1;
-    Moment next = take(env, vis, end ? j + 1 : j, end ? 0 : CGAL::to_double(f1), end ? at_time(j + 1, 0) : at_time(j, f1), exact);
+    Moment next =
+        take(env, vis, end ? j + 1 : j, end ? 0 : CGAL::to_double(f1), end ? at_time(j + 1, 0) : at_time(j, f1), exact, &prev);
     const bool frame = next.fraction == 0 && wanted(next.waypoint);
     Contamination c = step(env, &prev, &cont, next, frame);
     if (c.one_to_one || depth >= kRefine) return commit(std::move(next), std::move(c), frame);
+    // A step across one event (a region appearing, vanishing, splitting or merging there) is
+    // never one to one: bisecting it went 24 levels deep towards the event, two steps per
+    // level, which was most of the samples on office plans. The step across the event is
+    // cut to the length those levels would reach at once, centred on it, and only the
+    // event-free steps beside it are halved further if they slide.
+    const auto in_lo = std::upper_bound(events_now.begin(), events_now.end(), f0);
+    const auto in_hi = std::lower_bound(events_now.begin(), events_now.end(), f1);
+    if (in_hi - in_lo == 1) {
+      const ExactFT& e = *in_lo;
+      const ExactFT half = (f1 - f0) * ExactFT(std::ldexp(1.0, depth - kRefine - 1));
+      const ExactFT a = e - half > f0 ? e - half : (f0 + e) / 2, b = e + half < f1 ? e + half : (e + f1) / 2;
+      along(j, f0, a, depth + 1);
+      along(j, a, b, kRefine);
+      along(j, b, f1, depth + 1);
+      return;
+    }
     const ExactFT mid = (f0 + f1) / 2;
     along(j, f0, mid, depth + 1);
     along(j, mid, f1, depth + 1);
@@ -414,21 +494,36 @@ CheckResult check(const Environment& env, const ExactPaths& paths, const CheckOp
     for (std::size_t l = 0; l < k; ++l)
       if (paths[l][j] != paths[l][j + 1]) moving.push_back(l);
     if (moving.empty()) {
-      if (wanted(j + 1)) advance(take(env, vis, j + 1, 0, at_time(j + 1, 0), exact));
+      if (wanted(j + 1)) advance(take(env, vis, j + 1, 0, at_time(j + 1, 0), exact, &prev));
       continue;
     }
     std::vector<std::pair<ExactFT, std::pair<ExactPoint, ExactPoint>>> ev;
     for (std::size_t l : moving) {
       const ExactPoint &a = paths[l][j], &b = paths[l][j + 1];
-      for (auto [u, w] : lines) crossings(a, b, env.exact_vertex(u), env.exact_vertex(w), ev);
-      if (moving.size() == 1)
-        for (std::size_t s = 0; s < k; ++s)
-          if (s != l)
-            for (auto& z : prev.loops[s])
-              for (std::uint32_t u : reflex) crossings(a, b, env.exact_vertex(u), z, ev);
+      for (const CriticalLine& L : lines) {
+        if (options.every_critical_line) crossings(a, b, env.exact_vertex(L.u), env.exact_vertex(L.w), ev);
+        else ray_crossings(a, b, env.exact_vertex(L.u), env.exact_vertex(L.w), L.from_u, L.from_w, ev);
+      }
+      if (moving.size() != 1) continue;
+      for (std::size_t s = 0; s < k; ++s) {
+        if (s == l) continue;
+        // A waiting pursuer's V: a ray of the mover's V grazing u ends at a wall point z of
+        // it. An environment vertex z is on a static line already when u sees it (and the
+        // ray cannot reach it otherwise): only the constructed wall points count.
+        if (options.every_critical_line) {
+          for (auto& z : prev.loops[s])
+            for (std::uint32_t u : reflex) crossings(a, b, env.exact_vertex(u), z, ev);
+        } else {
+          for (auto& z : prev.ray_hits[s])
+            for (std::uint32_t u : reflex)
+              if (tangent_at(env, u, z)) ray_crossings(a, b, env.exact_vertex(u), z, true, false, ev);
+        }
+      }
     }
     std::sort(ev.begin(), ev.end(), [](auto& x, auto& y) { return x.first < y.first; });
     ev.erase(std::unique(ev.begin(), ev.end(), [](auto& x, auto& y) { return x.first == y.first; }), ev.end());
+    events_now.clear();
+    for (auto& e : ev) events_now.push_back(e.first);
     // Sample fractions: one between every two events (within an interval the shadows only
     // deform); uniform refinement when several pursuers move together.
     std::vector<ExactFT> fr;

@@ -130,6 +130,7 @@ class SegmentArrangement {
   std::vector<ArrangementSegment> segments_;
   std::vector<ExactPoint> vertices_;
   std::vector<Point> approx_;
+  std::vector<double> xlo_, xhi_;  // each vertex's x interval: locate's filter
   std::vector<ArrangementHalfEdge> half_edges_;
   std::vector<std::uint32_t> end_vertex_;
   std::vector<std::uint32_t> edge_he_;

@@ -30,6 +30,13 @@ using ExactPaths = std::vector<std::vector<geometry::ExactPoint>>;
 struct CheckOptions {
   std::size_t substeps = 8;  // samples per segment when several pursuers move together
   std::vector<std::size_t> frames;  // waypoints at which to record a Frame (for figures)
+  /// A moving pursuer's events are where it crosses a critical ray: past a tangent reflex
+  /// vertex u, away from a vertex w that u sees (V gains or loses w behind u), or, while the
+  /// others wait, away from a wall point of a waiting pursuer's V. With this set, every
+  /// crossing of the whole lines through u and w, and through u and every vertex of a waiting
+  /// V, is an event instead (as before 28 November): more samples, the same verdict (the
+  /// tests' reference).
+  bool every_critical_line = false;
 };
 
 /// The state at a waypoint, rounded for drawing.
