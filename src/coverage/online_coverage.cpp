@@ -879,8 +879,9 @@ OnlineComparison compare_with_offline(const BoustrophedonDecomposition& off, con
 OnlineReport plan_online_coverage(const Environment& env, const OnlineOptions& o) {
   const geometry::LocalFrame frame = geometry::LocalFrame::canonical(env);
   if (frame.identity()) return plan_online_in_frame(env, o);
-  // In the plan's canonical frame (the same for every exact translate): sense and plan in the local frame with the robot frame.margin()
-  // wider, then certify the path rounded back to input coordinates (as plan_coverage).
+  // In the plan's canonical frame (the same for every exact translate): sense and plan there
+  // with the robot frame.margin() wider, then certify the path rounded back to input
+  // coordinates (as plan_coverage).
   const double r = o.robot_radius;
   if (!(r > 0) || !std::isfinite(r)) throw InputError("--radius: online coverage needs a robot radius > 0");
   const geometry::Clearance clear(env, r);

@@ -39,24 +39,7 @@ bool exact_along(const Environment& env, bool x_axis, double lo) {
 
 }  // namespace
 
-LocalFrame LocalFrame::canonical(const Environment& env) {
-  LocalFrame f = of(env);
-  if (env.num_vertices() == 0) return f;
-  const auto box = env.bbox();
-  const double extent = std::max(box.xmax() - box.xmin(), box.ymax() - box.ymin());
-  if (!(extent > 0)) return f;
-  // Along an axis the far rule left alone, the box's low end when every difference from it is
-  // exact (x - lo and (x + S) - (lo + S) are one real number: both exact or neither, so a plan
-  // and its exact translates get one local environment).
-  if (f.dx_ == 0 && exact_along(env, true, box.xmin())) f.dx_ = box.xmin();
-  if (f.dy_ == 0 && exact_along(env, false, box.ymin())) f.dy_ = box.ymin();
-  if (f.identity()) return f;
-  const double M = std::max({std::fabs(box.xmin()), std::fabs(box.xmax()), std::fabs(box.ymin()), std::fabs(box.ymax())});
-  f.margin_ = 4 * ulp(M) + std::ldexp(extent, -36);
-  return f;
-}
-
-LocalFrame LocalFrame::of(const Environment& env) {
+LocalFrame LocalFrame::make(const Environment& env, bool canonical) {
   LocalFrame f;
   if (env.num_vertices() == 0) return f;
   const auto box = env.bbox();
@@ -64,6 +47,11 @@ LocalFrame LocalFrame::of(const Environment& env) {
   if (!(extent > 0)) return f;
   f.dx_ = axis_shift(box.xmin(), box.xmax(), extent);
   f.dy_ = axis_shift(box.ymin(), box.ymax(), extent);
+  // Canonical: along an axis the far rule left alone, the box's low end when every
+  // difference from it is exact (x - lo and (x + S) - (lo + S) are one real number: both
+  // exact or neither, so a plan and its exact translates get one local environment).
+  if (canonical && f.dx_ == 0 && exact_along(env, true, box.xmin())) f.dx_ = box.xmin();
+  if (canonical && f.dy_ == 0 && exact_along(env, false, box.ymin())) f.dy_ = box.ymin();
   if (f.identity()) return f;
   // Rounding back moves a point by at most half an ulp of the largest input coordinate per
   // axis (0.71 ulp in all); 4 ulps leave room for the segments between rounded points.

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 
 namespace preimage::pursuit {
@@ -360,34 +361,31 @@ bool tangent_at(const Environment& env, std::uint32_t u, const ExactPoint& z) {
   return sp * sn >= 0;
 }
 
+// The parameter in (0, 1) where segment a -> b crosses the line through p and q, if it does.
+std::optional<ExactFT> crossing(const ExactPoint& ea, const ExactPoint& eb, const ExactPoint& p, const ExactPoint& q) {
+  const int sa = geometry::orientation(p, q, ea), sb = geometry::orientation(p, q, eb);
+  if (sa * sb >= 0) return std::nullopt;
+  const auto d = q - p;
+  const ExactFT ca = d.x() * (ea.y() - p.y()) - d.y() * (ea.x() - p.x());
+  const ExactFT cb = d.x() * (eb.y() - p.y()) - d.y() * (eb.x() - p.x());
+  return ca / (ca - cb);
+}
+
 // Where a pursuer moving on a -> b has an event on the line through p and q (4.3's critical
 // rays): only on the ray from p away from q when p is a tangent reflex vertex (from_p),
 // there a ray of V from the pursuer grazes p and ends at q, or the one from q away from p
 // (from_q). Between p and q, or past a vertex that is not tangent, V keeps its structure,
 // so a crossing there is no event: most of a corridor's lines on office floors were such.
+// With `whole_line` every crossing counts (the sampling before, kept as a reference).
 void ray_crossings(const ExactPoint& ea, const ExactPoint& eb, const ExactPoint& p, const ExactPoint& q, bool from_p, bool from_q,
-                   std::vector<std::pair<ExactFT, std::pair<ExactPoint, ExactPoint>>>& out) {
-  if (!from_p && !from_q) return;
-  const int sa = geometry::orientation(p, q, ea), sb = geometry::orientation(p, q, eb);
-  if (sa * sb >= 0) return;
+                   bool whole_line, std::vector<ExactFT>& out) {
+  if (!whole_line && !from_p && !from_q) return;
+  const auto t = crossing(ea, eb, p, q);
+  if (!t) return;
+  if (whole_line) return out.push_back(*t);
   const auto d = q - p;
-  const ExactFT ca = d.x() * (ea.y() - p.y()) - d.y() * (ea.x() - p.x());
-  const ExactFT cb = d.x() * (eb.y() - p.y()) - d.y() * (eb.x() - p.x());
-  const ExactFT t = ca / (ca - cb);
-  const ExactPoint x = ea + t * (eb - ea);
-  const ExactFT along = (x - p) * d;  // < 0: x beyond p; > |d|^2: beyond q
-  if ((from_p && along < 0) || (from_q && along > d.squared_length())) out.push_back({t, {p, q}});
-}
-
-// Parameters in (0, 1) where segment a -> b crosses the line through p and q.
-void crossings(const ExactPoint& ea, const ExactPoint& eb, const ExactPoint& p, const ExactPoint& q,
-               std::vector<std::pair<ExactFT, std::pair<ExactPoint, ExactPoint>>>& out) {
-  const int sa = geometry::orientation(p, q, ea), sb = geometry::orientation(p, q, eb);
-  if (sa * sb >= 0) return;
-  const auto d = q - p;
-  const ExactFT ca = d.x() * (ea.y() - p.y()) - d.y() * (ea.x() - p.x());
-  const ExactFT cb = d.x() * (eb.y() - p.y()) - d.y() * (eb.x() - p.x());
-  out.push_back({ca / (ca - cb), {p, q}});
+  const ExactFT along = (ea + *t * (eb - ea) - p) * d;  // < 0: beyond p; > |d|^2: beyond q
+  if ((from_p && along < 0) || (from_q && along > d.squared_length())) out.push_back(*t);
 }
 
 CheckResult check(const Environment& env, const ExactPaths& paths, const CheckOptions& options, bool exact) {
@@ -497,38 +495,30 @@ CheckResult check(const Environment& env, const ExactPaths& paths, const CheckOp
       if (wanted(j + 1)) advance(take(env, vis, j + 1, 0, at_time(j + 1, 0), exact, &prev));
       continue;
     }
-    std::vector<std::pair<ExactFT, std::pair<ExactPoint, ExactPoint>>> ev;
+    const bool whole = options.every_critical_line;
+    std::vector<ExactFT>& ev = events_now;
+    ev.clear();
     for (std::size_t l : moving) {
       const ExactPoint &a = paths[l][j], &b = paths[l][j + 1];
-      for (const CriticalLine& L : lines) {
-        if (options.every_critical_line) crossings(a, b, env.exact_vertex(L.u), env.exact_vertex(L.w), ev);
-        else ray_crossings(a, b, env.exact_vertex(L.u), env.exact_vertex(L.w), L.from_u, L.from_w, ev);
-      }
+      for (const CriticalLine& L : lines) ray_crossings(a, b, env.exact_vertex(L.u), env.exact_vertex(L.w), L.from_u, L.from_w, whole, ev);
       if (moving.size() != 1) continue;
       for (std::size_t s = 0; s < k; ++s) {
         if (s == l) continue;
         // A waiting pursuer's V: a ray of the mover's V grazing u ends at a wall point z of
         // it. An environment vertex z is on a static line already when u sees it (and the
         // ray cannot reach it otherwise): only the constructed wall points count.
-        if (options.every_critical_line) {
-          for (auto& z : prev.loops[s])
-            for (std::uint32_t u : reflex) crossings(a, b, env.exact_vertex(u), z, ev);
-        } else {
-          for (auto& z : prev.ray_hits[s])
-            for (std::uint32_t u : reflex)
-              if (tangent_at(env, u, z)) ray_crossings(a, b, env.exact_vertex(u), z, true, false, ev);
-        }
+        for (auto& z : whole ? prev.loops[s] : prev.ray_hits[s])
+          for (std::uint32_t u : reflex)
+            if (whole || tangent_at(env, u, z)) ray_crossings(a, b, env.exact_vertex(u), z, true, false, whole, ev);
       }
     }
-    std::sort(ev.begin(), ev.end(), [](auto& x, auto& y) { return x.first < y.first; });
-    ev.erase(std::unique(ev.begin(), ev.end(), [](auto& x, auto& y) { return x.first == y.first; }), ev.end());
-    events_now.clear();
-    for (auto& e : ev) events_now.push_back(e.first);
+    std::sort(ev.begin(), ev.end());
+    ev.erase(std::unique(ev.begin(), ev.end()), ev.end());
     // Sample fractions: one between every two events (within an interval the shadows only
     // deform); uniform refinement when several pursuers move together.
     std::vector<ExactFT> fr;
     std::vector<ExactFT> cuts{0};
-    for (auto& e : ev) cuts.push_back(e.first);
+    cuts.insert(cuts.end(), ev.begin(), ev.end());
     cuts.push_back(1);
     for (std::size_t i = 0; i + 1 < cuts.size(); ++i) fr.push_back((cuts[i] + cuts[i + 1]) / 2);
     if (moving.size() > 1)

@@ -26,7 +26,7 @@ class LocalFrame {
   LocalFrame() = default;
   /// The frame for env: a translation along each axis whose coordinates all lie more than 16
   /// times the environment's extent from 0, else the identity along it.
-  static LocalFrame of(const Environment& env);
+  static LocalFrame of(const Environment& env) { return make(env, false); }
   /// The frame a whole plan is answered in: the box's low end along every axis where the
   /// translation is exact (always far from 0; near 0 for a plan on a binary grid such as a
   /// snapped or georeferenced one), else of(env) along it. Every exact translate of env gets
@@ -35,7 +35,7 @@ class LocalFrame {
   /// bends, as only the shifted one was translated. Used where a command's answer starts
   /// (plan_coverage, measure_coverage); derived environments inside (a configuration space's
   /// components) keep of(), whose identity near 0 maps back without rounding.
-  static LocalFrame canonical(const Environment& env);
+  static LocalFrame canonical(const Environment& env) { return make(env, true); }
 
   bool identity() const { return dx_ == 0 && dy_ == 0; }
   double dx() const { return dx_; }
@@ -60,6 +60,7 @@ class LocalFrame {
   std::size_t to_input_certified(std::vector<Point>& path, const Clearance& clear) const;
 
  private:
+  static LocalFrame make(const Environment& env, bool canonical);
   double dx_ = 0, dy_ = 0, margin_ = 0;
 };
 
