@@ -25,10 +25,29 @@ namespace preimage::coverage::detail {
 
 namespace {
 
-// Contours of h = lam on the sample grid, as polylines (marching squares; the ambiguous
-// saddle cells split by the cell's mean).
-std::vector<std::vector<Point>> front_polylines(const geometry::ShortestPathMap::Samples& S, double lam) {
+// The grid cells (j C + i, row-major) each level crosses, levels[k] ascending: a cell whose
+// four samples are finite is crossed by every level in (min, max] of them, the levels
+// marching squares would find there. Scanning the whole grid per level took 2.4 s of
+// office 848's 11 s at w 0.3 (266 levels of 2 M cells).
+std::vector<std::vector<std::size_t>> crossed_cells(const geometry::ShortestPathMap::Samples& S, const std::vector<double>& levels) {
   const std::size_t C = S.columns, R = S.rows;
+  std::vector<std::vector<std::size_t>> out(levels.size());
+  for (std::size_t j = 0; j + 1 < R; ++j)
+    for (std::size_t i = 0; i + 1 < C; ++i) {
+      const double v[4] = {S.at(i, j).distance, S.at(i + 1, j).distance, S.at(i + 1, j + 1).distance, S.at(i, j + 1).distance};
+      if (!(std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]) && std::isfinite(v[3]))) continue;
+      const double lo = std::min({v[0], v[1], v[2], v[3]}), hi = std::max({v[0], v[1], v[2], v[3]});
+      const auto first = std::upper_bound(levels.begin(), levels.end(), lo), last = std::upper_bound(levels.begin(), levels.end(), hi);
+      for (auto k = first; k < last; ++k) out[static_cast<std::size_t>(k - levels.begin())].push_back(j * C + i);
+    }
+  return out;
+}
+
+// Contours of h = lam on the sample grid through `cells` (those it crosses, row-major), as
+// polylines (marching squares; the ambiguous saddle cells split by the cell's mean).
+std::vector<std::vector<Point>> front_polylines(const geometry::ShortestPathMap::Samples& S, double lam,
+                                                const std::vector<std::size_t>& cells) {
+  const std::size_t C = S.columns;
   auto value = [&](std::size_t i, std::size_t j) { return S.at(i, j).distance; };
   // crossing ids: horizontal edge (i, j)-(i+1, j) -> 2 (j C + i), vertical (i, j)-(i, j+1) -> 2 (j C + i) + 1
   std::map<std::size_t, Point> at;
@@ -42,39 +61,39 @@ std::vector<std::vector<Point>> front_polylines(const geometry::ShortestPathMap:
     }
     return id;
   };
-  for (std::size_t j = 0; j + 1 < R; ++j)
-    for (std::size_t i = 0; i + 1 < C; ++i) {
-      const double v[4] = {value(i, j), value(i + 1, j), value(i + 1, j + 1), value(i, j + 1)};
-      if (!(std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]) && std::isfinite(v[3]))) continue;
-      // corners counter-clockwise from (i, j); edges 0: bottom, 1: right, 2: top, 3: left
-      const int mask = (v[0] >= lam) | (v[1] >= lam) << 1 | (v[2] >= lam) << 2 | (v[3] >= lam) << 3;
-      if (mask == 0 || mask == 15) continue;
-      auto edge = [&](int e) {
-        switch (e) {
-          case 0: return crossing(i, j, i + 1, j);
-          case 1: return crossing(i + 1, j, i + 1, j + 1);
-          case 2: return crossing(i, j + 1, i + 1, j + 1);
-          default: return crossing(i, j, i, j + 1);
-        }
-      };
-      auto link = [&](int e0, int e1) {
-        const std::size_t a = edge(e0), b = edge(e1);
-        links[a].push_back(b), links[b].push_back(a);
-      };
-      // edges crossed: between corners k and k+1 (edge k) where the sides differ
-      std::vector<int> crossed;
-      for (int k = 0; k < 4; ++k)
-        if (((mask >> k) & 1) != ((mask >> ((k + 1) % 4)) & 1)) crossed.push_back(k);
-      if (crossed.size() == 2) {
-        link(crossed[0], crossed[1]);
-      } else {
-        // a saddle cell: pair each high corner with its neighbours unless the mean is high
-        const bool high_centre = (v[0] + v[1] + v[2] + v[3]) / 4 >= lam;
-        const bool c0_high = mask & 1;
-        if (c0_high != high_centre) link(3, 0), link(1, 2);
-        else link(0, 1), link(2, 3);
+  for (const std::size_t cell : cells) {
+    const std::size_t i = cell % C, j = cell / C;
+    const double v[4] = {value(i, j), value(i + 1, j), value(i + 1, j + 1), value(i, j + 1)};
+    if (!(std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]) && std::isfinite(v[3]))) continue;
+    // corners counter-clockwise from (i, j); edges 0: bottom, 1: right, 2: top, 3: left
+    const int mask = (v[0] >= lam) | (v[1] >= lam) << 1 | (v[2] >= lam) << 2 | (v[3] >= lam) << 3;
+    if (mask == 0 || mask == 15) continue;
+    auto edge = [&](int e) {
+      switch (e) {
+        case 0: return crossing(i, j, i + 1, j);
+        case 1: return crossing(i + 1, j, i + 1, j + 1);
+        case 2: return crossing(i, j + 1, i + 1, j + 1);
+        default: return crossing(i, j, i, j + 1);
       }
+    };
+    auto link = [&](int e0, int e1) {
+      const std::size_t a = edge(e0), b = edge(e1);
+      links[a].push_back(b), links[b].push_back(a);
+    };
+    // edges crossed: between corners k and k+1 (edge k) where the sides differ
+    std::vector<int> crossed;
+    for (int k = 0; k < 4; ++k)
+      if (((mask >> k) & 1) != ((mask >> ((k + 1) % 4)) & 1)) crossed.push_back(k);
+    if (crossed.size() == 2) {
+      link(crossed[0], crossed[1]);
+    } else {
+      // a saddle cell: pair each high corner with its neighbours unless the mean is high
+      const bool high_centre = (v[0] + v[1] + v[2] + v[3]) / 4 >= lam;
+      const bool c0_high = mask & 1;
+      if (c0_high != high_centre) link(3, 0), link(1, 2);
+      else link(0, 1), link(2, 3);
     }
+  }
   std::vector<std::vector<Point>> out;
   std::map<std::size_t, char> used;
   auto walk = [&](std::size_t start) {
@@ -116,6 +135,9 @@ CoverageReport plan_wavefront(const Planning& P) {
   double top = 0;
   for (const auto& q : S.values)
     if (std::isfinite(q.distance)) top = std::max(top, q.distance);
+  std::vector<double> levels;
+  for (double lam = w / 2; lam < top; lam += w) levels.push_back(lam);
+  const auto crossed = crossed_cells(S, levels);
 
   Polyline start_path;
   if (P.o.start) start_path.append(*P.o.start, Move::Transit);
@@ -123,8 +145,8 @@ CoverageReport plan_wavefront(const Planning& P) {
   PathBuilder builder{P, std::move(start_path), 0};
   Polyline& path = builder.path;
   std::size_t laps = 0;
-  for (double lam = w / 2; lam < top; lam += w) {
-    auto arcs = front_polylines(S, lam);
+  for (std::size_t k = 0; k < levels.size(); ++k) {
+    auto arcs = front_polylines(S, levels[k], crossed[k]);
     while (!arcs.empty()) {
       const Point here = path.points.back();
       std::size_t best = 0;
