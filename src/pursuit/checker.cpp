@@ -120,7 +120,9 @@ Moment take(const Environment& env, const geometry::VisibilityIndex& vis, std::s
   };
   for (std::size_t l = 0; l < m.at_exact.size(); ++l) {
     const ExactPoint& e = m.at_exact[l];
-    const Point q = geometry::to_double(e);
+    // Where V is taken on a double path: rounded from the exact sample, so that it does not
+    // depend on what was computed before (see to_double_canonical).
+    const Point q = geometry::to_double_canonical(e);
     m.at.push_back(q);
     m.free_begin.push_back(m.free.size());
     if (like && !env.has_contacts() && like->at_exact.size() == m.at_exact.size() && like->at_exact[l] == e) {

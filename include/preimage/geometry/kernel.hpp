@@ -96,6 +96,13 @@ inline ExactPoint to_exact(const Point& p) { return ExactPoint(p.x(), p.y()); }
 inline Point to_double(const ExactPoint& p) {
   return Point(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
 }
+/// Rounded from the exact value. to_double rounds a lazy number's current interval, which
+/// tightens once anything needs the exact value, so its result depends on what was
+/// computed before; this one does not (the pursuit checker's double samples: house 1451's
+/// verdict changed with the order its moments were taken in). Costs the exact value.
+inline Point to_double_canonical(const ExactPoint& p) {
+  return Point(CGAL::to_double(CGAL::exact(p.x())), CGAL::to_double(CGAL::exact(p.y())));
+}
 
 /// "1.5" — shortest faithful-enough decimal for messages.
 std::string format_number(double v);
