@@ -63,8 +63,7 @@ std::vector<std::vector<Point>> front_polylines(const geometry::ShortestPathMap:
   };
   for (const std::size_t cell : cells) {
     const std::size_t i = cell % C, j = cell / C;
-    const double v[4] = {value(i, j), value(i + 1, j), value(i + 1, j + 1), value(i, j + 1)};
-    if (!(std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]) && std::isfinite(v[3]))) continue;
+    const double v[4] = {value(i, j), value(i + 1, j), value(i + 1, j + 1), value(i, j + 1)};  // finite: crossed_cells
     // corners counter-clockwise from (i, j); edges 0: bottom, 1: right, 2: top, 3: left
     const int mask = (v[0] >= lam) | (v[1] >= lam) << 1 | (v[2] >= lam) << 2 | (v[3] >= lam) << 3;
     if (mask == 0 || mask == 15) continue;

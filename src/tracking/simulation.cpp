@@ -187,6 +187,9 @@ class World {
   }
   const geometry::Environment& env() const { return env_; }
   const geometry::VisibilityIndex& index() const { return index_; }
+  /// The target's speed under this run's policy: the scene's for scripted and random
+  /// targets, speed_ratio x the observer's top speed for the planning ones.
+  double target_speed() const { return target_top_speed_; }
 
   bool interior(const Point& p) const { return geometry::locate(env_, p).kind == geometry::Location::Kind::Interior; }
   bool sees(const Pose& from, const Point& p) const {
@@ -596,7 +599,7 @@ SimulationResult simulate(const TrackingScenario& sc, const SimulationParams& sp
     plan = sc.target_path;
     plan.insert(plan.begin(), t);
   }
-  const double chase = sp.speed_ratio * sp.tracker.control.v_max;  // the planning targets' speed
+  const double stride = world.target_speed() * sp.dt;  // how far the target goes per period
 
   std::size_t seen = 0;
   TrackStep ts;
@@ -622,19 +625,19 @@ SimulationResult simulate(const TrackingScenario& sc, const SimulationParams& sp
     const Point t_before = t;
     switch (sp.policy) {
       case TargetPolicy::Scripted:
-        if (plan.size() >= 2) t = walk(plan, sc.target_speed * sp.dt);
+        if (plan.size() >= 2) t = walk(plan, stride);
         if (!world.interior(t)) t = t_before;  // a path along the boundary: stay in the open
         break;
       case TargetPolicy::Random: {
         while (plan.size() < 2) plan = with_clearance(shortest_path(env, t, random_free()), sc.target.radius);
-        const Point q = world.target_step(t, walk(plan, sc.target_speed * sp.dt));
+        const Point q = world.target_step(t, walk(plan, stride));
         if (q == t) plan.clear();  // blocked (a passage narrower than the target): a new goal next step
         t = q;
         break;
       }
-      case TargetPolicy::Adversarial: t = world.escape_step(o.pose.position, t, chase * sp.dt, plan); break;
-      case TargetPolicy::Lookahead: t = world.lookahead_step(o, t, chase * sp.dt); break;
-      case TargetPolicy::Game: t = world.game_target_step(o.pose.position, t, chase * sp.dt); break;
+      case TargetPolicy::Adversarial: t = world.escape_step(o.pose.position, t, stride, plan); break;
+      case TargetPolicy::Lookahead: t = world.lookahead_step(o, t, stride); break;
+      case TargetPolicy::Game: t = world.game_target_step(o.pose.position, t, stride); break;
     }
     out.target_length += planar_distance(t_before, t);
   }
