@@ -601,7 +601,7 @@ void run_cover(const CoverArgs& a) {
     print_json({{"pattern", a.pattern}, {"center", centre}, {"width", rep.width}, {"robot_radius", rep.robot_radius}, {"angle", rep.angle},
                 {"order", o.pattern == coverage::Pattern::Boustrophedon ? a.order : "dfs"}, {"transit", a.transit},
                 {"length", rep.length}, {"transit_length", rep.transit_length}, {"laps", rep.laps}, {"turns", rep.turns},
-                {"turns_over_15_deg", rep.sharp_turns}, {"rotation_deg", rep.rotation_deg}, {"cells", rep.cells}, {"critical_points", rep.critical_points},
+                {"turns_over_15_deg", rep.sharp_turns}, {"rotation_deg", rep.rotation_deg}, {"cells", rep.cells}, {"turned_cells", rep.turned_cells}, {"critical_points", rep.critical_points},
                 {"cell_order", rep.cell_order}, {"sweeps", rep.sweeps},
                 {"order_optimal", rep.order_optimal}, {"order_lower_bound", rep.order_lower_bound},
                 {"metrics", {{"covered_fraction", m.covered_fraction}, {"overlap", m.overlap}, {"efficiency", m.efficiency},
@@ -622,6 +622,7 @@ void run_cover(const CoverArgs& a) {
             << " (transits " << geometry::format_number(rep.transit_length) << "; bound " << geometry::format_number(rep.bound) << "), "
             << rep.laps << " laps, " << rep.turns << " turns (" << rep.sharp_turns << " over 15 degrees), " << rep.cells << " cells, " << rep.critical_points << " critical points";
   if (rep.touch_ups > 0) std::cout << ", " << rep.touch_ups << " touch-ups";
+  if (rep.turned_cells > 0) std::cout << "; " << rep.turned_cells << " of the decomposition's cells swept at " << geometry::format_number(std::fmod(rep.angle + 90, 360)) << " degrees (fewer laps)";
   std::cout << "\n";
   if (rep.min_turn_radius > 0)
     std::cout << "drivable with turning radius " << geometry::format_number(rep.min_turn_radius) << ": " << rep.arcs.size()
@@ -701,7 +702,7 @@ void add_decompose_commands(CLI::App& app) {
     cmd->add_option("--radius", a->radius, "Robot radius r: the path keeps r from every obstacle (default: the scene's robot.radius, else 0)")
         ->check(number_in(0, geometry::kMaxCoordinate));
     cmd->add_option("--start", a->start, "Start X,Y (default: the scene's \"start\", else where the first sweep begins)");
-    cmd->add_option("--angle", a->angle, "Sweep direction in degrees, or 'auto' to pick the shortest path")->capture_default_str();
+    cmd->add_option("--angle", a->angle, "Sweep direction in degrees, or 'auto': the best-scored directions, each cell turned to the perpendicular where that needs fewer laps, and the cheaper path (length and --turn-cost per turn)")->capture_default_str();
     cmd->add_option("--order", a->order, "optimised (sweeps and order by a generalised TSP) or dfs (6.2.1's depth-first walk)")
         ->check(CLI::IsMember({"optimised", "dfs"}))->capture_default_str();
     cmd->add_option("--transit", a->transit, "shortest (visibility graph) or decomposition (trapezoid midpoints and centroids)")

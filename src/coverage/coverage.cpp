@@ -9,6 +9,7 @@
 #include <preimage/geometry/local_frame.hpp>
 #include <preimage/geometry/queries.hpp>
 
+#include "cell_directions.hpp"
 #include "cell_sweep.hpp"
 #include "coverage_raster.hpp"
 #include "coverage_internal.hpp"
@@ -85,32 +86,59 @@ double dist(const Point& a, const Point& b) { return std::hypot(a.x() - b.x(), a
 
 // What one sweep direction costs before planning it: laps (each a turn) and cells (each
 // a transit), the way ETH's planner ranks directions by the cells' altitudes.
-double direction_score(const BoustrophedonDecomposition& b, double w) {
-  double score = 0;
-  const auto& T = b.trapezoids().cells();
-  for (const auto& c : b.cells()) {
-    const double width = T[c.trapezoids.back()].x_right - T[c.trapezoids.front()].x_left;
-    score += 1 + std::ceil(width / w);
+using detail::direction_score;
+
+// A cell of a boustrophedon decomposition to sweep, with its four sweeps.
+struct SweptCell {
+  const BoustrophedonDecomposition* dec;
+  std::size_t cell;
+  std::array<Polyline, 4> sweeps;
+  std::array<std::size_t, 4> laps;
+};
+
+// The four sweeps of a cell in the input frame, certified (to_input_frame).
+void sweep_four_ways(const Planning& P, SweptCell& s, const geometry::VisibilityIndex* sweep_index) {
+  for (std::uint8_t v = 0; v < 4; ++v) {
+    const auto pts = detail::sweep_cell(*s.dec, s.cell, P.w, v & 1, v & 2, &s.laps[v]);
+    s.sweeps[v] = detail::to_input_frame(*s.dec, P.E, pts, P.index, P.graph, sweep_index);
   }
-  return score;
 }
 
-CoverageReport plan_at(const Planning& P, const BoustrophedonDecomposition& b, double angle) {
+CoverageReport plan_at(const Planning& P, const BoustrophedonDecomposition& b, double angle, bool per_cell_direction) {
   const bool quarter = std::fmod(angle, 90.0) == 0;
   std::optional<VisibilityIndex> sweep_index;
   if (!quarter) sweep_index.emplace(b.sweep_environment());
-  const std::size_t n = b.cells().size();
-  // The four sweeps of every cell, in the input frame, certified.
-  std::vector<std::array<Polyline, 4>> sweeps(n);
-  std::vector<std::array<std::size_t, 4>> laps(n);
+  // The cells to sweep with their four sweeps, in the input frame, certified: b's cells,
+  // and with a direction per cell the cells of the cells turned the other way
+  // (cell_directions.hpp). A turned cell whose sweeps do not all map back certified (a
+  // slice end rounded off a slanted wall) keeps b's direction.
+  detail::CellDirections dirs;
+  if (per_cell_direction) dirs = detail::choose_directions(b, P.w);
+  else for (std::size_t c = 0; c < b.cells().size(); ++c) dirs.kept.push_back(c);
+  std::vector<SweptCell> cells;
+  std::size_t turned = 0;
+  for (const auto& region : dirs.turned) {
+    const std::size_t first = cells.size();
+    try {
+      for (std::size_t k = 0; k < region.dec->cells().size(); ++k) {
+        cells.push_back({region.dec.get(), k, {}, {}});
+        sweep_four_ways(P, cells.back(), nullptr);
+      }
+      ++turned;
+    } catch (const std::logic_error&) {
+      cells.resize(first);
+      dirs.kept.push_back(region.base_cell);
+    }
+  }
+  for (std::size_t c : dirs.kept) {
+    cells.push_back({&b, c, {}, {}});
+    sweep_four_ways(P, cells.back(), sweep_index ? &*sweep_index : nullptr);
+  }
+  const std::size_t n = cells.size();
   std::vector<std::vector<Sweep>> options(n);
   std::size_t detours = 0;
   for (std::size_t c = 0; c < n; ++c)
-    for (std::uint8_t v = 0; v < 4; ++v) {
-      const auto pts = detail::sweep_cell(b, c, P.w, v & 1, v & 2, &laps[c][v]);
-      sweeps[c][v] = detail::to_input_frame(b, P.E, pts, P.index, P.graph, sweep_index ? &*sweep_index : nullptr);
-      options[c].push_back({sweeps[c][v].points.front(), sweeps[c][v].points.back(), sweeps[c][v].length()});
-    }
+    for (const Polyline& s : cells[c].sweeps) options[c].push_back({s.points.front(), s.points.back(), s.length()});
 
   // Transits: shortest paths in the component, or (the paper's planner) through the
   // trapezoids of its decomposition.
@@ -163,13 +191,13 @@ CoverageReport plan_at(const Planning& P, const BoustrophedonDecomposition& b, d
   if (P.o.start) path.append(*P.o.start, Move::Transit);
   if (P.start && *P.start != path.points.back()) path.append(*P.start, Move::Transit);
   for (std::size_t k = 0; k < order.size(); ++k) {
-    const Polyline& s = sweeps[order[k]][chosen[k]];
+    const Polyline& s = cells[order[k]].sweeps[chosen[k]];
     if (!path.points.empty())
       for (const Point& p : transit_path(path.points.back(), s.points.front())) path.append(p, Move::Transit);
     path.append(s.points.front(), Move::Transit);
     for (std::size_t i = 1; i < s.points.size(); ++i) path.append(s.points[i], s.moves[i - 1]);
     detours += s.detours;
-    rep.laps += laps[order[k]][chosen[k]];
+    rep.laps += cells[order[k]].laps[chosen[k]];
   }
   detail::finish_path(P, std::move(path), rep);
   rep.rounding_detours = detours;
@@ -177,6 +205,7 @@ CoverageReport plan_at(const Planning& P, const BoustrophedonDecomposition& b, d
   rep.cell_order = order;
   rep.sweeps = chosen;
   rep.cells = n;
+  rep.turned_cells = turned;
   rep.critical_points = b.critical_slices().size();
   return rep;
 }
@@ -388,6 +417,9 @@ void touch_up(const Planning& P, CoverageReport& rep) {
 // and the shorter path kept.
 CoverageReport plan_boustrophedon(const Planning& P) {
   std::vector<double> angles;
+  // A direction per cell where the direction is chosen (auto) and the cells are ordered by
+  // the generalised TSP (6.2.1's depth-first walk runs over one decomposition's adjacency).
+  const bool per_cell = !P.o.angle_deg && P.o.order == CellOrder::Optimised;
   if (P.o.angle_deg) {
     angles.push_back(*P.o.angle_deg);
   } else {
@@ -405,7 +437,8 @@ CoverageReport plan_boustrophedon(const Planning& P) {
     std::vector<std::pair<double, double>> scored;
     for (double a : candidates) {
       try {
-        scored.emplace_back(direction_score(BoustrophedonDecomposition(P.E, a), P.w), a);
+        const BoustrophedonDecomposition b(P.E, a);
+        scored.emplace_back(per_cell ? detail::choose_directions(b, P.w).score : direction_score(b, P.w), a);
       } catch (const InputError&) {
         // this direction made the rotated environment invalid: skip it
       }
@@ -416,8 +449,10 @@ CoverageReport plan_boustrophedon(const Planning& P) {
   }
   std::optional<CoverageReport> best;
   for (double a : angles) {
-    CoverageReport cand = plan_at(P, BoustrophedonDecomposition(P.E, a), a);
-    if (!best || cand.length < best->length) best = std::move(cand);
+    CoverageReport cand = plan_at(P, BoustrophedonDecomposition(P.E, a), a, per_cell);
+    // The cheaper path, a turn (over 1°) worth turn_cost metres (--turn-cost, as merged bends).
+    const auto cost = [&](const CoverageReport& r) { return r.length + P.o.turn_cost * static_cast<double>(r.turns); };
+    if (!best || cost(cand) < cost(*best)) best = std::move(cand);
   }
   return std::move(*best);
 }

@@ -263,3 +263,22 @@ TEST(Coverage, MergedBendsCostAtMostTheTurnCostPerVertexSaved) {
       EXPECT_TRUE(in_cspace(house, merged.path[i], merged.path[i + 1], w / 2)) << "W " << w << " segment " << i;
   }
 }
+
+// Issue 49, a sweep direction per cell: a room with a long horizontal pillar on the left
+// and a long vertical one on the right. Either global direction sweeps two long strips
+// across their length, with many short laps (two quarter turns each); with --angle auto
+// those cells are decomposed again at the perpendicular direction, so the path has fewer
+// laps than at 0 or 90 degrees, and stays certified and complete (independent oracles).
+TEST(Coverage, CellsAcrossTheSweepAreSweptTheOtherWay) {
+  const Environment room = Environment::make({{0, 0}, {40, 0}, {40, 20}, {0, 20}},
+                                             {{{2, 9}, {18, 9}, {18, 11}, {2, 11}}, {{29, 2}, {31, 2}, {31, 18}, {29, 18}}});
+  for (const double w : {0.5, 1.0}) {
+    const auto at0 = check(room, w, w / 2, 0.0, "pillars at 0", 160);
+    const auto at90 = check(room, w, w / 2, 90.0, "pillars at 90", 160);
+    EXPECT_EQ(at0.turned_cells, 0u);  // a direction given is kept for every cell
+    const auto both = check(room, w, w / 2, std::nullopt, "pillars auto", 160);
+    EXPECT_GT(both.turned_cells, 0u) << "W " << w;
+    EXPECT_LT(both.laps, std::min(at0.laps, at90.laps)) << "W " << w << ": " << both.laps << " laps vs " << at0.laps << " and " << at90.laps;
+    EXPECT_LT(both.sharp_turns, std::min(at0.sharp_turns, at90.sharp_turns)) << "W " << w;
+  }
+}

@@ -108,6 +108,10 @@ struct CoverageReport {
   std::vector<std::size_t> cusps;
   double width = 0, robot_radius = 0;
   std::size_t laps = 0, cells = 0, critical_points = 0;
+  // With --angle auto: cells of the decomposition swept at the perpendicular direction
+  // (decomposed again on their own there), because that needs fewer laps; `cells` counts
+  // the cells swept.
+  std::size_t turned_cells = 0;
   // Heading changes over 1 degree, and over 15 degrees; a curvature-limited path changes
   // heading only along arcs, so there each arc (a run turning one way) is one turn.
   std::size_t turns = 0, sharp_turns = 0;
