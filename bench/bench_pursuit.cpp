@@ -115,7 +115,16 @@ void search_unmerged(benchmark::State& state, std::string name) {
 // samples at the critical rays (preimage) against samples at every crossing of the whole
 // lines through a reflex vertex and a vertex, or a vertex of a waiting V (reference: the
 // sampling before 28 November; both share the rest of the checker).
-void checker(benchmark::State& state, std::string name, bool every_line) {
+// checker-threads: the steps built on every core against one thread (real time: the
+// threads' CPU is not the caller's). checker-keys: regions carried into the next overlay by
+// their stretch keys against locating a point of each (one thread each).
+struct CheckerRun {
+  bool every_line = false;
+  unsigned threads = 1;
+  bool locate_regions = false;
+};
+
+void checker(benchmark::State& state, std::string name, CheckerRun run) {
   static std::map<std::string, std::unique_ptr<std::pair<geometry::Environment, pursuit::Plan>>> plans;
   auto& p = plans[name];
   if (!p) {
@@ -124,7 +133,9 @@ void checker(benchmark::State& state, std::string name, bool every_line) {
     p = std::make_unique<std::pair<geometry::Environment, pursuit::Plan>>(std::move(env), std::move(plan));
   }
   pursuit::CheckOptions o;
-  o.every_critical_line = every_line;
+  o.every_critical_line = run.every_line;
+  o.threads = run.threads;
+  o.locate_regions = run.locate_regions;
   pursuit::CheckResult r;
   for (auto _ : state) {
     r = pursuit::check_paths(p->first, p->second.paths, o);
@@ -140,12 +151,21 @@ void checker(benchmark::State& state, std::string name, bool every_line) {
 
 int main(int argc, char** argv) {
   for (const char* n : {"office-2x3", "rectilinear-6x5"}) {
-    benchmark::RegisterBenchmark(("checker/preimage/" + std::string(n)).c_str(), checker, std::string(n), false)
-        ->Unit(benchmark::kMillisecond)
-        ->Iterations(1);
-    benchmark::RegisterBenchmark(("checker/reference/" + std::string(n)).c_str(), checker, std::string(n), true)
-        ->Unit(benchmark::kMillisecond)
-        ->Iterations(1);
+    const std::pair<const char*, std::pair<CheckerRun, CheckerRun>> families[] = {
+        {"checker", {{false, 1, false}, {true, 1, false}}},
+        {"checker-threads", {{false, 0, false}, {false, 1, false}}},
+        {"checker-keys", {{false, 1, false}, {false, 1, true}}},
+    };
+    for (const auto& [family, runs] : families) {
+      benchmark::RegisterBenchmark((std::string(family) + "/preimage/" + n).c_str(), checker, std::string(n), runs.first)
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime()
+          ->Iterations(1);
+      benchmark::RegisterBenchmark((std::string(family) + "/reference/" + n).c_str(), checker, std::string(n), runs.second)
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime()
+          ->Iterations(1);
+    }
   }
   for (const char* n : kCases) {
     benchmark::RegisterBenchmark(("pursuit-pipeline/" + std::string(n)).c_str(), pipeline, std::string(n))->Unit(benchmark::kMillisecond);

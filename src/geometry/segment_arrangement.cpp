@@ -523,8 +523,6 @@ std::optional<std::uint32_t> SegmentArrangement::locate(const ExactPoint& p, boo
   // right-to-left half-edge); at a vertex, the wedge holding the direction south.
   const auto& H = half_edges_;
   const auto& V = vertices_;
-  std::optional<ExactFT> best;
-  std::uint32_t best_he = kNone;
   auto at_vertex = [&](std::uint32_t w) {
     const ExactPoint south(V[w].x(), V[w].y() - 1);
     const std::uint32_t b = out_begin_[w], e = out_begin_[w + 1];
@@ -533,14 +531,41 @@ std::optional<std::uint32_t> SegmentArrangement::locate(const ExactPoint& p, boo
       if (ccw_less(V[w], V[H[out_[k]].target], south)) pick = out_[k];
     return pick;
   };
-  auto offer = [&](const ExactFT& y, std::uint32_t he) {
-    if (!best || y < *best) best = y, best_he = he;
+  // Heights above p are compared on intervals first (built from the coordinates' own
+  // intervals, no lazy construction: constructing every crossing's exact height was most of
+  // the checker's point location), and exactly only where two intervals overlap.
+  using I = CGAL::Interval_nt<true>;
+  auto interval = [](const CGAL::Interval_nt<false>& x) { return I(x.inf(), x.sup()); };
+  const I px = interval(p.approx().x()), py = interval(p.approx().y());
+  struct Candidate {
+    std::uint32_t a = kNone, b = kNone;  // the edge's ends, or a = the vertex and b = kNone
+    std::uint32_t he = kNone;
+    I y;
+  };
+  auto exact_y = [&](const Candidate& c) -> ExactFT {
+    if (c.b == kNone) return V[c.a].y();
+    const ExactPoint &a = V[c.a], &b = V[c.b];
+    return a.y() + (p.x() - a.x()) * (b.y() - a.y()) / (b.x() - a.x());
+  };
+  std::optional<Candidate> best;
+  std::optional<ExactFT> best_exact;
+  auto offer = [&](const Candidate& c) {
+    if (best) {
+      if (c.y.inf() > best->y.sup()) return;
+      if (!(c.y.sup() < best->y.inf())) {
+        if (!best_exact) best_exact = exact_y(*best);
+        ExactFT e = exact_y(c);
+        if (!(e < *best_exact)) return;
+        best = c, best_exact = std::move(e);
+        return;
+      }
+    }
+    best = c, best_exact.reset();
   };
   // Edges whose x-range misses p's are dropped on the coordinates' intervals (no exact
   // number is built: reading x() of a lazy point allocates, and doing that for every edge
   // was 58 % of the pursuit checker's time on an office floor); the rest compare exactly.
-  const auto pi = p.approx().x();
-  const double plo = pi.inf(), phi = pi.sup();
+  const double plo = px.inf(), phi = px.sup();
   for (std::uint32_t h = 0; h < H.size(); h += 2) {
     const std::uint32_t ia = H[h].origin, ib = H[h].target;
     if (xhi_[ia] < plo && xhi_[ib] < plo) continue;
@@ -557,14 +582,19 @@ std::optional<std::uint32_t> SegmentArrangement::locate(const ExactPoint& p, boo
     if (ca == CGAL::EQUAL || cb == CGAL::EQUAL) {
       // Vertical edge or an end on the vertical line: the lowest such end above p.
       for (std::uint32_t w : {ia, ib})
-        if (CGAL::compare_x(V[w], p) == CGAL::EQUAL && CGAL::compare_y(V[w], p) == CGAL::LARGER) offer(V[w].y(), at_vertex(w));
+        if (CGAL::compare_x(V[w], p) == CGAL::EQUAL && CGAL::compare_y(V[w], p) == CGAL::LARGER)
+          offer({w, kNone, at_vertex(w), interval(V[w].approx().y())});
       continue;
     }
-    const ExactFT y = a.y() + (p.x() - a.x()) * (b.y() - a.y()) / (b.x() - a.x());
-    if (y > p.y()) offer(y, a.x() > b.x() ? h : h + 1);
+    // The edge's height at p.x: above p exactly when p lies below the edge (p is not on it).
+    const I ax = interval(a.approx().x()), ay = interval(a.approx().y());
+    const I bx = interval(b.approx().x()), by = interval(b.approx().y());
+    const Candidate c{ia, ib, a.x() > b.x() ? h : h + 1, ay + (px - ax) * (by - ay) / (bx - ax)};
+    const bool above = c.y.inf() > py.sup() ? true : c.y.sup() < py.inf() ? false : exact_y(c) > p.y();
+    if (above) offer(c);
   }
-  if (best_he == kNone) return std::nullopt;
-  const std::uint32_t r = region_of(best_he);
+  if (!best) return std::nullopt;
+  const std::uint32_t r = region_of(best->he);
   if (r == kNone) return std::nullopt;
   return r;
 }

@@ -4,7 +4,9 @@
 // the overlay lies in one face of each moment's own subdivision, so "a shadow region at
 // t2 meets the contaminated set at t1" becomes "some face of the overlay is in both".
 // Visibility of a face is decided by an exact point-in-polygon test of its sample point
-// against each V; nothing here knows about gaps, cells or labels.
+// against each V; nothing here knows about gaps, cells or labels. The steps are geometry
+// alone, so path segments are built on several threads (`StepSummary`) and the
+// contamination is carried through them in order on the calling thread (`Contamination`).
 #include <preimage/pursuit/checker.hpp>
 
 #include <preimage/error.hpp>
@@ -15,9 +17,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <condition_variable>
+#include <exception>
 #include <functional>
+#include <limits>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
+#include <thread>
 
 namespace preimage::pursuit {
 
@@ -202,20 +210,6 @@ bool hidden(const Moment& m, const ExactPoint& p) {
   return true;
 }
 
-// The contaminated set after a moment: one witness point per face of each contaminated region.
-struct Contamination {
-  std::vector<ExactPoint> witnesses;
-  std::vector<Point> regions;  // one point per contaminated region
-  std::vector<ExactPoint> exact_regions;
-  double area = 0;
-  bool recontaminated = false;
-  Point recontaminated_at;
-  std::vector<std::vector<std::vector<Point>>> polygons;  // contaminated faces as rings (when asked)
-  /// Every shadow region of the previous moment meets exactly one of this moment and vice
-  /// versa: the step followed each region (the only correspondence without an event).
-  bool one_to_one = true;
-};
-
 double face_area(const geometry::SegmentArrangement& A, std::size_t r) {
   double twice = 0;
   for (std::uint32_t h : A.region_half_edges(r)) {
@@ -225,18 +219,100 @@ double face_area(const geometry::SegmentArrangement& A, std::size_t r) {
   return twice / 2;
 }
 
-// One step from `prev` (contamination `cont`, or everything hidden if null) to `next`.
-Contamination step(const Environment& env, const Moment* prev, const Contamination* cont, const Moment& next,
-                   bool polygons = false) {
+constexpr std::uint32_t kNoClass = std::numeric_limits<std::uint32_t>::max();
+
+// What a step from one moment to the next says about contamination, computed from the
+// geometry alone so that steps can be built on several threads and the contamination
+// carried through them afterwards, in order (`Contamination::advance`).
+//
+// The overlay's faces are grouped two ways: by the earlier moment's own subdivision (its
+// "classes": joined across the later moment's free edges only) and by the later one's (its
+// regions). Both groupings are intrinsic to their moment, so the regions of the later moment
+// here are the classes of the same moment in the next step's overlay, where each is found
+// by its stretch key (or by locating a point inside it) to carry its contamination over
+// (`from_prev`).
+struct StepSummary {
+  std::size_t waypoint = 0;
+  double fraction = 0;
+  Point at0;               // the first pursuer, for "cleared at"
+  bool initial = false;    // no earlier moment: every shadow region is contaminated
+  bool one_to_one = true;  // every shadow region of each moment meets exactly one of the other
+  // Classes of the earlier moment: hidden from every pursuer then.
+  std::vector<char> hidden1;
+  // The previous step's regions, each mapped to the class holding it here (kNoClass when
+  // it was not located). Empty at the first step of a segment, whose previous step another
+  // thread built: then the overlay is kept to locate them in.
+  std::vector<std::uint32_t> from_prev;
+  std::shared_ptr<const geometry::SegmentArrangement> overlay;
+  std::vector<std::uint32_t> class_of_face;
+  // Regions of the later moment hidden from everybody: a point strictly inside each (its
+  // first face's sample), and their faces in the overlay's order.
+  std::vector<ExactPoint> region_sample;
+  std::vector<std::uint64_t> region_key;  // the smallest stretch key on each region's boundary
+  struct Face {
+    std::uint32_t region, cls;
+    double area;  // from the vertices' intervals: for reports, decided by nothing
+    ExactPoint sample;
+  };
+  std::vector<Face> faces;
+  // At a waypoint drawn as a frame: the pursuers, their V and every hidden face's rings.
+  bool frame = false;
+  std::vector<Point> pursuers;
+  std::vector<std::vector<Point>> visible;
+  std::vector<std::vector<std::vector<Point>>> face_rings;
+};
+
+// A stretch of a moment's free edge, and one side of it: free edge i (its index in the
+// moment), between its c-th and (c+1)-th meeting with other free edges of the same moment,
+// left or right. The face of the moment's own subdivision beside the stretch is the same
+// in the two overlays the moment is part of (with the moment before and the one after), so
+// the key names that face in both without locating a point: every face of a moment's
+// subdivision has one of its free edges on its boundary unless nobody's view is cut.
+using StretchKey = std::uint64_t;
+constexpr StretchKey kNoKey = std::numeric_limits<StretchKey>::max();
+StretchKey stretch_key(std::uint32_t free_index, std::uint32_t meetings, bool right) {
+  return (static_cast<StretchKey>(free_index) << 32) | (static_cast<StretchKey>(meetings) << 1) | (right ? 1 : 0);
+}
+
+// For every piece of the arrangement's segments that are free edges of one moment
+// (`index`: the segment's index in that moment's free list, or kNoClass), calls
+// visit(key, region on that side).
+template <class Visit>
+void stretches(const geometry::SegmentArrangement& A, const std::vector<std::uint32_t>& index, Visit&& visit) {
+  const auto& H = A.half_edges();
+  for (std::uint32_t s = 0; s < index.size(); ++s) {
+    if (index[s] == kNoClass) continue;
+    const auto [first, last] = A.segment_pieces(s);
+    std::uint32_t meetings = 0;
+    for (std::uint32_t h = first; h < last; h += 2) {
+      if (h != first)
+        for (std::uint32_t o : A.outgoing(H[h].origin)) {
+          const std::uint32_t t = H[o].segment;
+          if (t != geometry::kNone && t != s && index[t] != kNoClass) {
+            ++meetings;
+            break;
+          }
+        }
+      visit(stretch_key(index[s], meetings, false), A.region_of(h));
+      visit(stretch_key(index[s], meetings, true), A.region_of(h + 1));
+    }
+  }
+}
+
+// One step from `prev` (none at the first moment) to `next`. `before`: the previous step
+// when this thread built it, to map its regions here.
+StepSummary summarise(const Environment& env, const Moment* prev, const Moment& next, const StepSummary* before, bool frame,
+                      bool locate_regions) {
   // Overlay: both moments' free edges, equal ones merged.
   struct Item {
     FreeSeg s;
     bool in_prev;
+    std::uint32_t index;  // in its moment's free list
   };
   std::vector<Item> items;
   if (prev)
-    for (auto& f : prev->free) items.push_back({f, true});
-  for (auto& f : next.free) items.push_back({f, false});
+    for (std::uint32_t i = 0; i < prev->free.size(); ++i) items.push_back({prev->free[i], true, i});
+  for (std::uint32_t i = 0; i < next.free.size(); ++i) items.push_back({next.free[i], false, i});
   // A waiting pursuer's free edges are the same lazy points in both moments (take reuses
   // its V): compare the handles first, as equal constructed points cannot be told apart by
   // their intervals and went to exact arithmetic through an exception every time.
@@ -250,109 +326,176 @@ Contamination step(const Environment& env, const Moment* prev, const Contaminati
   });
   std::vector<geometry::ArrangementSegment> segs;
   std::vector<char> of_prev, of_next;
+  std::vector<std::uint32_t> prev_index, next_index;  // the segment's (smallest) index in each moment's list
   for (auto& it : items) {
     if (segs.empty() || cmp(segs.back().from, it.s.a) != CGAL::EQUAL || cmp(segs.back().to, it.s.b) != CGAL::EQUAL) {
       segs.push_back({it.s.a, it.s.b, it.s.ea, it.s.eb, it.s.carrier});
       of_prev.push_back(0), of_next.push_back(0);
+      prev_index.push_back(kNoClass), next_index.push_back(kNoClass);
     }
     (it.in_prev ? of_prev : of_next).back() = 1;
+    auto& index = (it.in_prev ? prev_index : next_index).back();
+    index = std::min(index, it.index);
   }
-  const auto A = geometry::SegmentArrangement::build(env, std::move(segs), {}, nullptr, true);
-  const auto& H = A.half_edges();
-  const std::size_t nr = A.num_regions();
+  auto A = std::make_shared<geometry::SegmentArrangement>(geometry::SegmentArrangement::build(env, std::move(segs), {}, nullptr, true));
+  const auto& H = A->half_edges();
+  const std::size_t nr = A->num_regions();
   // Faces of each moment's own subdivision: join across the other moment's edges only.
   UnionFind f1(nr), f2(nr);
   for (std::uint32_t h = 0; h < H.size(); h += 2) {
     const std::uint32_t s = H[h].segment;
     if (s == geometry::kNone) continue;
-    if (A.region_of(h) == geometry::kNone || A.region_of(h + 1) == geometry::kNone)
+    if (A->region_of(h) == geometry::kNone || A->region_of(h + 1) == geometry::kNone)
       throw std::logic_error("pursuit checker: a free edge outside free space near " +
-                             geometry::format_point(A.approx_vertices()[H[h].origin]) + " (segment " +
-                             geometry::format_point(geometry::to_double(A.segments()[s].from)) + " - " +
-                             geometry::format_point(geometry::to_double(A.segments()[s].to)) + ", pursuer at " +
+                             geometry::format_point(A->approx_vertices()[H[h].origin]) + " (segment " +
+                             geometry::format_point(geometry::to_double(A->segments()[s].from)) + " - " +
+                             geometry::format_point(geometry::to_double(A->segments()[s].to)) + ", pursuer at " +
                              geometry::format_point(next.at[0]) + ")");
-    if (!of_prev[s]) f1.join(A.region_of(h), A.region_of(h + 1));
-    if (!of_next[s]) f2.join(A.region_of(h), A.region_of(h + 1));
+    if (!of_prev[s]) f1.join(A->region_of(h), A->region_of(h + 1));
+    if (!of_next[s]) f2.join(A->region_of(h), A->region_of(h + 1));
   }
   // The faces meet at a contact point only there (the arrangement glues the rings): the
   // evader passes through it while nobody sees it.
   if (env.has_contacts())
     for (std::uint32_t v = 0; v < env.num_vertices(); ++v) {
       if (!env.is_contact(v)) continue;
-      const std::uint32_t a = A.region_of(A.first_piece(v)), b = A.region_of(A.first_piece(env.same_point_next(v)));
+      const std::uint32_t a = A->region_of(A->first_piece(v)), b = A->region_of(A->first_piece(env.same_point_next(v)));
       if (prev && !prev->contact_seen[v]) f1.join(a, b);
       if (!next.contact_seen[v]) f2.join(a, b);
     }
-  // Contaminated faces of the previous moment: those holding a witness.
-  std::vector<char> cont1(nr, 0), clear_shadow1(nr, 0);
-  if (cont) {
-    for (auto& w : cont->witnesses)
-      if (auto r = A.locate_closed(w)) cont1[f1.find(*r)] = 1;
-    for (std::uint32_t r = 0; r < nr; ++r) {
-      const std::uint32_t root = f1.find(r);
-      if (root == r && !cont1[root] && hidden(*prev, A.sample(r))) clear_shadow1[root] = 1;
+  StepSummary out;
+  out.waypoint = next.waypoint, out.fraction = next.fraction, out.at0 = next.at[0];
+  out.initial = prev == nullptr;
+  // Classes of the earlier moment, numbered in face order, and whether each is hidden.
+  std::vector<std::uint32_t> cls(nr, kNoClass);
+  std::uint32_t classes = 0;
+  for (std::uint32_t r = 0; r < nr; ++r) {
+    const std::uint32_t root = f1.find(r);
+    if (cls[root] == kNoClass) {
+      cls[root] = classes++;
+      if (prev) out.hidden1.push_back(hidden(*prev, A->sample(root)));
     }
+    cls[r] = cls[root];
   }
-  // Regions of the next moment hidden from everybody, and whether they meet the old set.
-  std::vector<char> hidden2(nr, 0), cont2(nr, 0), seen(nr, 0);
-  Contamination out;
+  // Regions of the later moment hidden from everybody, numbered in face order.
+  std::vector<char> hidden2(nr, 0), seen(nr, 0);
+  std::vector<std::uint32_t> region(nr, kNoClass);
   for (std::uint32_t r = 0; r < nr; ++r) {
     const std::uint32_t root = f2.find(r);
-    if (!seen[root]) seen[root] = 1, hidden2[root] = hidden(next, A.sample(root));
-  }
-  for (std::uint32_t r = 0; r < nr; ++r) {
-    const std::uint32_t root = f2.find(r);
-    if (hidden2[root] && (!cont || cont1[f1.find(r)])) cont2[root] = 1;
-  }
-  if (prev) {
-    // Which shadow regions of the two moments meet (through a face hidden at both).
-    std::vector<char> hidden1(nr, 0), seen1(nr, 0);
-    std::vector<long> partner1(nr, -1), partner2(nr, -1);
-    for (std::uint32_t r = 0; r < nr; ++r) {
-      const std::uint32_t root = f1.find(r);
-      if (!seen1[root]) seen1[root] = 1, hidden1[root] = hidden(*prev, A.sample(root));
-    }
-    auto pair = [&](std::vector<long>& slot, std::uint32_t a, std::uint32_t b) {
-      if (slot[a] == -1) slot[a] = b;
-      else if (slot[a] != static_cast<long>(b)) out.one_to_one = false;
-    };
-    for (std::uint32_t r = 0; r < nr; ++r) {
-      const std::uint32_t a = f1.find(r), b = f2.find(r);
-      if (hidden1[a] && hidden2[b]) pair(partner1, a, b), pair(partner2, b, a);
-    }
-    for (std::uint32_t r = 0; r < nr; ++r) {
-      if (f1.find(r) == r && hidden1[r] && partner1[r] == -1) out.one_to_one = false;
-      if (f2.find(r) == r && hidden2[r] && partner2[r] == -1) out.one_to_one = false;
-    }
-  }
-  std::vector<char> reported(nr, 0);
-  for (std::uint32_t r = 0; r < nr; ++r) {
-    const std::uint32_t root = f2.find(r);
-    if (!cont2[root]) continue;
-    out.witnesses.push_back(A.sample(r));
-    out.area += face_area(A, r);
-    if (polygons) {
+    if (!seen[root]) seen[root] = 1, hidden2[root] = hidden(next, A->sample(root));
+    if (!hidden2[root]) continue;
+    if (region[root] == kNoClass) region[root] = static_cast<std::uint32_t>(out.region_sample.size()), out.region_sample.push_back(A->sample(r));
+    out.faces.push_back({region[root], cls[r], face_area(*A, r), A->sample(r)});
+    if (frame) {
       std::vector<std::vector<Point>> rings;
-      for (std::uint32_t h0 : A.region_cycles(r)) {
+      for (std::uint32_t h0 : A->region_cycles(r)) {
         rings.emplace_back();
         for (std::uint32_t h = h0;;) {
-          rings.back().push_back(A.approx_vertices()[H[h].origin]);
+          rings.back().push_back(A->approx_vertices()[H[h].origin]);
           h = H[h].next;
           if (h == h0) break;
         }
       }
-      out.polygons.push_back(std::move(rings));
+      out.face_rings.push_back(std::move(rings));
     }
-    if (!reported[root]) {
-      reported[root] = 1;
-      out.regions.push_back(geometry::to_double(A.sample(r)));
-      out.exact_regions.push_back(A.sample(r));
+  }
+  if (prev) {
+    // Which shadow regions of the two moments meet (through a face hidden at both).
+    std::vector<long> partner1(classes, -1), partner2(out.region_sample.size(), -1);
+    auto pair = [&](std::vector<long>& slot, std::uint32_t a, std::uint32_t b) {
+      if (slot[a] == -1) slot[a] = b;
+      else if (slot[a] != static_cast<long>(b)) out.one_to_one = false;
+    };
+    for (const auto& f : out.faces)
+      if (out.hidden1[f.cls]) pair(partner1, f.cls, f.region), pair(partner2, f.region, f.cls);
+    for (std::uint32_t c = 0; c < classes; ++c)
+      if (out.hidden1[c] && partner1[c] == -1) out.one_to_one = false;
+    for (long p : partner2)
+      if (p == -1) out.one_to_one = false;
+  }
+  // Each hidden region's smallest stretch key, for the next step to find it by.
+  out.region_key.assign(out.region_sample.size(), kNoKey);
+  stretches(*A, next_index, [&](StretchKey key, std::uint32_t r) {
+    if (r == geometry::kNone) return;
+    const std::uint32_t root = f2.find(r);
+    if (hidden2[root]) out.region_key[region[root]] = std::min(out.region_key[region[root]], key);
+  });
+  if (before) {
+    // The previous step's regions are classes here: found by their keys, or else located.
+    std::vector<std::pair<StretchKey, std::uint32_t>> keyed;
+    stretches(*A, prev_index, [&](StretchKey key, std::uint32_t r) {
+      if (r != geometry::kNone) keyed.emplace_back(key, cls[r]);
+    });
+    std::sort(keyed.begin(), keyed.end());
+    for (std::size_t i = 0; i < before->region_sample.size(); ++i) {
+      const StretchKey key = before->region_key[i];
+      const auto it = std::lower_bound(keyed.begin(), keyed.end(), std::make_pair(key, std::uint32_t{0}));
+      if (!locate_regions && key != kNoKey && it != keyed.end() && it->first == key) {
+        out.from_prev.push_back(it->second);
+      } else {
+        const auto r = A->locate_closed(before->region_sample[i]);
+        out.from_prev.push_back(r ? cls[*r] : kNoClass);
+      }
     }
-    if (cont && clear_shadow1[f1.find(r)] && !out.recontaminated)
-      out.recontaminated = true, out.recontaminated_at = geometry::to_double(A.sample(r));
+  } else if (prev) {
+    out.overlay = std::move(A);
+    out.class_of_face = std::move(cls);
+  }
+  if (frame) {
+    out.frame = true;
+    out.pursuers = next.at;
+    for (auto& loop : next.loops) {
+      out.visible.emplace_back();
+      for (auto& p : loop) out.visible.back().push_back(geometry::to_double(p));
+    }
   }
   return out;
 }
+
+// The contaminated regions, carried from step to step.
+struct Contamination {
+  std::vector<char> region;  // per region of the last step: contaminated
+  const StepSummary* last = nullptr;
+  std::vector<ExactPoint> last_samples;  // its region samples (the summary is freed)
+  double area = 0;
+  std::vector<std::vector<std::vector<Point>>> polygons;  // contaminated faces (at a frame)
+  std::optional<ExactPoint> recontaminated_at;
+  std::size_t count() const { return static_cast<std::size_t>(std::count(region.begin(), region.end(), 1)); }
+
+  // A shadow region of the later moment is contaminated iff it meets a contaminated class
+  // (region) of the earlier one; a class hidden then but clean whose face it shares with a
+  // contaminated region is recontaminated.
+  void advance(const StepSummary& S) {
+    std::vector<char> cont1(S.hidden1.size(), 0);
+    if (!S.initial) {
+      for (std::size_t i = 0; i < region.size(); ++i) {
+        if (!region[i]) continue;
+        std::uint32_t c = kNoClass;
+        if (!S.from_prev.empty()) {
+          c = S.from_prev[i];
+        } else if (const auto r = S.overlay->locate_closed(last_samples[i])) {
+          c = S.class_of_face[*r];
+        }
+        if (c != kNoClass) cont1[c] = 1;
+      }
+    }
+    std::vector<char> next(S.region_sample.size(), 0);
+    for (const auto& f : S.faces)
+      if (S.initial || cont1[f.cls]) next[f.region] = 1;
+    area = 0;
+    polygons.clear();
+    recontaminated_at.reset();
+    for (std::size_t k = 0; k < S.faces.size(); ++k) {
+      const auto& f = S.faces[k];
+      if (!next[f.region]) continue;
+      area += f.area;
+      if (S.frame) polygons.push_back(S.face_rings[k]);
+      if (!S.initial && !recontaminated_at && S.hidden1[f.cls] && !cont1[f.cls]) recontaminated_at = f.sample;
+    }
+    region = std::move(next);
+    last_samples = S.region_sample;
+  }
+};
 
 // Is the line through reflex vertex u and point z tangent to the obstacle at u (u's
 // neighbours not strictly on opposite sides of it)? Only then can a ray graze u along it.
@@ -409,100 +552,83 @@ CheckResult check(const Environment& env, const ExactPaths& paths, const CheckOp
         const bool from_w = options.every_critical_line || (env.is_reflex(w) && tangent_at(env, w, env.exact_vertex(u)));
         if (from_u || from_w) lines.push_back({u, w, from_u, from_w});
       }
-
-  CheckResult res;
-  auto at_time = [&](std::size_t j, const ExactFT& f) {
-    std::vector<ExactPoint> at;
-    for (auto& p : paths) {
-      const ExactPoint &a = p[j], &b = p[std::min(j + 1, steps - 1)];
-      at.push_back(f == 0 || a == b ? a : a + f * (b - a));
-    }
-    return at;
-  };
   auto wanted = [&](std::size_t waypoint) {
     return std::find(options.frames.begin(), options.frames.end(), waypoint) != options.frames.end();
   };
-  auto record = [&](const Moment& m, const Contamination& c) {
-    CheckFrame f;
-    f.waypoint = m.waypoint;
-    f.pursuers = m.at;
-    for (auto& loop : m.loops) {
-      f.visible.emplace_back();
-      for (auto& p : loop) f.visible.back().push_back(geometry::to_double(p));
+
+  // Segment j of the paths (waypoint j to j + 1), from the moment at waypoint j: its steps,
+  // built without the contamination (and the first moment's, for segment 0). Every thread
+  // gets its own copy of the paths' lazy points.
+  auto segment = [&](const Environment& E, const geometry::VisibilityIndex& VI, const ExactPaths& P, std::size_t j) {
+    std::vector<StepSummary> out;
+    auto at_time = [&](std::size_t i, const ExactFT& f) {
+      std::vector<ExactPoint> at;
+      for (auto& p : P) {
+        const ExactPoint &a = p[i], &b = p[std::min(i + 1, steps - 1)];
+        at.push_back(f == 0 || a == b ? a : a + f * (b - a));
+      }
+      return at;
+    };
+    Moment prev = take(E, VI, j, 0, at_time(j, 0), exact);
+    const StepSummary* before = nullptr;  // the last step, when built here
+    if (j == 0) {
+      out.push_back(summarise(E, nullptr, prev, nullptr, wanted(0), options.locate_regions));
+      before = &out.back();
     }
-    f.contaminated = c.polygons;
-    f.regions = c.regions.size();
-    res.frames.push_back(std::move(f));
-  };
-  Moment prev = take(env, vis, 0, 0, at_time(0, 0), exact);
-  Contamination cont = step(env, nullptr, nullptr, prev, wanted(0));
-  if (wanted(0)) record(prev, cont);
-  res.moments = 1;
-  auto commit = [&](Moment next, Contamination c, bool frame) {
-    if (frame) record(next, c);
-    ++res.moments;
-    if (c.recontaminated && !res.first_recontamination)
-      res.first_recontamination = CheckResult::Moment{next.waypoint, next.fraction, c.recontaminated_at};
-    if (c.regions.empty() && !cont.regions.empty() && !res.cleared_at)
-      res.cleared_at = CheckResult::Moment{next.waypoint, next.fraction, next.at[0]};
-    prev = std::move(next);
-    cont = std::move(c);
-  };
-  auto advance = [&](Moment next) {
-    const bool frame = next.fraction == 0 && wanted(next.waypoint);
-    commit(next, step(env, &prev, &cont, next, frame), frame);
-  };
-  // Along segment j from fraction f0 (the previous moment) to f1: a step whose shadow
-  // regions do not meet one to one is halved, up to kRefine times. Within an interval
-  // without events each region only deforms, and once the step is short against the
-  // gaps between regions a region meets nothing but its own continuation; over a long
-  // step "meets" can also pair a region with another one that slid into the place it
-  // held (a window onto a wall, its view sliding along the wall), which read a cleared
-  // region as contaminated (found on a wall-following pursuer's plan).
-  std::vector<ExactFT> events_now;  // the event fractions of the segment being sampled (one mover)
-  std::function<void(std::size_t, const ExactFT&, const ExactFT&, int)> along = [&](std::size_t j, const ExactFT& f0,
-                                                                                   const ExactFT& f1, int depth) {
-    const bool end = f1 >= 1;
-    Moment next =
-        take(env, vis, end ? j + 1 : j, end ? 0 : CGAL::to_double(f1), end ? at_time(j + 1, 0) : at_time(j, f1), exact, &prev);
-    const bool frame = next.fraction == 0 && wanted(next.waypoint);
-    Contamination c = step(env, &prev, &cont, next, frame);
-    if (c.one_to_one || depth >= kRefine) return commit(std::move(next), std::move(c), frame);
-    // A step across one event (a region appearing, vanishing, splitting or merging there) is
-    // never one to one: bisecting it went 24 levels deep towards the event, two steps per
-    // level, which was most of the samples on office plans. The step across the event is
-    // cut to the length those levels would reach at once, centred on it, and only the
-    // event-free steps beside it are halved further if they slide.
-    const auto in_lo = std::upper_bound(events_now.begin(), events_now.end(), f0);
-    const auto in_hi = std::lower_bound(events_now.begin(), events_now.end(), f1);
-    if (in_hi - in_lo == 1) {
-      const ExactFT& e = *in_lo;
-      const ExactFT half = (f1 - f0) * ExactFT(std::ldexp(1.0, depth - kRefine - 1));
-      const ExactFT a = e - half > f0 ? e - half : (f0 + e) / 2, b = e + half < f1 ? e + half : (e + f1) / 2;
-      along(j, f0, a, depth + 1);
-      along(j, a, b, kRefine);
-      along(j, b, f1, depth + 1);
-      return;
-    }
-    const ExactFT mid = (f0 + f1) / 2;
-    along(j, f0, mid, depth + 1);
-    along(j, mid, f1, depth + 1);
-  };
-  if (cont.regions.empty()) res.cleared_at = CheckResult::Moment{0, 0, prev.at[0]};
-  for (std::size_t j = 0; j + 1 < steps; ++j) {
+    auto commit = [&](Moment next, StepSummary S) {
+      out.push_back(std::move(S));
+      before = &out.back();
+      prev = std::move(next);
+    };
+    // Along segment j from fraction f0 (the previous moment) to f1: a step whose shadow
+    // regions do not meet one to one is halved, up to kRefine times. Within an interval
+    // without events each region only deforms, and once the step is short against the
+    // gaps between regions a region meets nothing but its own continuation; over a long
+    // step "meets" can also pair a region with another one that slid into the place it
+    // held (a window onto a wall, its view sliding along the wall), which read a cleared
+    // region as contaminated (found on a wall-following pursuer's plan).
+    std::vector<ExactFT> events;  // the event fractions of the segment (one mover)
+    std::function<void(const ExactFT&, const ExactFT&, int)> along = [&](const ExactFT& f0, const ExactFT& f1, int depth) {
+      const bool end = f1 >= 1;
+      Moment next = take(E, VI, end ? j + 1 : j, end ? 0 : CGAL::to_double(f1), end ? at_time(j + 1, 0) : at_time(j, f1), exact, &prev);
+      const bool frame = next.fraction == 0 && wanted(next.waypoint);
+      StepSummary S = summarise(E, &prev, next, before, frame, options.locate_regions);
+      if (S.one_to_one || depth >= kRefine) return commit(std::move(next), std::move(S));
+      // A step across one event (a region appearing, vanishing, splitting or merging there) is
+      // never one to one: bisecting it went 24 levels deep towards the event, two steps per
+      // level, which was most of the samples on office plans. The step across the event is
+      // cut to the length those levels would reach at once, centred on it, and only the
+      // event-free steps beside it are halved further if they slide.
+      const auto in_lo = std::upper_bound(events.begin(), events.end(), f0);
+      const auto in_hi = std::lower_bound(events.begin(), events.end(), f1);
+      if (in_hi - in_lo == 1) {
+        const ExactFT& e = *in_lo;
+        const ExactFT half = (f1 - f0) * ExactFT(std::ldexp(1.0, depth - kRefine - 1));
+        const ExactFT a = e - half > f0 ? e - half : (f0 + e) / 2, b = e + half < f1 ? e + half : (e + f1) / 2;
+        along(f0, a, depth + 1);
+        along(a, b, kRefine);
+        along(b, f1, depth + 1);
+        return;
+      }
+      const ExactFT mid = (f0 + f1) / 2;
+      along(f0, mid, depth + 1);
+      along(mid, f1, depth + 1);
+    };
     std::vector<std::size_t> moving;
     for (std::size_t l = 0; l < k; ++l)
-      if (paths[l][j] != paths[l][j + 1]) moving.push_back(l);
+      if (P[l][j] != P[l][j + 1]) moving.push_back(l);
     if (moving.empty()) {
-      if (wanted(j + 1)) advance(take(env, vis, j + 1, 0, at_time(j + 1, 0), exact, &prev));
-      continue;
+      if (wanted(j + 1)) {
+        Moment next = take(E, VI, j + 1, 0, at_time(j + 1, 0), exact, &prev);
+        StepSummary S = summarise(E, &prev, next, before, true, options.locate_regions);
+        commit(std::move(next), std::move(S));
+      }
+      return out;
     }
     const bool whole = options.every_critical_line;
-    std::vector<ExactFT>& ev = events_now;
-    ev.clear();
     for (std::size_t l : moving) {
-      const ExactPoint &a = paths[l][j], &b = paths[l][j + 1];
-      for (const CriticalLine& L : lines) ray_crossings(a, b, env.exact_vertex(L.u), env.exact_vertex(L.w), L.from_u, L.from_w, whole, ev);
+      const ExactPoint &a = P[l][j], &b = P[l][j + 1];
+      for (const CriticalLine& L : lines) ray_crossings(a, b, E.exact_vertex(L.u), E.exact_vertex(L.w), L.from_u, L.from_w, whole, events);
       if (moving.size() != 1) continue;
       for (std::size_t s = 0; s < k; ++s) {
         if (s == l) continue;
@@ -511,16 +637,16 @@ CheckResult check(const Environment& env, const ExactPaths& paths, const CheckOp
         // ray cannot reach it otherwise): only the constructed wall points count.
         for (auto& z : whole ? prev.loops[s] : prev.ray_hits[s])
           for (std::uint32_t u : reflex)
-            if (whole || tangent_at(env, u, z)) ray_crossings(a, b, env.exact_vertex(u), z, true, false, whole, ev);
+            if (whole || tangent_at(E, u, z)) ray_crossings(a, b, E.exact_vertex(u), z, true, false, whole, events);
       }
     }
-    std::sort(ev.begin(), ev.end());
-    ev.erase(std::unique(ev.begin(), ev.end()), ev.end());
+    std::sort(events.begin(), events.end());
+    events.erase(std::unique(events.begin(), events.end()), events.end());
     // Sample fractions: one between every two events (within an interval the shadows only
     // deform); uniform refinement when several pursuers move together.
     std::vector<ExactFT> fr;
     std::vector<ExactFT> cuts{0};
-    cuts.insert(cuts.end(), ev.begin(), ev.end());
+    cuts.insert(cuts.end(), events.begin(), events.end());
     cuts.push_back(1);
     for (std::size_t i = 0; i + 1 < cuts.size(); ++i) fr.push_back((cuts[i] + cuts[i + 1]) / 2);
     if (moving.size() > 1)
@@ -531,13 +657,140 @@ CheckResult check(const Environment& env, const ExactPaths& paths, const CheckOp
     ExactFT last = 0;
     for (const ExactFT& f : fr) {
       if (f <= 0) continue;
-      along(j, last, f, moving.size() == 1 ? 0 : kRefine);
+      along(last, f, moving.size() == 1 ? 0 : kRefine);
       last = f;
     }
+    return out;
+  };
+
+  // The contamination, carried through the steps in order as segments come in.
+  CheckResult res;
+  Contamination cont;
+  bool any_contaminated = false;
+  auto consume = [&](std::vector<StepSummary>& seg) {
+    for (StepSummary& S : seg) {
+      cont.advance(S);
+      ++res.moments;
+      const bool now = cont.count() > 0;
+      if (S.frame) {
+        CheckFrame f;
+        f.waypoint = S.waypoint;
+        f.pursuers = S.pursuers;
+        f.visible = std::move(S.visible);
+        f.contaminated = cont.polygons;
+        f.regions = cont.count();
+        res.frames.push_back(std::move(f));
+      }
+      if (S.initial) {
+        if (!now) res.cleared_at = CheckResult::Moment{0, 0, S.at0};
+      } else {
+        if (cont.recontaminated_at && !res.first_recontamination)
+          res.first_recontamination = CheckResult::Moment{S.waypoint, S.fraction, geometry::to_double_canonical(*cont.recontaminated_at)};
+        if (!now && any_contaminated && !res.cleared_at) res.cleared_at = CheckResult::Moment{S.waypoint, S.fraction, S.at0};
+      }
+      any_contaminated = now;
+    }
+    seg.clear();
+    seg.shrink_to_fit();
+  };
+  const std::size_t segments = steps - 1;
+  if (segments == 0) {
+    // One waypoint: the first moment only.
+    ExactPaths P = paths;
+    std::vector<StepSummary> seg;
+    seg.push_back(summarise(env, nullptr, take(env, vis, 0, 0, [&] {
+      std::vector<ExactPoint> at;
+      for (auto& p : P) at.push_back(p[0]);
+      return at;
+    }(), exact), nullptr, wanted(0), options.locate_regions));
+    consume(seg);
+  } else {
+    // Segments are built on `threads` threads, at most `window` ahead of the one whose
+    // contamination is being carried (each holds its steps' faces until then).
+    const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
+    const unsigned threads = static_cast<unsigned>(std::min<std::size_t>(options.threads ? options.threads : hw, segments));
+    const std::size_t window = 64 * static_cast<std::size_t>(threads);
+    std::vector<std::vector<StepSummary>> built(segments);
+    std::vector<char> ready(segments, 0);
+    std::size_t next_segment = 0, consumed = 0;
+    bool failed = false;
+    std::exception_ptr error;
+    std::mutex m;
+    std::condition_variable cv;
+    auto work = [&] {
+      try {
+        // Every thread builds its own environment, index and paths: lazy exact points shared
+        // between threads have their reference counts bumped by every copy (an arrangement
+        // copies its environment), and two threads doing so on one cache line cost CPU.
+        ExactPaths P;
+        std::optional<Environment> own;
+        {
+          const std::lock_guard<std::mutex> lock(m);
+          for (auto& p : paths) {
+            P.emplace_back();
+            for (auto& q : p) P.back().emplace_back(ExactFT(q.x().exact()), ExactFT(q.y().exact()));
+          }
+          std::vector<geometry::Ring> holes;
+          for (std::size_t r = 1; r < env.num_rings(); ++r) holes.push_back(env.ring(r));
+          own = Environment::make(env.ring(0), std::move(holes));
+        }
+        if (own->vertices() != env.vertices()) throw std::logic_error("pursuit checker: a copy of the environment renumbered its vertices");
+        const geometry::VisibilityIndex own_vis(*own);
+        while (true) {
+          std::size_t j;
+          {
+            std::unique_lock<std::mutex> lock(m);
+            cv.wait(lock, [&] { return failed || next_segment >= segments || next_segment < consumed + window; });
+            if (failed || next_segment >= segments) return;
+            j = next_segment++;
+          }
+          auto seg = segment(*own, own_vis, P, j);
+          {
+            const std::lock_guard<std::mutex> lock(m);
+            built[j] = std::move(seg);
+            ready[j] = 1;
+          }
+          cv.notify_all();
+        }
+      } catch (...) {
+        {
+          const std::lock_guard<std::mutex> lock(m);
+          if (!error) error = std::current_exception();
+          failed = true;
+        }
+        cv.notify_all();
+      }
+    };
+    std::vector<std::thread> pool;
+    for (unsigned t = 0; t < threads; ++t) pool.emplace_back(work);
+    for (std::size_t j = 0; j < segments; ++j) {
+      std::vector<StepSummary> seg;
+      {
+        std::unique_lock<std::mutex> lock(m);
+        cv.wait(lock, [&] { return failed || ready[j]; });
+        if (failed) break;
+        seg = std::move(built[j]);
+      }
+      consume(seg);
+      {
+        const std::lock_guard<std::mutex> lock(m);
+        consumed = j + 1;
+      }
+      cv.notify_all();
+    }
+    {
+      const std::lock_guard<std::mutex> lock(m);
+      failed = failed || false;
+      next_segment = std::max(next_segment, segments);  // nothing more to start
+    }
+    cv.notify_all();
+    for (auto& th : pool) th.join();
+    if (error) std::rethrow_exception(error);
   }
-  res.cleared = cont.regions.empty();
-  res.contaminated_at_end = cont.regions;
-  res.contaminated_exact = cont.exact_regions;
+  res.cleared = cont.count() == 0;
+  for (std::size_t i = 0; i < cont.region.size(); ++i)
+    if (cont.region[i])
+      res.contaminated_exact.push_back(cont.last_samples[i]), res.contaminated_at_end.push_back(geometry::to_double_canonical(cont.last_samples[i]));
   res.contaminated_area = cont.area;
   return res;
 }

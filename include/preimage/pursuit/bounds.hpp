@@ -21,7 +21,9 @@ namespace preimage::pursuit {
 
 struct BoundsOptions {
   std::optional<Point> start;     // every pursuer starts here (unset: anywhere)
-  double time_limit = 45;         // seconds from the start for all searches together (the strategy always runs)
+  /// Seconds from the start for all searches together (the strategy always runs). The
+  /// strategy's plan is checked before the searches for fewer pursuers, within this time.
+  double time_limit = 45;
   std::size_t max_states = 4'000'000;
   std::size_t max_mb = 2048;      // per search
   std::size_t max_pursuers = 3;   // the k-pursuer search is tried for k below the upper end, up to this
@@ -29,6 +31,7 @@ struct BoundsOptions {
   /// first search took (at least a second).
   bool shortest = true;
   bool check = true;              // run the independent checker on the plan (false: the plan is not certified)
+  std::size_t check_frames = 0;   // moments the check records for a figure (frame_waypoints)
   /// Called with a line about each step (a terminal shows progress).
   std::function<void(const std::string&)> progress;
 };

@@ -37,6 +37,13 @@ struct CheckOptions {
   /// V, is an event instead (as before 28 November): more samples, the same verdict (the
   /// tests' reference).
   bool every_critical_line = false;
+  /// Threads building the steps (0: one per hardware thread). The contamination is carried
+  /// through them in order on the calling thread, so the result does not depend on it.
+  unsigned threads = 0;
+  /// A step's regions are found in the next step's overlay by the stretch of a free edge
+  /// on their boundary (no point location). With this set, a point of each is located
+  /// instead: the tests' reference for the keys.
+  bool locate_regions = false;
 };
 
 /// The state at a waypoint, rounded for drawing.
