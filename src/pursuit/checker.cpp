@@ -763,28 +763,31 @@ CheckResult check(const Environment& env, const ExactPaths& paths, const CheckOp
     };
     std::vector<std::thread> pool;
     for (unsigned t = 0; t < threads; ++t) pool.emplace_back(work);
-    for (std::size_t j = 0; j < segments; ++j) {
-      std::vector<StepSummary> seg;
-      {
-        std::unique_lock<std::mutex> lock(m);
-        cv.wait(lock, [&] { return failed || ready[j]; });
-        if (failed) break;
-        seg = std::move(built[j]);
+    std::exception_ptr consumer_error;
+    try {
+      for (std::size_t j = 0; j < segments; ++j) {
+        std::vector<StepSummary> seg;
+        {
+          std::unique_lock<std::mutex> lock(m);
+          cv.wait(lock, [&] { return failed || ready[j]; });
+          if (failed) break;
+          seg = std::move(built[j]);
+        }
+        consume(seg);
+        {
+          const std::lock_guard<std::mutex> lock(m);
+          consumed = j + 1;
+        }
+        cv.notify_all();
       }
-      consume(seg);
-      {
-        const std::lock_guard<std::mutex> lock(m);
-        consumed = j + 1;
-      }
-      cv.notify_all();
-    }
-    {
+    } catch (...) {
+      consumer_error = std::current_exception();
       const std::lock_guard<std::mutex> lock(m);
-      failed = failed || false;
-      next_segment = std::max(next_segment, segments);  // nothing more to start
+      failed = true;  // the threads stop at their next segment
     }
     cv.notify_all();
     for (auto& th : pool) th.join();
+    if (consumer_error) std::rethrow_exception(consumer_error);
     if (error) std::rethrow_exception(error);
   }
   res.cleared = cont.count() == 0;

@@ -116,7 +116,10 @@ struct CoverageReport {
   // heading only along arcs, so there each arc (a run turning one way) is one turn.
   std::size_t turns = 0, sharp_turns = 0;
   double length = 0, transit_length = 0, rotation_deg = 0;  // rotation: sum of heading changes
-  std::vector<std::uint32_t> cell_order;  // cells in the order covered
+  // Cells in the order covered: the decomposition's, numbered in its order; with turned
+  // cells (turned_cells), the turned cells' own cells come first, then the decomposition's
+  // other cells.
+  std::vector<std::uint32_t> cell_order;
   std::vector<std::uint8_t> sweeps;       // per covered cell: 0..3 (bit 0: from the right end, bit 1: first lap down)
   bool order_optimal = false;             // exact GTSP solution (small instances)
   double order_lower_bound = 0;           // lower bound on the path length for any order and sweeps
