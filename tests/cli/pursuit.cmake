@@ -45,6 +45,10 @@ cli_test(pursuit_check_exact 0 "2 pursuers, 3 waypoints \\(exact\\): cleared" -
          pursuit check ${PE}/pillar.json --path ${FIX}/pursuit/pillar_two_pursuers_exact.json)
 cli_test(pursuit_check_bad_rational fail "bad_rational.json: \\$\\.paths\\[0\\]\\[3\\]\\[1\\]: expected a number or a rational string \"p/q\", got \"1/0\"$" -
          pursuit check ${PE}/pillar.json --path ${FIX}/pursuit/bad_rational.json)
+# The checker's threads (0: one per core) change nothing but the time.
+cli_test(pursuit_check_threads 0 "2 pursuers, 3 waypoints: cleared" -
+         pursuit check ${PE}/pillar.json --path ${FIX}/pursuit/pillar_two_pursuers.json --threads 3)
+cli_test(pursuit_check_bad_threads fail "--threads" - pursuit check ${PE}/pillar.json --path ${FIX}/pursuit/pillar_two_pursuers.json --threads -1)
 cli_test(pursuit_check_through_pillar fail "path: pursuer 1 segment 0 from \\(1, 1\\) to \\(5, 5\\) leaves free space" -
          pursuit check ${PE}/pillar.json --path ${FIX}/pursuit/through_pillar.json)
 
@@ -55,8 +59,9 @@ if(EXISTS ${FLOORPLANS}/house_expo_room_0000.json)
 endif()
 cli_test(pursuit_plan_any 0 "independent check: cleared" - pursuit plan ${PE}/corridor_rooms.json --any)
 # An office floor with 8 holes (MLSTRUCT-FP): exactly 2 pursuers, one standing in the
-# corridor. The plan's check takes about 3 minutes (docs/pursuit.md): here --no-check.
+# corridor. The plan's check takes 5.5 s on two cores (docs/pursuit.md), so the interval's
+# upper end is certified here, end to end.
 if(EXISTS ${PROJECT_SOURCE_DIR}/../shared/data/floorplans/mlstruct_302.json)
-  cli_test(pursuit_plan_office 0 "pursuers needed: \\[2, 2\\] \\(exact\\)" -
-           pursuit plan ${PROJECT_SOURCE_DIR}/../shared/data/floorplans/mlstruct_302.json --no-check)
+  cli_test(pursuit_plan_office 0 "upper 2: the static-guard strategy: .*, cleared by the independent check" -
+           pursuit plan ${PROJECT_SOURCE_DIR}/../shared/data/floorplans/mlstruct_302.json)
 endif()
