@@ -48,10 +48,12 @@ CellDirections choose_directions(const BoustrophedonDecomposition& b, double w) 
   for (std::size_t c = 0; c < b.cells().size(); ++c) {
     const double here = cell_score(b, c, w);
     if (quarter)
-      if (auto r = turn(b, c); r && direction_score(*r->dec, w) < here) {
-        out.score += direction_score(*r->dec, w);
-        out.turned.push_back(std::move(*r));
-        continue;
+      if (auto r = turn(b, c)) {
+        if (const double there = direction_score(*r->dec, w); there < here) {
+          out.score += there;
+          out.turned.push_back(std::move(*r));
+          continue;
+        }
       }
     out.kept.push_back(c);
     out.score += here;

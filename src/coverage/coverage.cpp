@@ -19,9 +19,11 @@
 #include <algorithm>
 #include <cstdio>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <random>
 #include <set>
+#include <tuple>
 
 namespace preimage::coverage {
 
@@ -84,8 +86,6 @@ using geometry::VisibilityIndex;
 
 double dist(const Point& a, const Point& b) { return std::hypot(a.x() - b.x(), a.y() - b.y()); }
 
-// What one sweep direction costs before planning it: laps (each a turn) and cells (each
-// a transit), the way ETH's planner ranks directions by the cells' altitudes.
 using detail::direction_score;
 
 // A cell of a boustrophedon decomposition to sweep, with its four sweeps.
@@ -104,16 +104,17 @@ void sweep_four_ways(const Planning& P, SweptCell& s, const geometry::Visibility
   }
 }
 
-CoverageReport plan_at(const Planning& P, const BoustrophedonDecomposition& b, double angle, bool per_cell_direction) {
+CoverageReport plan_at(const Planning& P, const BoustrophedonDecomposition& b, double angle,
+                       std::optional<detail::CellDirections> directions) {
   const bool quarter = std::fmod(angle, 90.0) == 0;
   std::optional<VisibilityIndex> sweep_index;
   if (!quarter) sweep_index.emplace(b.sweep_environment());
   // The cells to sweep with their four sweeps, in the input frame, certified: b's cells,
-  // and with a direction per cell the cells of the cells turned the other way
-  // (cell_directions.hpp). A turned cell whose sweeps do not all map back certified (a
-  // slice end rounded off a slanted wall) keeps b's direction.
+  // and with a direction per cell (cell_directions.hpp) the own cells of those turned the
+  // other way. A turned cell whose sweeps do not all map back certified (a slice end
+  // rounded off a slanted wall) keeps b's direction.
   detail::CellDirections dirs;
-  if (per_cell_direction) dirs = detail::choose_directions(b, P.w);
+  if (directions) dirs = std::move(*directions);
   else for (std::size_t c = 0; c < b.cells().size(); ++c) dirs.kept.push_back(c);
   std::vector<SweptCell> cells;
   std::size_t turned = 0;
@@ -416,12 +417,18 @@ void touch_up(const Planning& P, CoverageReport& rep) {
 // 6.2.1's pattern: the sweep direction given, or the two most promising candidates planned
 // and the shorter path kept.
 CoverageReport plan_boustrophedon(const Planning& P) {
-  std::vector<double> angles;
-  // A direction per cell where the direction is chosen (auto) and the cells are ordered by
+  // A direction planned: its decomposition and, with a direction per cell, each cell's. A
+  // direction per cell where the direction is chosen (auto) and the cells are ordered by
   // the generalised TSP (6.2.1's depth-first walk runs over one decomposition's adjacency).
+  struct Direction {
+    double score, angle;
+    std::unique_ptr<BoustrophedonDecomposition> b;
+    std::optional<detail::CellDirections> cells;
+  };
+  std::vector<Direction> planned;
   const bool per_cell = !P.o.angle_deg && P.o.order == CellOrder::Optimised;
   if (P.o.angle_deg) {
-    angles.push_back(*P.o.angle_deg);
+    planned.push_back({0, *P.o.angle_deg, std::make_unique<BoustrophedonDecomposition>(P.E, *P.o.angle_deg), std::nullopt});
   } else {
     // Candidates: the axes and the directions of the longest edges (sweeping along an edge
     // avoids slivers along it); the two that need the fewest laps and cells are planned.
@@ -434,22 +441,24 @@ CoverageReport plan_boustrophedon(const Planning& P) {
     std::sort(edges.rbegin(), edges.rend());
     std::set<double> candidates{0.0, 90.0};
     for (std::size_t i = 0; i < edges.size() && candidates.size() < 10; ++i) candidates.insert(std::round(edges[i].second * 1e6) / 1e6);
-    std::vector<std::pair<double, double>> scored;
     for (double a : candidates) {
       try {
-        const BoustrophedonDecomposition b(P.E, a);
-        scored.emplace_back(per_cell ? detail::choose_directions(b, P.w).score : direction_score(b, P.w), a);
+        Direction d{0, a, std::make_unique<BoustrophedonDecomposition>(P.E, a), std::nullopt};
+        if (per_cell) d.cells = detail::choose_directions(*d.b, P.w);
+        d.score = d.cells ? d.cells->score : direction_score(*d.b, P.w);
+        planned.push_back(std::move(d));
       } catch (const InputError&) {
         // this direction made the rotated environment invalid: skip it
       }
     }
-    std::sort(scored.begin(), scored.end());
-    for (std::size_t i = 0; i < scored.size() && i < 2; ++i) angles.push_back(scored[i].second);
-    if (angles.empty()) throw InputError("coverage: no sweep direction gave a valid decomposition");
+    std::sort(planned.begin(), planned.end(),
+              [](const Direction& x, const Direction& y) { return std::tie(x.score, x.angle) < std::tie(y.score, y.angle); });
+    if (planned.size() > 2) planned.resize(2);
+    if (planned.empty()) throw InputError("coverage: no sweep direction gave a valid decomposition");
   }
   std::optional<CoverageReport> best;
-  for (double a : angles) {
-    CoverageReport cand = plan_at(P, BoustrophedonDecomposition(P.E, a), a, per_cell);
+  for (Direction& d : planned) {
+    CoverageReport cand = plan_at(P, *d.b, d.angle, std::move(d.cells));
     // The cheaper path, a turn (over 1°) worth turn_cost metres (--turn-cost, as merged bends).
     const auto cost = [&](const CoverageReport& r) { return r.length + P.o.turn_cost * static_cast<double>(r.turns); };
     if (!best || cost(cand) < cost(*best)) best = std::move(cand);
