@@ -263,11 +263,11 @@ void run_plan(const PlanFlags& F) {
     else if (one.outcome == pursuit::SearchResult::Outcome::NoPlan && r.pursuers == 2) minimum = "2", min_json = 2;
     else if (one.outcome == pursuit::SearchResult::Outcome::NoPlan) minimum = "at least 2", min_json = ">=2";
     summary = "split strategy: " + plural(r.pursuers, "pursuer", "pursuers") + " (" + plural(r.guards, "static guard", "static guards") +
-              ", " + plural(r.regions, "region", "regions") + " cleared by one pursuer), " +
+              ", " + plural(r.regions, "region", "regions") + " cleared by one pursuer from " + plural(r.stops, "stop", "stops") + "), " +
               plural(r.plan.paths[0].size(), "waypoint", "waypoints") + ", length " + geometry::format_number(r.plan.length) +
               "; exact minimum " + minimum + " (one-pursuer search: " + pursuit::to_string(one.outcome) + ", " +
               std::to_string(one.states) + " information states)";
-    out = {{"strategy", "split"}, {"pursuers", r.pursuers}, {"guards", r.guards}, {"regions", r.regions},
+    out = {{"strategy", "split"}, {"pursuers", r.pursuers}, {"guards", r.guards}, {"regions", r.regions}, {"stops", r.stops},
            {"exact_minimum", min_json}, {"plan", plan_json(r.plan)}};
   } else {
     const auto C = pursuit::ConservativeCells::build(env);

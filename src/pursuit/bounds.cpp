@@ -81,7 +81,7 @@ PursuerBounds pursuer_bounds(const geometry::Environment& env, const BoundsOptio
     b.plan = b.strategy->plan;
     b.plan_source = "strategy";
     b.upper_reason = "the static-guard strategy: " + count(b.strategy->guards, "guard", "guards") + ", " +
-                     count(b.strategy->regions, "region", "regions") + " cleared by one pursuer";
+                     count(b.strategy->regions, "region", "regions") + " cleared by one pursuer from " + count(b.strategy->stops, "stop", "stops");
     // The strategy's plan is checked before the searches try for fewer pursuers, so the
     // upper end is certified first and the searches get what is left of the time budget
     // (the check of office 848's plan takes half a minute; after a 45 s search the answer

@@ -65,6 +65,22 @@ TEST(PursuitSplit, HouseExpoFloorPlan) {
   expect_cleared(*s.environment, r, "house 0000");
 }
 
+// House 1451 draws a diagonal wall as a staircase of 1 cm steps; the guard's split left
+// one part of one triangle per step, 70 of its 86 parts, and the pursuer walked to each in
+// triangle order: 307 m of plan, 293,860 checker moments, 196 s to certify. Standing
+// where many parts are seen at once, and touring the stops, makes it 74 m (the CLI test
+// cli.pursuit_plan_house_1451 certifies it end to end).
+TEST(PursuitSplit, StaircaseWallPartsAreClearedFromFewStops) {
+  const auto s = scene::import_houseexpo(
+      scene::read_file(std::string(PREIMAGE_FLOORPLANS) + "/house_expo_room_1451.json"), "house 1451");
+  const auto r = pursuit::split_strategy(*s.environment);
+  EXPECT_EQ(r.pursuers, 2u);
+  EXPECT_EQ(r.guards, 1u);
+  EXPECT_EQ(r.regions, 86u);
+  EXPECT_LE(r.stops, 20u) << "one stop per part walks to every step of the staircase";
+  EXPECT_LT(r.plan.length, 100.0);
+}
+
 // 6.3 with holes: a static guard in a triangle cuts free space where it sees whole
 // triangulation edges; the parts are cleared one at a time while it stands.
 TEST(PursuitSplit, StaticGuardsClearEnvironmentsWithHoles) {

@@ -22,6 +22,7 @@ struct SplitResult {
   std::size_t pursuers = 0;  // used: the deepest nesting of guards, plus the one who clears
   std::size_t guards = 0;    // static guards posted over the whole plan
   std::size_t regions = 0;   // regions cleared by one pursuer (star-shaped, or by its own search)
+  std::size_t stops = 0;     // where a pursuer went to clear them: a point seeing several, or a walk
   std::size_t trichromatic = 0;  // triangles with corners on three different rings (6.3)
   std::vector<Point> guard_points;  // where each static guard stood, in plan order
 };
