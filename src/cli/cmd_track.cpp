@@ -4,6 +4,7 @@
 #include "progress.hpp"
 
 #include <preimage/error.hpp>
+#include <preimage/tracking/dynamic_visibility_game.hpp>
 #include <preimage/tracking/evaluation.hpp>
 #include <preimage/tracking/figures.hpp>
 #include <preimage/tracking/replay.hpp>
@@ -356,6 +357,7 @@ void run_evaluate(const std::vector<std::string>& files, const EvaluationParams&
 
 struct GameOptions {
   double resolution = 0.25, speed_ratio = 0.5, range = 8, separation = -1, target_radius = -1;
+  double accel = 0;  // > 0: also the game with the observer's velocity in the state
   std::string observer, target, svg;
   std::size_t jobs = 0;
   bool json = false;
@@ -386,7 +388,15 @@ void run_game(const std::string& file, const GameOptions& o) {
   if (!o.svg.empty() && !tgt) throw InputError("--svg draws the region for one target: give --target (the scene has no $.tracking.target)");
   std::optional<Progress> progress(std::in_place, "game");
   gp.progress = [&](double f) { (*progress)(f); };
-  const VisibilityGame g(env, gp);
+  const auto shared = std::make_shared<const VisibilityGame>(env, gp);
+  const VisibilityGame& g = *shared;
+  std::optional<DynamicVisibilityGame> dyn;
+  if (o.accel > 0) {
+    DynamicGameParams dp;
+    dp.accel = o.accel;
+    dp.threads = gp.threads;
+    dyn.emplace(shared, dp);
+  }
   progress.reset();  // erase the status line before the answer
   auto snap = [&](const Point& p, const char* flag) {
     const bool target = std::string(flag) == "--target";
@@ -424,8 +434,34 @@ void run_game(const std::string& file, const GameOptions& o) {
                                                 : "the target escapes within " + std::to_string(v) + " steps (" +
                                                       two_decimals(v * g.step_time()) + " s) against every observer");
   }
+  // With dynamics: the start with the observer standing still.
+  json dyn_json = nullptr;
+  std::string dyn_text;
+  if (dyn) {
+    const DynamicGameStats& ds = dyn->stats();
+    json dstart = nullptr;
+    std::string verdict;
+    if (go && gt) {
+      const std::uint32_t v = dyn->escape_steps(*go, 0, *gt);
+      dstart = {{"kept", v == VisibilityGame::kForever}, {"escape_steps", v == VisibilityGame::kForever ? json(nullptr) : json(v)}};
+      verdict = v == VisibilityGame::kForever ? "the observer, starting at rest, keeps the target forever"
+                : v == 0                      ? "the observer does not see the target"
+                                              : "the target escapes within " + std::to_string(v) + " steps (" + two_decimals(v * g.step_time()) +
+                                                    " s) against every observer starting at rest";
+    }
+    dyn_json = {{"accel", o.accel}, {"accel_steps", dyn->accel_steps()}, {"velocities", ds.velocities}, {"states", ds.states},
+                {"seen", ds.seen}, {"kept", ds.winning}, {"kept_at_rest", ds.winning_at_rest}, {"longest_escape_steps", ds.levels},
+                {"memory_bytes", ds.memory_bytes}, {"seconds", ds.seconds}, {"start", dstart}};
+    std::ostringstream t;
+    t << std::fixed << std::setprecision(2) << "with dynamics (acceleration " << o.accel << " m/s^2 per axis, " << ds.velocities
+      << " velocities): " << ds.states << " states solved in " << ds.seconds << " s, " << std::setprecision(0) << ds.memory_bytes / 1e6
+      << " MB; the observer keeps the target forever from " << ds.winning << " of the " << ds.seen << " states where it sees it ("
+      << std::setprecision(1) << (ds.seen ? 100.0 * static_cast<double>(ds.winning) / static_cast<double>(ds.seen) : 0.0) << " %)";
+    if (!verdict.empty()) t << "\nstart with dynamics: " << verdict;
+    dyn_text = t.str();
+  }
   if (o.json) {
-    json j = {{"scene", sc.name.empty() ? file : sc.name},
+    json j = {{"scene", sc.name.empty() ? file : sc.name}, {"dynamics", dyn_json},
               {"resolution", gp.resolution}, {"speed_ratio", gp.speed_ratio},
               {"range", std::isfinite(gp.range) ? json(gp.range) : json(nullptr)}, {"separation", gp.separation},
               {"target_radius", gp.target_radius},
@@ -454,6 +490,7 @@ void run_game(const std::string& file, const GameOptions& o) {
             << " states where it sees it (" << std::setprecision(1) << 100 * share << " %)\n";
   if (!start_text.empty()) std::cout << start_text << "\n";
   if (gt) std::cout << "observer points that keep the target at its point: " << g.keeping_observers(*gt).size() << " of " << st.points << "\n";
+  if (!dyn_text.empty()) std::cout << dyn_text << "\n";
 }
 
 // zlib says Z_BUF_ERROR ("unexpected end of file") when a gzip stream stops before its end.
@@ -748,6 +785,10 @@ void add_track_commands(CLI::App& app) {
   gm->add_option("--separation", go.separation, "The target this close to the observer is a loss, m (default: its radius + 0.15)")
       ->check(number_in(0, 100));
   gm->add_option("--target-radius", go.target_radius, "The target's disc keeps this far from obstacles, m (default: $.tracking.target_radius, else 0.2)")
+      ->check(number_in(0, 100));
+  gm->add_option("--accel", go.accel,
+                 "Also solve the game with the observer's velocity in the state: its acceleration per axis, m/s^2 (the resolution must "
+                 "make it a whole number of grid steps per step squared: 0.25 m at 0.5 m/s^2 and half speed)")
       ->check(number_in(0, 100));
   gm->add_option("--observer", go.observer, "Observer X,Y for the start's verdict (default: $.tracking.observer)");
   gm->add_option("--target", go.target, "Target X,Y (default: $.tracking.target)");

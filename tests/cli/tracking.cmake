@@ -76,6 +76,15 @@ cli_test(track_game_box 0 "^start, on the grid: observer \\(1, 3\\), target \\(5
 cli_test(track_game_chairs 0 "the target escapes within 12 steps \\(6.79 s\\) against every observer" - track game ${TRACKING}/chair.json --resolution 0.2)
 cli_test(track_game_point_target 0 "separation 0.35 m, target radius 0.00 m" - track game ${TRACKING}/box.json --resolution 0.5 --target-radius 0)
 cli_test(track_game_json 0 "\"keeping_observers\":\\[" - track game ${TRACKING}/lab.json --resolution 0.5 --json)
+# The game with the observer's velocity in the state (0.5 m/s^2 per axis, at rest at the
+# start): the box's start is still kept; the chairs' start, kept without dynamics at this
+# grid, is lost within 11 steps.
+cli_test(track_game_box_dynamics 0 "^start with dynamics: the observer, starting at rest, keeps the target forever$" - track game ${TRACKING}/box.json --accel 0.5)
+cli_test(track_game_chairs_dynamics 0 "^start with dynamics: the target escapes within 11 steps \\(7.78 s\\) against every observer starting at rest$" -
+         track game ${TRACKING}/chair.json --accel 0.5)
+cli_test(track_game_dynamics_json 0 "\"dynamics\":\\{\"accel\":0.5,\"accel_steps\":2," - track game ${TRACKING}/box.json --resolution 0.5 --accel 0.5 --json)
+cli_test(track_game_dynamics_off_grid fail "the velocities carry grid points to grid points only at a multiple of 0.25 m" -
+         track game ${TRACKING}/box.json --resolution 0.125 --accel 0.5)
 cli_test(track_game_zero_resolution fail "--resolution: expected a number in" - track game ${TRACKING}/box.json --resolution 0)
 cli_test(track_game_huge_grid fail "game: .* states, more than the limit" - track game ${TRACKING}/box.json --resolution 0.01)
 cli_test(track_game_target_outside fail "--target \\(50, 50\\): no grid point of the game within two grid steps" - track game ${TRACKING}/box.json --target 50,50)
