@@ -1,9 +1,13 @@
 // Visibility-based pursuit: conservative cells + information graph + one-pursuer plan on
 // random simple polygons (20, 50, 100, 200 reflex vertices) and the office, comb and
 // spiral generators; the search beside one that does not merge equal information states
-// (depth-first over cell walks, pruning only cycles on the walk itself), in the same run.
+// (depth-first over cell walks, pruning only cycles on the walk itself), in the same run;
+// the checker's sampling, threads and keys; and "how many pursuers?" on polygons one
+// pursuer cannot clear, by the interval against the two-pursuer search.
 #include <preimage/geometry/generators.hpp>
+#include <preimage/pursuit/bounds.hpp>
 #include <preimage/pursuit/checker.hpp>
+#include <preimage/pursuit/examples.hpp>
 #include <preimage/pursuit/search.hpp>
 #include <preimage/pursuit/split.hpp>
 
@@ -147,9 +151,78 @@ void checker(benchmark::State& state, std::string name, CheckerRun run) {
   state.counters["cleared"] = r.cleared;
 }
 
+// Issue 48's question on polygons that one pursuer cannot clear: "how many pursuers?"
+// answered by pursuer_bounds (the complete one-pursuer search for the lower end, the
+// static-guard strategy's plan, checked, for the upper end; preimage) against the
+// two-pursuer search asked directly (reference: any plan, 60 s, 2 GB). Random simple
+// polygons of about 54, 100 and 150 vertices (the first seed whose one-pursuer search
+// finds no plan) and the nested U of level 3 (which needs 3).
+geometry::Environment needs_two(std::size_t n) {
+  for (std::uint64_t seed = 1;; ++seed) {
+    auto env = geometry::Environment::make(g::random_simple_polygon(n, 4800 + seed, 100.0), {});
+    const auto cells = pursuit::ConservativeCells::build(env);
+    if (pursuit::search(cells, 1, {std::nullopt, 4'000'000, false}).outcome == pursuit::SearchResult::Outcome::NoPlan) return env;
+  }
+}
+
+const geometry::Environment& two_case(const std::string& name) {
+  static std::map<std::string, std::unique_ptr<geometry::Environment>> cache;
+  auto& e = cache[name];
+  if (!e) e = std::make_unique<geometry::Environment>(name == "nested-u-3" ? pursuit::examples::nested_u(3) : needs_two(std::stoul(name.substr(8))));
+  return *e;
+}
+
+void two_bounds(benchmark::State& state, std::string name) {
+  const auto& env = two_case(name);
+  pursuit::BoundsOptions o;
+  o.time_limit = 60;
+  pursuit::PursuerBounds b;
+  for (auto _ : state) {
+    b = pursuit::pursuer_bounds(env, o);
+    benchmark::DoNotOptimize(b);
+  }
+  std::size_t states = 0;
+  double mb = 0;
+  for (const auto& s : b.searches) states = std::max(states, s.states), mb = std::max(mb, s.bytes / 1048576.0);
+  state.counters["vertices"] = static_cast<double>(env.num_vertices());
+  state.counters["lower"] = static_cast<double>(b.lower);
+  state.counters["upper"] = static_cast<double>(b.upper);
+  state.counters["states"] = static_cast<double>(states);
+  state.counters["MB"] = mb;
+  state.counters["certified"] = b.check && b.check->cleared;
+}
+
+void two_search(benchmark::State& state, std::string name) {
+  const auto& env = two_case(name);
+  pursuit::SearchResult r;
+  for (auto _ : state) {
+    const auto cells = pursuit::ConservativeCells::build(env);
+    pursuit::SearchOptions o;
+    o.shortest = false;
+    o.time_limit = 60;
+    o.max_mb = 2048;
+    r = pursuit::search(cells, 2, o);
+    benchmark::DoNotOptimize(r);
+  }
+  state.counters["vertices"] = static_cast<double>(env.num_vertices());
+  state.counters["answer"] = r.outcome == pursuit::SearchResult::Outcome::Plan ? 2 : r.outcome == pursuit::SearchResult::Outcome::NoPlan ? -1 : 0;
+  state.counters["states"] = static_cast<double>(r.states);
+  state.counters["MB"] = r.bytes / 1048576.0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  for (const char* n : {"polygon-54", "polygon-100", "polygon-150", "nested-u-3"}) {
+    benchmark::RegisterBenchmark(("two-pursuers/preimage/" + std::string(n)).c_str(), two_bounds, std::string(n))
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime()
+        ->Iterations(1);
+    benchmark::RegisterBenchmark(("two-pursuers/reference/" + std::string(n)).c_str(), two_search, std::string(n))
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime()
+        ->Iterations(1);
+  }
   for (const char* n : {"office-2x3", "rectilinear-6x5"}) {
     const std::pair<const char*, std::pair<CheckerRun, CheckerRun>> families[] = {
         {"checker", {{false, 1, false}, {true, 1, false}}},
