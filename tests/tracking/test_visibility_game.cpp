@@ -8,6 +8,7 @@
 #include <preimage/tracking/visibility_game.hpp>
 
 #include <gtest/gtest.h>
+#include <support/rooms.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -22,10 +23,8 @@ namespace {
 
 constexpr std::uint32_t kForever = VisibilityGame::kForever;
 
-Environment rect_room(double w, double h, std::vector<geometry::Ring> holes = {}) {
-  return Environment::make({{0, 0}, {w, 0}, {w, h}, {0, h}}, std::move(holes));
-}
-geometry::Ring box(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
+using test::box;
+using test::rect_room;
 
 double dist(const Point& a, const Point& b) { return std::hypot(a.x() - b.x(), a.y() - b.y()); }
 
