@@ -410,26 +410,27 @@ class Splitter {
       used[best] = 1, order.push_back(best), at = parts[best].exit;
     }
     // 2-opt reverses a stretch; with entry != exit a reversed part is walked differently,
-    // so only parts whose entry is their exit take part in a reversal.
-    auto cost = [&](const std::vector<std::size_t>& o) {
-      double c = 0;
-      Point p = from;
-      for (auto i : o) c += d(p, parts[i].entry), p = parts[i].exit;
-      return c;
-    };
-    double best = cost(order);
-    for (bool better = true; better;) {
-      better = false;
-      for (std::size_t i = 0; i + 1 < n; ++i)
-        for (std::size_t j = i + 1; j < n; ++j) {
-          bool symmetric = true;
-          for (std::size_t k = i; k <= j && symmetric; ++k) symmetric = parts[order[k]].entry == parts[order[k]].exit;
-          if (!symmetric) continue;
-          std::reverse(order.begin() + i, order.begin() + j + 1);
-          const double c = cost(order);
-          if (c < best - 1e-9) best = c, better = true;
-          else std::reverse(order.begin() + i, order.begin() + j + 1);
+    // so only runs of parts whose entry is their exit are reversed. Inside such a run the
+    // legs keep their lengths; only the two at its ends change (O(1) per candidate).
+    auto sym = [&](std::size_t k) { return parts[order[k]].entry == parts[order[k]].exit; };
+    for (int pass = 0; pass < 50; ++pass) {
+      bool better = false;
+      for (std::size_t i = 0; i + 1 < n; ++i) {
+        if (!sym(i)) continue;
+        const Point& before = i == 0 ? from : parts[order[i - 1]].exit;
+        const Point& first = parts[order[i]].entry;
+        for (std::size_t j = i + 1; j < n && sym(j); ++j) {
+          const Point& last = parts[order[j]].entry;
+          const double after_old = j + 1 < n ? d(last, parts[order[j + 1]].entry) : 0;
+          const double after_new = j + 1 < n ? d(first, parts[order[j + 1]].entry) : 0;
+          if (d(before, last) + after_new < d(before, first) + after_old - 1e-9) {
+            std::reverse(order.begin() + static_cast<std::ptrdiff_t>(i), order.begin() + static_cast<std::ptrdiff_t>(j) + 1);
+            better = true;
+            break;  // the run starting at i changed: its first part is another now
+          }
         }
+      }
+      if (!better) break;
     }
     return order;
   }
