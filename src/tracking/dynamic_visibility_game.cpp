@@ -171,22 +171,6 @@ DynamicVisibilityGame::DynamicVisibilityGame(std::shared_ptr<const VisibilityGam
   stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-Point DynamicVisibilityGame::velocity_mps(std::uint32_t v) const {
-  const double u = game_->params().resolution / game_->step_time();
-  return {velocities_[v][0] * u, velocities_[v][1] * u};
-}
-
-std::uint32_t DynamicVisibilityGame::nearest_velocity(double vx, double vy) const {
-  const double u = game_->params().resolution / game_->step_time();
-  std::uint32_t best = 0;
-  double best_d = std::hypot(vx, vy);
-  for (std::uint32_t v = 1; v < velocities_.size(); ++v) {
-    const double d = std::hypot(vx - velocities_[v][0] * u, vy - velocities_[v][1] * u);
-    if (d < best_d) best = v, best_d = d;
-  }
-  return best_d <= 0.75 * u ? best : 0;
-}
-
 std::span<const std::uint32_t> DynamicVisibilityGame::next_velocities(std::uint32_t v) const {
   return {next_.data() + next_begin_[v], next_.data() + next_begin_[v + 1]};
 }

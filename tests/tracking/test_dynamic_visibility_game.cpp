@@ -190,3 +190,44 @@ TEST(DynamicVisibilityGame, RefusesResolutionsThatDoNotCarryGridPointsToGridPoin
   dp.accel = -1;
   EXPECT_THROW(DynamicVisibilityGame(g, dp), InputError);
 }
+
+// The policies realise the values: from a kept state, the observer's policy against the
+// target's stays kept (for 40 steps); from a state with escape time e, the target's policy
+// wins within exactly e steps against the observer's.
+TEST(DynamicVisibilityGame, ItsPoliciesRealiseTheValues) {
+  const Environment env = rect_room(6, 4, {box(2.5, 1.5, 3.5, 2.5)});
+  GameParams p;
+  p.resolution = 0.5;
+  p.range = 3;
+  auto g = std::make_shared<const VisibilityGame>(env, p);
+  DynamicGameParams dp;
+  dp.accel = unit_accel(p.resolution);
+  const DynamicVisibilityGame d(g, dp);
+  std::mt19937_64 rng(3);
+  const std::size_t n = g->num_points();
+  std::size_t kept = 0, lost = 0;
+  for (int trial = 0; trial < 4000 && (kept < 150 || lost < 150); ++trial) {
+    std::uint32_t o = static_cast<std::uint32_t>(rng() % n), t = static_cast<std::uint32_t>(rng() % n);
+    std::uint32_t v = static_cast<std::uint32_t>(rng() % d.num_velocities());
+    const std::uint32_t e = d.escape_steps(o, v, t);
+    if (e == 0) continue;
+    std::uint32_t steps = 0;
+    bool alive = true;
+    for (; steps < (e == kForever ? 40u : e) && alive; ++steps) {
+      t = d.target_policy(o, v, t);
+      const std::uint32_t w = d.observer_policy(o, v, t);
+      if (w == DynamicVisibilityGame::kNone) alive = false;
+      else o = d.destination(o, w), v = w, alive = d.escape_steps(o, v, t) != 0;
+    }
+    if (e == kForever) {
+      ++kept;
+      EXPECT_TRUE(alive) << "kept state lost after " << steps << " steps";
+    } else {
+      ++lost;
+      EXPECT_FALSE(alive) << "escape in " << e << " steps not realised";
+      EXPECT_EQ(steps, e);
+    }
+  }
+  EXPECT_GE(kept, 150u);
+  EXPECT_GE(lost, 150u);
+}

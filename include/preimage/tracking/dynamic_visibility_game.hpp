@@ -60,13 +60,9 @@ class DynamicVisibilityGame {
   int accel_steps() const { return accel_steps_; }
 
   std::size_t num_velocities() const { return velocities_.size(); }
-  /// Velocity v in grid steps per game step; index 0 is standing still.
+  /// Velocity v in grid steps per game step (resolution / step_time() m/s each); index 0
+  /// is standing still.
   std::array<int, 2> velocity(std::uint32_t v) const { return velocities_[v]; }
-  /// In m/s.
-  Point velocity_mps(std::uint32_t v) const;
-  /// The velocity index nearest a velocity in m/s (standing still for none within half a
-  /// step of it).
-  std::uint32_t nearest_velocity(double vx, double vy) const;
 
   /// Steps in which the target forces a loss from (observer o moving at v, target t), the
   /// target to move; 0 if lost already, kForever if kept forever. Escape times longer than
