@@ -25,6 +25,14 @@ constexpr std::uint32_t kForever = VisibilityGame::kForever;
 using test::box;
 using test::rect_room;
 
+// A 6 x 4 room with a 1 m pillar in the middle, at 0.5 m and a 3 m range.
+GameParams pillar_game_params() {
+  GameParams p;
+  p.resolution = 0.5;
+  p.range = 3;
+  return p;
+}
+
 // At resolution h, half speed and v_max 1, one grid step per step squared is
 // 0.25 / (2 h) m/s^2.
 double unit_accel(double h) { return 0.25 / (2 * h); }
@@ -125,9 +133,7 @@ TEST(DynamicVisibilityGame, MatchesBruteForceValueIterationOnRandomRooms) {
 // dynamics, whatever the velocity.
 TEST(DynamicVisibilityGame, AgreesWithTheGameWithoutDynamicsInTheLimitAndIsContainedInIt) {
   const Environment env = rect_room(6, 4, {box(2.5, 1.5, 3.5, 2.5)});
-  GameParams p;
-  p.resolution = 0.5;
-  p.range = 3;
+  const GameParams p = pillar_game_params();
   auto g = std::make_shared<const VisibilityGame>(env, p);
   DynamicGameParams slow, free;
   slow.accel = unit_accel(p.resolution);
@@ -196,9 +202,7 @@ TEST(DynamicVisibilityGame, RefusesResolutionsThatDoNotCarryGridPointsToGridPoin
 // wins within exactly e steps against the observer's.
 TEST(DynamicVisibilityGame, ItsPoliciesRealiseTheValues) {
   const Environment env = rect_room(6, 4, {box(2.5, 1.5, 3.5, 2.5)});
-  GameParams p;
-  p.resolution = 0.5;
-  p.range = 3;
+  const GameParams p = pillar_game_params();
   auto g = std::make_shared<const VisibilityGame>(env, p);
   DynamicGameParams dp;
   dp.accel = unit_accel(p.resolution);
