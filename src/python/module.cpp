@@ -17,6 +17,7 @@
 #include <preimage/scene/geojson.hpp>
 #include <preimage/scene/import.hpp>
 #include <preimage/scene/scene.hpp>
+#include <preimage/tracking/dynamic_visibility_game.hpp>
 #include <preimage/tracking/replay.hpp>
 #include <preimage/tracking/visibility_game.hpp>
 #include <preimage/wallfollow/cut_ordering.hpp>
@@ -27,6 +28,8 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <memory>
+#include <optional>
 
 namespace py = pybind11;
 using namespace preimage;
@@ -256,14 +259,21 @@ PYBIND11_MODULE(preimage, m) {
      "TRACK's steps on one log line (CARMEN FLASER/ROBOTLASER1 or the text format), as `preimage track replay` does; None for other lines");
 
   m.def("track_game", [](const geometry::Environment& env, double resolution, double speed_ratio, double range, double separation,
-                         double target_radius, const py::object& observer, const py::object& target) {
+                         double target_radius, const py::object& observer, const py::object& target, double accel) {
     tracking::GameParams p;
     p.resolution = resolution;
     p.speed_ratio = speed_ratio;
     p.range = range > 0 ? range : std::numeric_limits<double>::infinity();
     p.separation = separation;
     p.target_radius = target_radius;
-    const tracking::VisibilityGame g(env, p);
+    const auto shared = std::make_shared<const tracking::VisibilityGame>(env, p);
+    const tracking::VisibilityGame& g = *shared;
+    std::optional<tracking::DynamicVisibilityGame> dyn;
+    if (accel > 0) {
+      tracking::DynamicGameParams dp;
+      dp.accel = accel;
+      dyn.emplace(shared, dp);
+    }
     const auto& st = g.stats();
     py::dict d;
     d["points"] = st.points;
@@ -286,13 +296,31 @@ PYBIND11_MODULE(preimage, m) {
         const std::uint32_t v = g.escape_steps(o, t);
         d["observer_point"] = py::make_tuple(g.point(o).x(), g.point(o).y());
         d["escape_steps"] = v == tracking::VisibilityGame::kForever ? py::object(py::none()) : py::object(py::int_(v));
+        if (dyn) {
+          const std::uint32_t w = dyn->escape_steps(o, 0, t);
+          d["escape_steps_at_rest"] = w == tracking::VisibilityGame::kForever ? py::object(py::none()) : py::object(py::int_(w));
+        }
       }
+    }
+    if (dyn) {
+      const auto& ds = dyn->stats();
+      py::dict dd;
+      dd["accel_steps"] = dyn->accel_steps();
+      dd["velocities"] = ds.velocities;
+      dd["states"] = ds.states;
+      dd["seen"] = ds.seen;
+      dd["kept"] = ds.winning;
+      dd["kept_at_rest"] = ds.winning_at_rest;
+      d["dynamics"] = dd;
     }
     return d;
   }, py::arg("environment"), py::arg("resolution") = 0.25, py::arg("speed_ratio") = 0.5, py::arg("range") = 8.0,
      py::arg("separation") = 0.35, py::arg("target_radius") = 0.2, py::arg("observer") = py::none(), py::arg("target") = py::none(),
+     py::arg("accel") = 0.0,
      "The visibility game of `preimage track game`: can an observer keep the target in view forever? Counts, and for a "
-     "target point the keeping observer points ((n, 2) array); with an observer too, escape_steps (None: kept forever)");
+     "target point the keeping observer points ((n, 2) array); with an observer too, escape_steps (None: kept forever). "
+     "accel > 0 (m/s^2 per axis, as `--accel`): also the game with the observer's velocity in the state, under "
+     "'dynamics', and escape_steps_at_rest for the observer starting still");
 
   m.def("cover", [](const geometry::Environment& env, double radius, std::optional<double> width, std::optional<double> angle,
                     const py::object& start, double min_turn_radius) {

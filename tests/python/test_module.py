@@ -161,3 +161,12 @@ def test_track_game_matches_cli():
     assert np.array_equal(mine["keeping_observers"], np.array(theirs["keeping_observers"], dtype=float))
     with pytest.raises(Exception, match="resolution"):
         preimage.track_game(scene.environment, resolution=0)
+    # With the observer's velocity in the state (track game --accel): the same counts as the CLI.
+    dyn = preimage.track_game(scene.environment, resolution=0.5, observer=(1, 3), target=(5.2, 3), accel=0.5)
+    theirs = cli_json("track", "game", path, "--resolution", "0.5", "--accel", "0.5")
+    for key in ("accel_steps", "velocities", "states", "seen", "kept", "kept_at_rest"):
+        assert dyn["dynamics"][key] == theirs["dynamics"][key], key
+    assert dyn["escape_steps_at_rest"] is None and theirs["dynamics"]["start"]["kept"]
+    assert dyn["dynamics"]["kept"] < dyn["kept"] * dyn["dynamics"]["velocities"]  # the bound on acceleration costs states
+    with pytest.raises(Exception, match="multiple of 0.25 m"):
+        preimage.track_game(scene.environment, resolution=0.125, accel=0.5)
