@@ -195,7 +195,9 @@ CoverageReport plan_wavefront(const Planning& P) {
   rep.rounding_detours = builder.detours;
   rep.laps = laps;
   rep.cells = spm.num_reached() + 1;  // the regions of the shortest path map (roots)
-  rep.critical_points = spm.extensions().size() + spm.collisions().size();
+  // A count for the report: the bends' extensions without locating their collisions (the
+  // bisection's point queries were most of this pattern's time on a 1,000-vertex plan).
+  rep.critical_points = spm.num_extensions() + spm.collisions().size();
   return rep;
 }
 

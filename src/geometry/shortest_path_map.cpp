@@ -109,26 +109,40 @@ std::vector<Point> ShortestPathMap::path_to(const Point& p) const {
   return out;
 }
 
+bool ShortestPathMap::extends(std::uint32_t v) const {
+  const Environment& env = environment();
+  const std::uint32_t u = pred_[v];
+  if (u == kNone) return false;
+  const Point& U = root_point(u);
+  const Point& V = env.vertex(v);
+  if (U == V) return false;
+  // The extension enters free space iff the obstacle's wedge at v (between its two
+  // neighbours, < 180 degrees at a reflex vertex) lies on one side of the line UV and the
+  // ray beyond V does not run along one of v's edges.
+  const Point& A = env.vertex(env.prev(v));
+  const Point& B = env.vertex(env.next(v));
+  const int oa = orientation(U, V, A), ob = orientation(U, V, B);
+  if (oa * ob < 0) return false;                          // the ray enters the obstacle at v
+  if (oa == 0 && dot_sign(U, V, V, A) > 0) return false;  // runs along edge v-prev(v)
+  if (ob == 0 && dot_sign(U, V, V, B) > 0) return false;  // runs along edge v-next(v)
+  return true;
+}
+
+std::size_t ShortestPathMap::num_extensions() const {
+  std::size_t n = 0;
+  for (std::uint32_t v : graph_->reflex_vertices()) n += extends(v);
+  return n;
+}
+
 std::vector<ShortestPathMap::Extension> ShortestPathMap::extensions(double tolerance, unsigned threads) const {
   const Environment& env = environment();
   const auto& reflex = graph_->reflex_vertices();
   // Exact part (lazy-exact points are not shared between threads): which bends, and the hits.
   std::vector<Extension> result;
   for (std::uint32_t v : reflex) {
+    if (!extends(v)) continue;
     const std::uint32_t u = pred_[v];
-    if (u == kNone) continue;
     const Point& U = root_point(u);
-    const Point& V = env.vertex(v);
-    if (U == V) continue;
-    // The extension enters free space iff the obstacle's wedge at v (between its two
-    // neighbours, < 180 degrees at a reflex vertex) lies on one side of the line UV and the
-    // ray beyond V does not run along one of v's edges.
-    const Point& A = env.vertex(env.prev(v));
-    const Point& B = env.vertex(env.next(v));
-    const int oa = orientation(U, V, A), ob = orientation(U, V, B);
-    if (oa * ob < 0) continue;                              // the ray enters the obstacle at v
-    if (oa == 0 && dot_sign(U, V, V, A) > 0) continue;      // runs along edge v-prev(v)
-    if (ob == 0 && dot_sign(U, V, V, B) > 0) continue;      // runs along edge v-next(v)
     const ExactPoint eu = to_exact(U), ev = env.exact_vertex(v);
     const auto hit = shoot_ray(env, ev, ev - eu);
     if (!hit) continue;  // cannot happen in a bounded environment
@@ -219,46 +233,97 @@ ShortestPathMap::Samples ShortestPathMap::sample(std::size_t columns, unsigned t
   s.rows = static_cast<std::size_t>(std::floor(h / s.step)) + 1;
   s.x0 = box.xmin(), s.y0 = box.ymin();
   s.values.resize(s.columns * s.rows);
-  // Samples every 8 steps along both axes are full queries (the visibility of their reflex
-  // vertices: most of the wave front's time, issue 49). Then, level by level (every 4, 2,
-  // 1 steps), a sample between queried ones that all have the same root lies in that
-  // root's cell of the map but for slivers, and takes its distance from the root directly
-  // (when it lies in free space); the others are queried.
-  const unsigned t = spm_threads(threads, s.values.size());
-  constexpr std::size_t kTop = 8;
-  parallel_for(s.rows, t, [&](std::size_t j) {
-    if (j % kTop == 0)
-      for (std::size_t i = 0; i < s.columns; i += kTop) s.values[j * s.columns + i] = query(s.point(i, j));
-  });
+  // h(p) is the least D(r) + |rp| over the roots r that see p: every such sum is the length
+  // of a path in free space, and p's own root gives h(p). So each root's visibility polygon
+  // (one per reached reflex vertex and the source: O(n) polygons instead of a visibility
+  // query per sample, which was most of the wave front's time, issue 49) is scan-converted
+  // onto the grid, keeping the least sum per sample. Rows cut the polygon's edges in double;
+  // a sample closer than a relative 1e-9 to a span's end (or covered by no span) is decided
+  // by the exact in_free_space test and, in free space without a value, a full query.
   const Environment& env = environment();
-  for (std::size_t g = kTop / 2; g >= 1; g /= 2) {
-    const std::size_t g2 = 2 * g;
-    parallel_for(s.rows, t, [&](std::size_t j) {
-      if (j % g != 0) return;
-      for (std::size_t i = 0; i < s.columns; i += g) {
-        if (i % g2 == 0 && j % g2 == 0) continue;  // done at a coarser level
-        const std::size_t i0 = i - i % g2, i1 = i % g2 ? i0 + g2 : i0, j0 = j - j % g2, j1 = j % g2 ? j0 + g2 : j0;
-        const Point p = s.point(i, j);
-        std::uint32_t root = kNone;
-        bool same = i1 < s.columns && j1 < s.rows;
-        for (const std::size_t a : {i0, i1})
-          for (const std::size_t b : {j0, j1}) {
-            if (!same) break;
-            const std::uint32_t r = s.values[b * s.columns + a].root;
-            if (r == kNone || (root != kNone && r != root)) same = false;
-            root = r;
-          }
-        if (same && !graph_->index().in_free_space(p)) {
-          s.values[j * s.columns + i] = {};  // a thin obstacle between the queried samples
-        } else if (same) {
-          const Point at = root == kSource ? source_ : env.vertex(root);
-          s.values[j * s.columns + i] = {(root == kSource ? 0.0 : dist_[root]) + spm_length(at, p), root};
-        } else {
-          s.values[j * s.columns + i] = query(p);
+  std::vector<std::uint32_t> roots{kSource};
+  for (std::uint32_t v : graph_->reflex_vertices())
+    if (pred_[v] != kNone) roots.push_back(v);
+  // Nearest roots first: the samples' values are then close to final early, and a farther
+  // root is rejected by comparing squares, without a square root.
+  std::stable_sort(roots.begin() + 1, roots.end(), [&](std::uint32_t a, std::uint32_t b) { return dist_[a] < dist_[b]; });
+  const unsigned t = spm_threads(threads, roots.size());
+  const std::size_t n = s.values.size();
+  std::vector<std::vector<Query>> best(t, std::vector<Query>(n));
+  std::vector<std::vector<char>> sure(t, std::vector<char>(n, 0));
+  const double scale = std::max({std::fabs(box.xmin()), std::fabs(box.xmax()), std::fabs(box.ymin()), std::fabs(box.ymax()), w, h});
+  const double margin = 1e-9 * scale;
+  parallel_for(t, t, [&](std::size_t th) {
+    VisibilityPolygon V;
+    std::vector<std::vector<double>> cuts;
+    auto& out = best[th];
+    auto& ok = sure[th];
+    for (std::size_t k = th; k < roots.size(); k += t) {
+      const std::uint32_t r = roots[k];
+      const Point R = root_point(r);
+      const double d0 = r == kSource ? 0.0 : dist_[r];
+      graph_->index().compute(R, V);
+      const std::size_t m = V.vertices.size();
+      double lo = HUGE_VAL, hi = -HUGE_VAL;
+      for (const auto& x : V.vertices) lo = std::min(lo, x.approx.y()), hi = std::max(hi, x.approx.y());
+      const std::ptrdiff_t j0 = std::max<std::ptrdiff_t>(0, static_cast<std::ptrdiff_t>(std::ceil((lo - s.y0) / s.step)));
+      const std::ptrdiff_t j1 = std::min<std::ptrdiff_t>(static_cast<std::ptrdiff_t>(s.rows) - 1, static_cast<std::ptrdiff_t>(std::floor((hi - s.y0) / s.step)));
+      if (j1 < j0) continue;
+      cuts.assign(static_cast<std::size_t>(j1 - j0 + 1), {});
+      for (std::size_t e = 0; e < m; ++e) {
+        const Point &a = V.vertices[e].approx, &b = V.vertices[(e + 1) % m].approx;
+        if (a.y() == b.y()) continue;
+        const Point &p = a.y() < b.y() ? a : b, &q = a.y() < b.y() ? b : a;
+        // Rows with p.y <= y < q.y (half open: a vertex shared by two edges counts once).
+        std::ptrdiff_t ja = std::max<std::ptrdiff_t>(j0, static_cast<std::ptrdiff_t>(std::ceil((p.y() - s.y0) / s.step)));
+        while (ja > j0 && s.y0 + s.step * static_cast<double>(ja - 1) >= p.y()) --ja;
+        for (std::ptrdiff_t j = ja; j <= j1; ++j) {
+          const double y = s.y0 + s.step * static_cast<double>(j);
+          if (y < p.y()) continue;
+          if (y >= q.y()) break;
+          cuts[static_cast<std::size_t>(j - j0)].push_back(p.x() + (y - p.y()) * (q.x() - p.x()) / (q.y() - p.y()));
         }
       }
-    });
-  }
+      for (std::ptrdiff_t j = j0; j <= j1; ++j) {
+        auto& xs = cuts[static_cast<std::size_t>(j - j0)];
+        std::sort(xs.begin(), xs.end());
+        const double y = s.y0 + s.step * static_cast<double>(j), dy2 = (y - R.y()) * (y - R.y());
+        for (std::size_t c = 0; c + 1 < xs.size(); c += 2) {
+          const double xa = xs[c], xb = xs[c + 1];
+          const std::ptrdiff_t ia = std::max<std::ptrdiff_t>(0, static_cast<std::ptrdiff_t>(std::ceil((xa - s.x0) / s.step)));
+          const std::ptrdiff_t ib = std::min<std::ptrdiff_t>(static_cast<std::ptrdiff_t>(s.columns) - 1, static_cast<std::ptrdiff_t>(std::floor((xb - s.x0) / s.step)));
+          for (std::ptrdiff_t i = ia; i <= ib; ++i) {
+            const double x = s.x0 + s.step * static_cast<double>(i);
+            const std::size_t at = static_cast<std::size_t>(j) * s.columns + static_cast<std::size_t>(i);
+            if (x - xa > margin && xb - x > margin) ok[at] = 1;
+            const double slack = out[at].distance - d0, d2 = (x - R.x()) * (x - R.x()) + dy2;
+            if (!(slack > 0) || d2 >= slack * slack) continue;  // (infinite slack passes)
+            const double f = d0 + std::sqrt(d2);  // hypot's overflow care was a sixth of the time
+            if (f < out[at].distance) out[at] = {f, r};
+          }
+        }
+      }
+    }
+  });
+  parallel_for(s.rows, spm_threads(threads, n), [&](std::size_t j) {
+    for (std::size_t i = 0; i < s.columns; ++i) {
+      const std::size_t at = j * s.columns + i;
+      Query q;
+      bool certain = false;
+      for (std::size_t th = 0; th < t; ++th) {
+        if (best[th][at].distance < q.distance) q = best[th][at];
+        certain = certain || sure[th][at];
+      }
+      if (q.root != kNone && certain) {
+        s.values[at] = q;
+        continue;
+      }
+      const Point p = s.point(i, j);
+      if (!graph_->index().in_free_space(p)) s.values[at] = {};
+      else s.values[at] = q.root != kNone ? q : query(p);
+    }
+  });
+  (void)env;
   return s;
 }
 

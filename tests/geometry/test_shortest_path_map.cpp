@@ -267,11 +267,11 @@ TEST(ShortestPathMap, SquareAroundASquareHoleByHand) {
   EXPECT_EQ(spm.query({5, 5}).root, kNone);
 }
 
-// sample() queries every 8th sample and takes the others from a root shared by the samples
-// around them (issue 49: the wave front's time): it must agree with a full query almost
-// everywhere, and exactly in root and distance where it agrees.
+// sample() scan-converts every root's visibility polygon (issue 49: the wave front's time)
+// instead of a visibility query per sample: it must agree with a full query on every
+// sample, in root and distance (to rounding), and leave samples outside free space unset.
 TEST(ShortestPathMap, SamplesAgreeWithFullQueries) {
-  std::size_t total = 0, agree = 0;
+  std::size_t total = 0, agree = 0, distance = 0;
   for (std::uint64_t seed = 1; seed <= 4; ++seed) {
     const Environment env = generators::random_environment(60, 1 + seed % 3, seed);
     const VisibilityIndex index(env);
@@ -292,9 +292,15 @@ TEST(ShortestPathMap, SamplesAgreeWithFullQueries) {
           continue;
         }
         ++total;
-        agree += got.root == q.root && std::fabs(got.distance - q.distance) <= 1e-9 * (1 + q.distance);
+        const bool same = std::fabs(got.distance - q.distance) <= 1e-9 * (1 + q.distance);
+        agree += got.root == q.root && same;
+        distance += same;
       }
   }
   ASSERT_GT(total, 10000u);
-  EXPECT_GE(static_cast<double>(agree), 0.995 * static_cast<double>(total)) << agree << " of " << total;
+  // Every sample: each root's visibility polygon scan-converted gives the full query's root
+  // and distance (the sampling that inferred samples from their neighbours' roots agreed on
+  // 99.5 %; this test allowed that).
+  EXPECT_EQ(distance, total);
+  EXPECT_EQ(agree, total);
 }

@@ -112,10 +112,14 @@ class ShortestPathMap {
   /// 1/tolerance) point queries per extension that collides, one for the others; on
   /// `threads` threads (0: hardware).
   std::vector<Extension> extensions(double tolerance = 1e-9, unsigned threads = 0) const;
+  /// extensions().size(), from the exact turn tests alone (no ray shot, no query).
+  std::size_t num_extensions() const;
 
   /// h and roots on a grid of samples (a drawing, decided by nothing): `columns` across the
   /// bounding box, square cells; row-major from (xmin, ymin), points outside free space
-  /// {+inf, kNone}. On `threads` threads (0: hardware).
+  /// {+inf, kNone}. Each root's visibility polygon is scan-converted onto the grid (O(n)
+  /// polygons, not a query per sample); samples within rounding of a polygon's edge are
+  /// decided by the exact in_free_space test and a query. On `threads` threads (0: hardware).
   struct Samples {
     double x0 = 0, y0 = 0, step = 0;
     std::size_t columns = 0, rows = 0;
@@ -136,6 +140,7 @@ class ShortestPathMap {
   std::vector<Collision> collisions() const;
 
  private:
+  bool extends(std::uint32_t v) const;  // v is a bend whose extension enters free space
   const VisibilityGraph* graph_;
   Point source_;
   std::vector<double> dist_;
