@@ -237,10 +237,9 @@ ShortestPathMap::Samples ShortestPathMap::sample(std::size_t columns, unsigned t
   // of a path in free space, and p's own root gives h(p). So each root's visibility polygon
   // (one per reached reflex vertex and the source: O(n) polygons instead of a visibility
   // query per sample, which was most of the wave front's time, issue 49) is scan-converted
-  // onto the grid, keeping the least sum per sample. Rows cut the polygon's edges in double;
-  // a sample closer than a relative 1e-9 to a span's end (or covered by no span) is decided
-  // by the exact in_free_space test and, in free space without a value, a full query.
-  const Environment& env = environment();
+  // onto the grid, keeping the least sum per sample. Rows cut the polygon's edges in double,
+  // so whether a sample is in free space is decided by the exact in_free_space test (O(1)),
+  // and one in free space that no span covered (rounding at an edge) gets a full query.
   std::vector<std::uint32_t> roots{kSource};
   for (std::uint32_t v : graph_->reflex_vertices())
     if (pred_[v] != kNone) roots.push_back(v);
@@ -250,14 +249,10 @@ ShortestPathMap::Samples ShortestPathMap::sample(std::size_t columns, unsigned t
   const unsigned t = spm_threads(threads, roots.size());
   const std::size_t n = s.values.size();
   std::vector<std::vector<Query>> best(t, std::vector<Query>(n));
-  std::vector<std::vector<char>> sure(t, std::vector<char>(n, 0));
-  const double scale = std::max({std::fabs(box.xmin()), std::fabs(box.xmax()), std::fabs(box.ymin()), std::fabs(box.ymax()), w, h});
-  const double margin = 1e-9 * scale;
   parallel_for(t, t, [&](std::size_t th) {
     VisibilityPolygon V;
     std::vector<std::vector<double>> cuts;
     auto& out = best[th];
-    auto& ok = sure[th];
     for (std::size_t k = th; k < roots.size(); k += t) {
       const std::uint32_t r = roots[k];
       const Point R = root_point(r);
@@ -295,7 +290,6 @@ ShortestPathMap::Samples ShortestPathMap::sample(std::size_t columns, unsigned t
           for (std::ptrdiff_t i = ia; i <= ib; ++i) {
             const double x = s.x0 + s.step * static_cast<double>(i);
             const std::size_t at = static_cast<std::size_t>(j) * s.columns + static_cast<std::size_t>(i);
-            if (x - xa > margin && xb - x > margin) ok[at] = 1;
             const double slack = out[at].distance - d0, d2 = (x - R.x()) * (x - R.x()) + dy2;
             if (!(slack > 0) || d2 >= slack * slack) continue;  // (infinite slack passes)
             const double f = d0 + std::sqrt(d2);  // hypot's overflow care was a sixth of the time
@@ -309,21 +303,13 @@ ShortestPathMap::Samples ShortestPathMap::sample(std::size_t columns, unsigned t
     for (std::size_t i = 0; i < s.columns; ++i) {
       const std::size_t at = j * s.columns + i;
       Query q;
-      bool certain = false;
-      for (std::size_t th = 0; th < t; ++th) {
+      for (std::size_t th = 0; th < t; ++th)
         if (best[th][at].distance < q.distance) q = best[th][at];
-        certain = certain || sure[th][at];
-      }
-      if (q.root != kNone && certain) {
-        s.values[at] = q;
-        continue;
-      }
       const Point p = s.point(i, j);
       if (!graph_->index().in_free_space(p)) s.values[at] = {};
       else s.values[at] = q.root != kNone ? q : query(p);
     }
   });
-  (void)env;
   return s;
 }
 

@@ -118,8 +118,9 @@ class ShortestPathMap {
   /// h and roots on a grid of samples (a drawing, decided by nothing): `columns` across the
   /// bounding box, square cells; row-major from (xmin, ymin), points outside free space
   /// {+inf, kNone}. Each root's visibility polygon is scan-converted onto the grid (O(n)
-  /// polygons, not a query per sample); samples within rounding of a polygon's edge are
-  /// decided by the exact in_free_space test and a query. On `threads` threads (0: hardware).
+  /// polygons, not a query per sample); free space is decided by the exact in_free_space
+  /// test, and a sample in it that no polygon covered gets a query. On `threads` threads
+  /// (0: hardware).
   struct Samples {
     double x0 = 0, y0 = 0, step = 0;
     std::size_t columns = 0, rows = 0;
