@@ -38,7 +38,7 @@ DynamicVisibilityGame::DynamicVisibilityGame(std::shared_ptr<const VisibilityGam
   const std::size_t n = g.num_points();
 
   // Velocities: the observer's reach in grid steps (the moves of the game without dynamics).
-  const double r2 = 2.0 / (gp.speed_ratio * gp.speed_ratio) * (1 + 1e-12);
+  const double reach = g.observer_reach() / h, r2 = reach * reach * (1 + 1e-12);
   const int r = static_cast<int>(std::floor(std::sqrt(r2)));
   const int side = 2 * r + 1;
   std::vector<std::uint32_t> lookup(static_cast<std::size_t>(side * side), kNone);
@@ -105,20 +105,21 @@ DynamicVisibilityGame::DynamicVisibilityGame(std::shared_ptr<const VisibilityGam
             alive += q != kNone && level_[(static_cast<std::size_t>(q) * V + w) * n + tp] != kLost;
           }
           answers[(o * V + v) * n + tp] = static_cast<std::uint8_t>(alive);
+          if (alive == 0) zero[th].push_back(static_cast<std::uint32_t>((o * V + v) * n + tp));  // Y lost at step 0
         }
       }
   });
+  // X states lost at step 1: a target move into a Y lost already (levels are written only
+  // now, after every count has read them).
   parallel_for(threads, threads, [&](std::size_t th) {
-    for (std::size_t o = th; o < n; o += threads)
-      for (std::size_t v = 0; v < V; ++v)
-        for (std::size_t tp = 0; tp < n; ++tp) {
-          if (answers[(o * V + v) * n + tp] != 0) continue;
-          for (std::uint32_t t : g.target_moves(static_cast<std::uint32_t>(tp))) {  // the moves are symmetric
-            std::atomic_ref<std::uint8_t> a(level_[(o * V + v) * n + t]);
-            std::uint8_t expect = kKept;
-            if (a.compare_exchange_strong(expect, 1)) next[th].push_back(static_cast<std::uint32_t>((o * V + v) * n + t));
-          }
-        }
+    for (const std::uint32_t s0 : zero[th]) {
+      const std::size_t ov = s0 / n, tp = s0 % n;
+      for (std::uint32_t t : g.target_moves(static_cast<std::uint32_t>(tp))) {  // the moves are symmetric
+        std::atomic_ref<std::uint8_t> a(level_[ov * n + t]);
+        std::uint8_t expect = kKept;
+        if (a.compare_exchange_strong(expect, 1)) next[th].push_back(static_cast<std::uint32_t>(ov * n + t));
+      }
+    }
   });
   std::vector<std::uint32_t> frontier;
   for (auto& f : next) frontier.insert(frontier.end(), f.begin(), f.end());
