@@ -38,20 +38,18 @@ ShortestPathMap::ShortestPathMap(const VisibilityGraph& graph, const Point& sour
   dist_.assign(env.num_vertices(), inf);
   pred_.assign(env.num_vertices(), kNone);
 
-  // Out-lists: for reflex u, the reflex vertices w it sees with segment uw tangent at u.
+  // Out-lists: for reflex u, the reflex vertices w it sees with segment uw tangent at u
+  // (the graph's lists, shared with its transits' searches: one visibility query per vertex).
   std::vector<std::uint32_t> slot(env.num_vertices(), kNone);
   for (std::size_t k = 0; k < reflex.size(); ++k) slot[reflex[k]] = static_cast<std::uint32_t>(k);
-  std::vector<std::vector<std::uint32_t>> out(reflex.size());
-  parallel_for(reflex.size(), spm_threads(threads, reflex.size()), [&](std::size_t k) {
-    const std::uint32_t u = reflex[k];
-    for (std::uint32_t w : index.visible_vertices(env.vertex(u)))
-      if (w != u && slot[w] != kNone && env.vertex(w) != env.vertex(u) && tangent_at(env, u, env.vertex(w))) out[k].push_back(w);
-  });
-
+  parallel_for(reflex.size(), spm_threads(threads, reflex.size()), [&](std::size_t k) { graph.tangent_out(reflex[k]); });
   out_off_.assign(reflex.size() + 1, 0);
-  for (std::size_t k = 0; k < reflex.size(); ++k) out_off_[k + 1] = out_off_[k] + static_cast<std::uint32_t>(out[k].size());
-  out_.reserve(out_off_.back());
-  for (auto& list : out) out_.insert(out_.end(), list.begin(), list.end());
+  for (std::size_t k = 0; k < reflex.size(); ++k) {
+    const std::uint32_t u = reflex[k];
+    for (std::uint32_t w : graph.tangent_out(u))
+      if (env.vertex(w) != env.vertex(u)) out_.push_back(w);
+    out_off_[k + 1] = static_cast<std::uint32_t>(out_.size());
+  }
   slot_ = std::move(slot);
   const auto& slot_ref = slot_;
 

@@ -29,29 +29,31 @@ VisibilityGraph::VisibilityGraph(const VisibilityIndex& index) : index_(&index) 
   adj_.resize(env.num_vertices());
 }
 
-std::vector<std::uint32_t> VisibilityGraph::compute_neighbours(std::uint32_t u) const {
-  const Environment& env = environment();
-  std::vector<std::uint32_t> out;
-  if (!env.is_reflex(u)) return out;
-  for (std::uint32_t w : index_->visible_vertices(env.vertex(u)))
-    if (w != u && env.is_reflex(w) && tangent_at(env, u, env.vertex(w)) && tangent_at(env, w, env.vertex(u))) out.push_back(w);
-  return out;
-}
-
-std::span<const std::uint32_t> VisibilityGraph::neighbours(std::uint32_t v) const {
+const VisibilityGraph::Lists& VisibilityGraph::lists(std::uint32_t u) const {
   {
     std::lock_guard lock(mutex_);
-    if (adj_[v]) return *adj_[v];
+    if (adj_[u]) return *adj_[u];
   }
-  auto list = std::make_unique<const std::vector<std::uint32_t>>(compute_neighbours(v));
+  auto L = std::make_unique<Lists>();
+  const Environment& env = environment();
+  if (env.is_reflex(u))
+    for (std::uint32_t w : index_->visible_vertices(env.vertex(u)))
+      if (w != u && env.is_reflex(w) && tangent_at(env, u, env.vertex(w))) {
+        L->tangent_out.push_back(w);
+        if (tangent_at(env, w, env.vertex(u))) L->neighbours.push_back(w);
+      }
   std::lock_guard lock(mutex_);
-  if (!adj_[v]) adj_[v] = std::move(list);  // another thread may have been first: same list
-  return *adj_[v];
+  if (!adj_[u]) adj_[u] = std::move(L);  // another thread may have been first: the same lists
+  return *adj_[u];
 }
+
+std::span<const std::uint32_t> VisibilityGraph::neighbours(std::uint32_t v) const { return lists(v).neighbours; }
+
+std::span<const std::uint32_t> VisibilityGraph::tangent_out(std::uint32_t v) const { return lists(v).tangent_out; }
 
 void VisibilityGraph::build_all() const {
   const unsigned threads = reflex_.size() < 64 ? 1 : std::clamp(std::thread::hardware_concurrency(), 1u, 8u);
-  parallel_for(reflex_.size(), threads, [&](std::size_t i) { neighbours(reflex_[i]); });
+  parallel_for(reflex_.size(), threads, [&](std::size_t i) { lists(reflex_[i]); });
 }
 
 std::size_t VisibilityGraph::num_edges() const {

@@ -36,6 +36,11 @@ class VisibilityGraph {
   const std::vector<std::uint32_t>& reflex_vertices() const { return reflex_; }
   /// Neighbours of reflex vertex v in the graph (environment ids); empty for others.
   std::span<const std::uint32_t> neighbours(std::uint32_t v) const;
+  /// The reflex vertices w that reflex vertex v sees with segment vw tangent at v (not
+  /// necessarily at w), ascending; neighbours(v) are those of them tangent at w too. A
+  /// shortest path map's Dijkstra runs on these (a path may end at w in any direction), so
+  /// it shares this graph's one visibility query per vertex instead of making its own.
+  std::span<const std::uint32_t> tangent_out(std::uint32_t v) const;
   /// Number of edges (builds them all).
   std::size_t num_edges() const;
 
@@ -54,12 +59,15 @@ class VisibilityGraph {
   // Reflex vertices visible from q whose segment to q is tangent at the vertex.
   std::vector<std::uint32_t> tangent_reflex_from(const Point& q) const;
 
-  std::vector<std::uint32_t> compute_neighbours(std::uint32_t v) const;
+  struct Lists {
+    std::vector<std::uint32_t> tangent_out, neighbours;
+  };
+  const Lists& lists(std::uint32_t v) const;
 
   const VisibilityIndex* index_;
   std::vector<std::uint32_t> reflex_;
-  // Per environment vertex: its neighbours once computed (lists never change after).
-  mutable std::vector<std::unique_ptr<const std::vector<std::uint32_t>>> adj_;
+  // Per environment vertex: its lists once computed (they never change after).
+  mutable std::vector<std::unique_ptr<const Lists>> adj_;
   mutable std::mutex mutex_;
 };
 
