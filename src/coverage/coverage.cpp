@@ -415,8 +415,11 @@ void touch_up(const Planning& P, CoverageReport& rep) {
 }
 
 // 6.2.1's pattern: the sweep direction given, or the two most promising candidates planned
-// and the shorter path kept.
-CoverageReport plan_boustrophedon(const Planning& P) {
+// and the cheaper path kept. A robot that turns in place gets each candidate touched up
+// first (`touched`), so the choice is made on the paths it would drive: on office 848 at
+// W = 0.5 the cheaper candidate before the touch-ups (and the bends merged) was the dearer
+// after them.
+CoverageReport plan_boustrophedon(const Planning& P, bool& touched) {
   // A direction planned: its decomposition and, with a direction per cell, each cell's. A
   // direction per cell where the direction is chosen (auto) and the cells are ordered by
   // the generalised TSP (6.2.1's depth-first walk runs over one decomposition's adjacency).
@@ -459,6 +462,7 @@ CoverageReport plan_boustrophedon(const Planning& P) {
   std::optional<CoverageReport> best;
   for (Direction& d : planned) {
     CoverageReport cand = plan_at(P, *d.b, d.angle, std::move(d.cells));
+    if (planned.size() > 1 && P.o.min_turn_radius == 0) touch_up(P, cand), touched = true;
     // The cheaper path, a turn (over 1°) worth turn_cost metres (--turn-cost, as merged bends).
     const auto cost = [&](const CoverageReport& r) { return r.length + P.o.turn_cost * static_cast<double>(r.turns); };
     if (!best || cost(cand) < cost(*best)) best = std::move(cand);
@@ -578,13 +582,14 @@ CoverageReport plan_in_frame(const Environment& env, const CoverageOptions& o) {
   const VisibilityGraph graph(index);
   const Planning P{env, cs, E, index, graph, o, w, entry};
 
-  CoverageReport rep = o.pattern == Pattern::Boustrophedon ? plan_boustrophedon(P)
+  bool touched = false;  // touched up already (boustrophedon's candidates)
+  CoverageReport rep = o.pattern == Pattern::Boustrophedon ? plan_boustrophedon(P, touched)
                        : o.pattern == Pattern::Brushfire   ? detail::plan_brushfire(P)
                        : o.pattern == Pattern::Wavefront   ? detail::plan_wavefront(P)
                                                            : detail::plan_pattern(P);
   if (o.min_turn_radius > 0)
     detail::make_drivable(P, rep, o.min_turn_radius);  // straightened, driven, touched up with curves
-  else
+  else if (!touched)
     touch_up(P, rep);
   rep.width = w, rep.robot_radius = r;
   rep.target_area = E.area();

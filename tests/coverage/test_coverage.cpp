@@ -282,3 +282,19 @@ TEST(Coverage, CellsAcrossTheSweepAreSweptTheOtherWay) {
     EXPECT_LT(both.sharp_turns, std::min(at0.sharp_turns, at90.sharp_turns)) << "W " << w;
   }
 }
+
+// Found on office 848 at W = 0.5: auto compared its two candidate directions before the
+// touch-ups and merged bends, kept 0° there, and ended dearer (length + turn_cost per turn)
+// than 90° given by hand, with more turns over 15° than the day.
+TEST(Coverage, AutoDirectionIsChosenOnTheTouchedUpPaths) {
+  const Environment office =
+      scene::load_scene(std::string(PREIMAGE_FLOORPLANS) + "/office_mlstruct_848.json").require_environment();
+  auto cost = [&](std::optional<double> angle) {
+    CoverageOptions o;
+    o.width = 0.5, o.robot_radius = 0.25, o.angle_deg = angle;
+    const auto r = plan_coverage(office, o);
+    return r.length + o.turn_cost * static_cast<double>(r.turns);
+  };
+  const double at0 = cost(0.0), at90 = cost(90.0), chosen = cost(std::nullopt);
+  EXPECT_LE(chosen, std::min(at0, at90)) << "auto " << chosen << ", 0 degrees " << at0 << ", 90 degrees " << at90;
+}

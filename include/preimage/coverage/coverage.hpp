@@ -53,7 +53,7 @@ struct CoverageOptions {
   double width = 0;                  // tool width w: laps are w apart; 0 means 2 * robot_radius
   double robot_radius = 0;           // r: the robot's centre stays r away from every obstacle
   std::optional<Point> start;        // default: where the first sweep begins
-  std::optional<double> angle_deg;   // sweep direction; none = try candidates, keep the shortest
+  std::optional<double> angle_deg;   // sweep direction; none = try candidates, keep the cheapest (length and turns)
   CellOrder order = CellOrder::Optimised;
   Transit transit = Transit::Shortest;
   Pattern pattern = Pattern::Boustrophedon;
