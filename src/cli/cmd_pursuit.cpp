@@ -319,18 +319,28 @@ void run_plan(const PlanFlags& F) {
 
 // ---------------------------------------------------------------- check
 void run_check(const std::string& file, const std::string& path_file, bool as_json, const std::string& svg, std::size_t frames,
-               std::size_t threads) {
+               std::size_t threads, double range, std::size_t range_sides) {
   const scene::Scene s = scene::load_scene(file);
   const auto& env = s.require_environment();
   const pursuit::PathsInput paths = pursuit::parse_paths(scene::read_file(path_file), path_file);
   pursuit::CheckOptions o;
   o.threads = static_cast<unsigned>(threads);
+  o.range = range, o.range_sides = range_sides;
   if (!svg.empty()) o.frames = pursuit::frame_waypoints(paths.exact[0].size(), frames);
   const pursuit::CheckResult r = pursuit::check_paths(env, paths, o);
   if (!svg.empty()) write_figure(svg, env, paths.rounded(), r);
-  if (as_json) return print_json(check_json(r));
+  if (as_json) {
+    json out = check_json(r);
+    out["range"] = range > 0 ? json(range) : json(nullptr);
+    if (range > 0) out["range_sides"] = range_sides;
+    return print_json(out);
+  }
   std::cout << plural(paths.exact.size(), "pursuer", "pursuers") << ", " << plural(paths.exact[0].size(), "waypoint", "waypoints")
-            << (paths.exact_strings ? " (exact)" : "") << ": " << check_text(r) << "\n";
+            << (paths.exact_strings ? " (exact)" : "");
+  if (range > 0)
+    std::cout << ", range " << geometry::format_number(range) << " (seen through an inscribed " << range_sides
+              << "-gon: what it clears, the disc clears)";
+  std::cout << ": " << check_text(r) << "\n";
   if (!svg.empty()) std::cout << "wrote " << svg << "\n";
 }
 
@@ -408,7 +418,14 @@ void add_pursuit_commands(CLI::App& app) {
     cmd->add_option("--svg", *svg, "Draw the check as small multiples to this SVG file");
     add_count(cmd, "--frames", *frames, 1, 24, "Moments drawn in the --svg small multiples");
     add_count(cmd, "--threads", *threads, 0, 256, "Threads building the moments (0: one per core); the verdict does not depend on it");
-    cmd->callback([=] { run_check(*file, *path, *as_json, *svg, *frames, *threads); });
+    auto range = std::make_shared<double>(0);
+    auto range_sides = std::make_shared<std::size_t>(32);
+    cmd->add_option("--range", *range,
+                    "Each pursuer sees only within this distance (checked with a polygon inscribed in the disc: a plan it clears is "
+                    "cleared by the real sensor; default: unlimited)")
+        ->check(number_in(0, 1e15, true));
+    add_count(cmd, "--range-sides", *range_sides, 8, 1024, "Corners of the polygon inscribed in the range's disc");
+    cmd->callback([=] { run_check(*file, *path, *as_json, *svg, *frames, *threads, *range, *range_sides); });
   }
 }
 

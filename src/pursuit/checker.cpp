@@ -16,6 +16,7 @@
 #include <preimage/union_find.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <condition_variable>
 #include <exception>
@@ -23,6 +24,7 @@
 #include <limits>
 #include <memory>
 #include <mutex>
+#include <numbers>
 #include <optional>
 #include <stdexcept>
 #include <thread>
@@ -31,6 +33,7 @@ namespace preimage::pursuit {
 
 using geometry::Environment;
 using geometry::ExactFT;
+using geometry::ExactKernel;
 using geometry::ExactPoint;
 using geometry::Point;
 
@@ -75,6 +78,34 @@ Paths to_double(const ExactPaths& paths) {
 
 void validate_paths(const Environment& env, const Paths& paths) { validate_paths(env, to_exact(paths)); }
 
+std::vector<Point> range_sensor(double range, std::size_t sides) {
+  if (!(range > 0) || !std::isfinite(range)) throw InputError("range: must be a finite number > 0, not " + geometry::format_number(range));
+  if (sides < 8 || sides > 1024) throw InputError("range: the sensor polygon needs 8 to 1024 sides, not " + std::to_string(sides));
+  const ExactFT r2 = ExactFT(range) * ExactFT(range);
+  // The first corner a golden-section fraction of a side off the x axis: corners in line
+  // with axis-parallel walls or guards would make needless degenerate contacts.
+  const double step = 2 * std::numbers::pi / static_cast<double>(sides), first = 0.3819660112501051 * step;
+  std::vector<Point> q;
+  for (std::size_t i = 0; i < sides; ++i) {
+    const double a = first + step * static_cast<double>(i);
+    double s = range;
+    for (int k = 0;; ++k) {
+      const Point c(s * std::cos(a), s * std::sin(a));
+      if (ExactFT(c.x()) * ExactFT(c.x()) + ExactFT(c.y()) * ExactFT(c.y()) <= r2) {
+        q.push_back(c);
+        break;
+      }
+      s = std::nextafter(s, 0.0);
+      if (k > 64) throw std::logic_error("range sensor: a corner does not fit in the circle");
+    }
+  }
+  for (std::size_t i = 0; i < sides; ++i)
+    if (geometry::orientation(q[i], q[(i + 1) % sides], q[(i + 2) % sides]) <= 0)
+      throw InputError("range " + geometry::format_number(range) + ": too small for a convex sensor polygon of " + std::to_string(sides) +
+                       " sides in doubles");
+  return q;
+}
+
 namespace {
 
 // A free edge of some V, split at environment vertices it grazes.
@@ -95,7 +126,100 @@ struct Moment {
   std::vector<FreeSeg> free;
   std::vector<std::size_t> free_begin;  // pursuer l's free edges: free[free_begin[l] .. free_begin[l + 1])
   std::vector<char> contact_seen;  // per vertex id at a contact: some pursuer sees the point
+  // With a limited range (CheckOptions::range), per pursuer: the sensor polygon's corners
+  // around it, their box, and the constructed points where its pieces end (corners in free
+  // space, crossings with walls), which a moving pursuer's critical rays may pass.
+  std::vector<std::vector<ExactPoint>> sensor;
+  std::vector<CGAL::Bbox_2> sensor_boxes;
+  std::vector<std::vector<ExactPoint>> sensor_points;
 };
+
+bool in_convex(const std::vector<ExactPoint>& C, const CGAL::Bbox_2& box, const ExactPoint& x) {
+  if (!CGAL::do_overlap(box, x.bbox())) return false;
+  for (std::size_t i = 0; i < C.size(); ++i)
+    if (geometry::orientation(C[i], C[(i + 1) % C.size()], x) < 0) return false;
+  return true;
+}
+
+// The sensor polygon's edges where they run through free space, into m.free: with V's free
+// edges they bound what the pursuer sees, V ∩ (p + Q). Each edge is cut where it crosses a
+// wall or touches a vertex; a piece is kept when it lies in the open free space (by parity
+// from the first corner's location, or by locating its midpoint where an edge met the
+// boundary other than by a proper crossing). Corners in free space end their pieces as
+// isolated points (SegmentEnd::AtPoint, the index set when the overlay is built).
+void add_sensor_pieces(const Environment& env, const std::vector<ExactPoint>& C, Moment& m) {
+  using K = geometry::SegmentEnd::Kind;
+  const std::size_t n = C.size();
+  auto& points = m.sensor_points.back();
+  auto end_at = [](const geometry::Location& loc) -> std::optional<geometry::SegmentEnd> {
+    using L = geometry::Location::Kind;
+    if (loc.kind == L::Interior) return geometry::SegmentEnd{K::AtPoint, 0};
+    if (loc.kind == L::OnEdge) return geometry::SegmentEnd{K::OnEdge, static_cast<std::uint32_t>(loc.index)};
+    if (loc.kind == L::AtVertex) return geometry::SegmentEnd{K::AtVertex, static_cast<std::uint32_t>(loc.index)};
+    return std::nullopt;
+  };
+  geometry::Location corner = geometry::locate(env, C[0]);
+  for (std::size_t i = 0; i < n; ++i) {
+    const ExactPoint &P0 = C[i], &P1 = C[(i + 1) % n];
+    const auto d = P1 - P0;
+    struct Cut {
+      ExactFT t;
+      geometry::SegmentEnd end;
+      ExactPoint at;
+    };
+    std::vector<Cut> cuts;
+    bool degenerate = false;
+    const CGAL::Bbox_2 box = P0.bbox() + P1.bbox();
+    for (std::uint32_t e = 0; e < env.num_vertices(); ++e) {
+      const auto f = static_cast<std::uint32_t>(env.next(e));
+      const Point &a = env.vertex(e), &b = env.vertex(f);
+      if (std::max(a.x(), b.x()) < box.xmin() || std::min(a.x(), b.x()) > box.xmax() || std::max(a.y(), b.y()) < box.ymin() ||
+          std::min(a.y(), b.y()) > box.ymax())
+        continue;
+      const ExactPoint &A = env.exact_vertex(e), &B = env.exact_vertex(f);
+      const int o1 = geometry::orientation(P0, P1, A), o2 = geometry::orientation(P0, P1, B);
+      if (o1 * o2 > 0) continue;
+      const int o3 = geometry::orientation(A, B, P0), o4 = geometry::orientation(A, B, P1);
+      if (o3 * o4 > 0) continue;
+      if (o1 == 0 || o2 == 0 || o3 == 0 || o4 == 0) {
+        degenerate = true;
+        for (const auto& [V, v] : {std::pair{A, e}, std::pair{B, f}})
+          if (geometry::orientation(P0, P1, V) == 0 && CGAL::collinear_are_strictly_ordered_along_line(P0, V, P1))
+            cuts.push_back({((V - P0) * d) / d.squared_length(), {K::AtVertex, v}, V});
+        continue;
+      }
+      const auto ab = B - A;
+      const ExactFT t = ((A - P0).x() * ab.y() - (A - P0).y() * ab.x()) / (d.x() * ab.y() - d.y() * ab.x());
+      cuts.push_back({t, {K::OnEdge, e}, P0 + t * d});
+    }
+    std::sort(cuts.begin(), cuts.end(), [](const Cut& x, const Cut& y) { return x.t < y.t; });
+    // A vertex touched is reported by both its edges: once.
+    cuts.erase(std::unique(cuts.begin(), cuts.end(), [](const Cut& x, const Cut& y) { return x.t == y.t; }), cuts.end());
+    const geometry::Location next_corner = degenerate ? geometry::locate(env, P1) : corner;
+    bool inside = corner.kind == geometry::Location::Kind::Interior;
+    std::optional<geometry::SegmentEnd> from_end = end_at(corner);
+    ExactPoint from = P0;
+    std::size_t proper = 0;
+    auto piece = [&](const ExactPoint& to, std::optional<geometry::SegmentEnd> to_end) {
+      const bool keep =
+          degenerate ? geometry::locate(env, CGAL::midpoint(from, to)).kind == geometry::Location::Kind::Interior : inside;
+      if (keep && from_end && to_end && from != to) {
+        m.free.push_back({from, to, *from_end, *to_end, std::nullopt});
+        points.push_back(from), points.push_back(to);
+      }
+    };
+    for (const Cut& c : cuts) {
+      piece(c.at, c.end);
+      from = c.at, from_end = c.end;
+      if (c.end.kind == K::OnEdge) ++proper, inside = !inside;
+    }
+    geometry::Location end_loc = next_corner;
+    if (!degenerate) end_loc.kind = inside ? geometry::Location::Kind::Interior : geometry::Location::Kind::Outside;
+    piece(P1, end_at(end_loc));
+    corner = end_loc;
+  }
+}
+
 
 geometry::SegmentEnd end_of(const geometry::VisibilityPolygon& V, std::size_t i) {
   const auto& v = V.vertices[i];
@@ -114,12 +238,14 @@ geometry::SegmentEnd end_of(const geometry::VisibilityPolygon& V, std::size_t i)
 // A pursuer standing where it stood at `like` (a waiting guard) keeps its V from there
 // (without contacts, whose bookkeeping is per moment): two of three pursuers' Vs were
 // recomputed at every sample of office 848's plan.
+// `sensor`: the range polygon's corners around the origin (CheckOptions::range), or empty.
 Moment take(const Environment& env, const geometry::VisibilityIndex& vis, std::size_t waypoint, double fraction,
-            std::vector<ExactPoint> at, bool exact, const Moment* like = nullptr) {
-  Moment m{waypoint, fraction, std::move(at), {}, {}, {}, {}, {}, {}, {}};
+            std::vector<ExactPoint> at, bool exact, const std::vector<Point>& sensor, const Moment* like = nullptr) {
+  Moment m{waypoint, fraction, std::move(at), {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
   if (env.has_contacts()) m.contact_seen.assign(env.num_vertices(), 0);
   auto see = [&](std::size_t v) {
     if (!env.has_contacts() || !env.is_contact(v)) return;
+    if (!sensor.empty() && !in_convex(m.sensor.back(), m.sensor_boxes.back(), env.exact_vertex(static_cast<std::uint32_t>(v)))) return;
     for (std::size_t w = v;;) {
       m.contact_seen[w] = 1;
       w = env.same_point_next(w);
@@ -139,7 +265,21 @@ Moment take(const Environment& env, const geometry::VisibilityIndex& vis, std::s
       m.ray_hits.push_back(like->ray_hits[l]);
       m.free.insert(m.free.end(), like->free.begin() + static_cast<std::ptrdiff_t>(like->free_begin[l]),
                     like->free.begin() + static_cast<std::ptrdiff_t>(like->free_begin[l + 1]));
+      if (!sensor.empty()) {
+        m.sensor.push_back(like->sensor[l]);
+        m.sensor_boxes.push_back(like->sensor_boxes[l]);
+        m.sensor_points.push_back(like->sensor_points[l]);
+      }
       continue;
+    }
+    if (!sensor.empty()) {
+      m.sensor.emplace_back();
+      m.sensor_boxes.emplace_back();
+      m.sensor_points.emplace_back();
+      for (const Point& c : sensor) {
+        m.sensor.back().push_back(e + ExactKernel::Vector_2(c.x(), c.y()));
+        m.sensor_boxes.back() += m.sensor.back().back().bbox();
+      }
     }
     // A sample of a double path on a sloping wall may round into the obstacle: take V at
     // the exact sample then (V's free edges then have no double carrier).
@@ -193,6 +333,7 @@ Moment take(const Environment& env, const geometry::VisibilityIndex& vis, std::s
       for (auto& [p, v] : cuts) add(p, {geometry::SegmentEnd::Kind::AtVertex, v});
       add(B, end_of(V, (i + 1) % n));
     }
+    if (!sensor.empty()) add_sensor_pieces(env, m.sensor.back(), m);
   }
   m.free_begin.push_back(m.free.size());
   return m;
@@ -206,7 +347,8 @@ bool in_v(const std::vector<ExactPoint>& loop, const ExactPoint& p) { return geo
 bool hidden(const Moment& m, const ExactPoint& p) {
   const CGAL::Bbox_2 box = p.bbox();
   for (std::size_t l = 0; l < m.loops.size(); ++l)
-    if (CGAL::do_overlap(box, m.boxes[l]) && in_v(m.loops[l], p)) return false;
+    if (CGAL::do_overlap(box, m.boxes[l]) && (m.sensor.empty() || in_convex(m.sensor[l], m.sensor_boxes[l], p)) && in_v(m.loops[l], p))
+      return false;
   return true;
 }
 
@@ -302,7 +444,7 @@ void stretches(const geometry::SegmentArrangement& A, const std::vector<std::uin
 // One step from `prev` (none at the first moment) to `next`. `before`: the previous step
 // when this thread built it, to map its regions here.
 StepSummary summarise(const Environment& env, const Moment* prev, const Moment& next, const StepSummary* before, bool frame,
-                      bool locate_regions) {
+                      bool locate_regions, bool limited) {
   // Overlay: both moments' free edges, equal ones merged.
   struct Item {
     FreeSeg s;
@@ -337,7 +479,23 @@ StepSummary summarise(const Environment& env, const Moment* prev, const Moment& 
     auto& index = (it.in_prev ? prev_index : next_index).back();
     index = std::min(index, it.index);
   }
-  auto A = std::make_shared<geometry::SegmentArrangement>(geometry::SegmentArrangement::build(env, std::move(segs), {}, nullptr, true));
+  // Sensor corners in free space: isolated points, one per location (a waiting pursuer's
+  // are the same in both moments).
+  std::vector<ExactPoint> points;
+  for (const auto& g : segs)
+    for (const auto* e : {&g.from_end, &g.to_end})
+      if (e->kind == geometry::SegmentEnd::Kind::AtPoint) points.push_back(e == &g.from_end ? g.from : g.to);
+  if (!points.empty()) {
+    auto less = [&](const ExactPoint& a, const ExactPoint& b) { return cmp(a, b) == CGAL::SMALLER; };
+    std::sort(points.begin(), points.end(), less);
+    points.erase(std::unique(points.begin(), points.end(), [&](const ExactPoint& a, const ExactPoint& b) { return cmp(a, b) == CGAL::EQUAL; }),
+                 points.end());
+    for (auto& g : segs)
+      for (auto* e : {&g.from_end, &g.to_end})
+        if (e->kind == geometry::SegmentEnd::Kind::AtPoint)
+          e->index = static_cast<std::uint32_t>(std::lower_bound(points.begin(), points.end(), e == &g.from_end ? g.from : g.to, less) - points.begin());
+  }
+  auto A = std::make_shared<geometry::SegmentArrangement>(geometry::SegmentArrangement::build(env, std::move(segs), points, nullptr, true));
   const auto& H = A->half_edges();
   const std::size_t nr = A->num_regions();
   // Faces of each moment's own subdivision: join across the other moment's edges only.
@@ -363,6 +521,29 @@ StepSummary summarise(const Environment& env, const Moment* prev, const Moment& 
       if (prev && !prev->contact_seen[v]) f1.join(a, b);
       if (!next.contact_seen[v]) f2.join(a, b);
     }
+  // With a limited range a moment's own segment can have both sides hidden from everybody
+  // (a sensor edge outside another pursuer's view, a free edge beyond range): it separates
+  // nothing, so the faces on its sides are one shadow. (Unlimited, every free edge has V on
+  // one side.)
+  if (limited) {
+    auto join_hidden = [&](UnionFind& f, const Moment& m, const std::vector<char>& own) {
+      std::vector<signed char> root_hidden(nr, -1);
+      std::vector<char> face_hidden(nr, 0);
+      for (std::uint32_t r = 0; r < nr; ++r) {
+        const std::uint32_t root = f.find(r);
+        if (root_hidden[root] < 0) root_hidden[root] = hidden(m, A->sample(root)) ? 1 : 0;
+        face_hidden[r] = static_cast<char>(root_hidden[root]);
+      }
+      for (std::uint32_t h = 0; h < H.size(); h += 2) {
+        const std::uint32_t s = H[h].segment;
+        if (s == geometry::kNone || !own[s]) continue;
+        const std::uint32_t a = A->region_of(h), b = A->region_of(h + 1);
+        if (face_hidden[a] && face_hidden[b]) f.join(a, b);
+      }
+    };
+    if (prev) join_hidden(f1, *prev, of_prev);
+    join_hidden(f2, next, of_next);
+  }
   StepSummary out;
   out.waypoint = next.waypoint, out.fraction = next.fraction, out.at0 = next.at[0];
   out.initial = prev == nullptr;
@@ -444,9 +625,27 @@ StepSummary summarise(const Environment& env, const Moment* prev, const Moment& 
   if (frame) {
     out.frame = true;
     out.pursuers = next.at;
-    for (auto& loop : next.loops) {
+    for (std::size_t l = 0; l < next.loops.size(); ++l) {
       out.visible.emplace_back();
-      for (auto& p : loop) out.visible.back().push_back(geometry::to_double(p));
+      for (auto& p : next.loops[l]) out.visible.back().push_back(geometry::to_double(p));
+      // With a range: V clipped by the sensor polygon, in doubles (a drawing, deciding nothing).
+      if (!next.sensor.empty())
+        for (std::size_t i = 0; i < next.sensor[l].size() && !out.visible.back().empty(); ++i) {
+          const Point a = geometry::to_double(next.sensor[l][i]), b = geometry::to_double(next.sensor[l][(i + 1) % next.sensor[l].size()]);
+          auto side = [&](const Point& x) { return (b.x() - a.x()) * (x.y() - a.y()) - (b.y() - a.y()) * (x.x() - a.x()); };
+          const auto in = std::move(out.visible.back());
+          auto& kept = out.visible.back();
+          kept.clear();
+          for (std::size_t k = 0; k < in.size(); ++k) {
+            const Point &x = in[k], &y = in[(k + 1) % in.size()];
+            const double sx = side(x), sy = side(y);
+            if (sx >= 0) kept.push_back(x);
+            if ((sx >= 0) != (sy >= 0)) {
+              const double t = sx / (sx - sy);
+              kept.emplace_back(x.x() + t * (y.x() - x.x()), x.y() + t * (y.y() - x.y()));
+            }
+          }
+        }
     }
   }
   return out;
@@ -533,9 +732,184 @@ void ray_crossings(const ExactPoint& ea, const ExactPoint& eb, const ExactPoint&
   if ((from_p && along < 0) || (from_q && along > d.squared_length())) out.push_back(*t);
 }
 
+// The events of a range sensor's polygon Q carried by a pursuer moving on a -> b (its V's
+// events are the critical rays above), where V ∩ (p + Q) or its meeting with a waiting
+// pursuer's changes structure:
+//   (i)   a corner of Q crosses a wall, (ii) a wall vertex crosses an edge of Q,
+//   (iii) a corner of Q crosses the free edge beyond a reflex vertex,
+//   (v)   a corner crosses a waiting pursuer's segment, (vi) a waiting pursuer's segment end
+//         crosses an edge of Q, (vii) the mover's ray through a reflex vertex passes such an
+//         end — all where p(t) crosses a fixed segment, so at rational t;
+//   (iv)  the end of a free edge on a wall, or (ix) its crossing with an edge of Q, crosses
+//         a wall or a waiting pursuer's segment — a quadratic in t. Its roots are bracketed
+//         by exact signs, both ends of the bracket become cuts (one sample falls inside), and
+//         a bracket that cannot be separated from another event is refused.
+// Only walls, vertices and segments within the range of the path count.
+struct RangeEvents {
+  std::vector<ExactFT> cuts;
+  struct Bracket {
+    ExactFT lo, hi;            // exact ends: shrunk by exact bisection as far as needed
+    std::array<ExactFT, 3> g;  // g(t) = g0 + g1 t + g2 t^2, exact
+  };
+  std::vector<Bracket> brackets;
+};
+
+int sign_at(const std::array<ExactFT, 3>& g, const ExactFT& t) { return CGAL::sign(g[0] + t * (g[1] + t * g[2])); }
+int sign_at(const std::array<ExactFT, 3>& g, double t) { return sign_at(g, ExactFT(t)); }
+
+void range_events(const Environment& env, const ExactPoint& a, const ExactPoint& b, const std::vector<Point>& Q, double R,
+                  const std::vector<std::uint32_t>& reflex, const Moment* waiting, std::size_t mover, RangeEvents& out) {
+  using V2 = ExactKernel::Vector_2;
+  const std::size_t n = Q.size();
+  CGAL::Bbox_2 reach = a.bbox() + b.bbox();
+  reach = CGAL::Bbox_2(reach.xmin() - R, reach.ymin() - R, reach.xmax() + R, reach.ymax() + R);
+  auto near = [&](const CGAL::Bbox_2& x) { return CGAL::do_overlap(reach, x); };
+  // p(t) strictly crosses the line of L0 L1 inside the closed segment: the t.
+  auto through = [&](const ExactPoint& L0, const ExactPoint& L1) {
+    if (geometry::orientation(L0, L1, a) * geometry::orientation(L0, L1, b) >= 0) return;
+    if (geometry::orientation(a, b, L0) * geometry::orientation(a, b, L1) > 0) return;
+    if (const auto t = crossing(a, b, L0, L1)) out.cuts.push_back(*t);
+  };
+  std::vector<std::pair<ExactPoint, ExactPoint>> lines;  // walls and waiting segments near
+  for (std::uint32_t e = 0; e < env.num_vertices(); ++e) {
+    const ExactPoint &A = env.exact_vertex(e), &B = env.exact_vertex(static_cast<std::uint32_t>(env.next(e)));
+    if (near(A.bbox() + B.bbox())) lines.emplace_back(A, B);
+  }
+  std::vector<ExactPoint> ends;         // waiting pursuers' segment ends
+  std::vector<ExactPoint> sensor_ends;  // those of their sensors' pieces (the critical rays above pass the others)
+  if (waiting)
+    for (std::size_t s = 0; s < waiting->at_exact.size(); ++s) {
+      if (s == mover) continue;
+      for (std::size_t f = waiting->free_begin[s]; f < waiting->free_begin[s + 1]; ++f) {
+        const auto& g = waiting->free[f];
+        if (!near(g.a.bbox() + g.b.bbox())) continue;
+        lines.emplace_back(g.a, g.b);
+        ends.push_back(g.a), ends.push_back(g.b);
+      }
+      if (!waiting->sensor.empty())
+        for (const auto& z : waiting->sensor_points[s])
+          if (near(z.bbox())) ends.push_back(z), sensor_ends.push_back(z);
+    }
+  std::vector<V2> q;
+  for (const Point& c : Q) q.emplace_back(c.x(), c.y());
+  const auto v = b - a;
+  // (i), (v): corner i on a wall or a waiting segment.
+  for (const auto& [L0, L1] : lines)
+    for (std::size_t i = 0; i < n; ++i) through(L0 - q[i], L1 - q[i]);
+  // (ii), (vi): a vertex or a waiting segment's end on edge j of Q.
+  std::vector<ExactPoint> fixed;
+  for (std::uint32_t v = 0; v < env.num_vertices(); ++v)
+    if (near(env.exact_vertex(v).bbox())) fixed.push_back(env.exact_vertex(v));
+  fixed.insert(fixed.end(), ends.begin(), ends.end());
+  for (const ExactPoint& z : fixed)
+    for (std::size_t j = 0; j < n; ++j) through(z - q[(j + 1) % n], z - q[j]);
+  // (iii): corner i beyond reflex u on the ray from p through u.
+  std::vector<std::uint32_t> reflex_near;
+  for (std::uint32_t u : reflex)
+    if (near(env.exact_vertex(u).bbox())) reflex_near.push_back(u);
+  // Only while the corner is in the environment's box (a free edge lies in free space).
+  const CGAL::Bbox_2 env_box = env.bbox();
+  for (std::uint32_t u : reflex_near)
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto before = out.cuts.size();
+      through(env.exact_vertex(u) - q[i], env.exact_vertex(u));
+      if (out.cuts.size() > before) {
+        const ExactFT& t = out.cuts.back();
+        const ExactPoint corner = a + t * v + q[i];
+        if (!CGAL::do_overlap(corner.bbox(), env_box)) out.cuts.pop_back();
+      }
+    }
+  // (vii): the mover's ray through u passes a waiting segment's end.
+  for (const ExactPoint& z : sensor_ends)
+    for (std::uint32_t u : reflex_near)
+      if (tangent_at(env, u, z)) ray_crossings(a, b, env.exact_vertex(u), z, true, false, false, out.cuts);
+  // (iv), (ix): X = p + mu d, d = u - p, on line L (n.x = c) and on the line of Q's edge j
+  // (m.(x - p) = k): (n.p - c)(m.d) + k (n.d) = 0, a quadratic in t.
+  const Point ad = geometry::to_double(a), vd(CGAL::to_double(v.x()), CGAL::to_double(v.y()));
+  for (std::uint32_t u : reflex_near) {
+    const ExactPoint& U = env.exact_vertex(u);
+    const auto d0 = U - a;
+    const Point Ud = env.vertex(u);
+    for (std::size_t li = 0; li < lines.size(); ++li) {
+      const auto& [L0, L1] = lines[li];
+      const V2 nl(-(L1.y() - L0.y()), L1.x() - L0.x());
+      const ExactFT c = nl * (L0 - CGAL::ORIGIN);
+      const double nx = CGAL::to_double(nl.x()), ny = CGAL::to_double(nl.y()), cd = CGAL::to_double(c);
+      const Point L0d = geometry::to_double(L0), L1d = geometry::to_double(L1);
+      for (std::size_t j = 0; j < n; ++j) {
+        const Point &qa = Q[j], &qb = Q[(j + 1) % n];
+        const double mx = -(qb.y() - qa.y()), my = qb.x() - qa.x(), kd = mx * qa.x() + my * qa.y();
+        // doubles first: the candidates
+        const double a0 = nx * ad.x() + ny * ad.y() - cd, a1 = nx * vd.x() + ny * vd.y();
+        const double d0x = Ud.x() - ad.x(), d0y = Ud.y() - ad.y();
+        const double b0 = mx * d0x + my * d0y, b1 = -(mx * vd.x() + my * vd.y());
+        const double c0 = nx * d0x + ny * d0y, c1 = -a1;
+        const double g2 = a1 * b1, g1 = a0 * b1 + a1 * b0 + kd * c1, g0 = a0 * b0 + kd * c0;
+        const double scale = std::abs(a0 * b0) + std::abs(a1 * b1) + std::abs(a0 * b1) + std::abs(a1 * b0) + std::abs(kd) * (std::abs(c0) + std::abs(c1));
+        if (!(scale > 0)) continue;
+        std::array<double, 2> roots{NAN, NAN};
+        if (std::abs(g2) <= 1e-12 * scale) {
+          if (std::abs(g1) > 1e-12 * scale) roots[0] = -g0 / g1;
+        } else {
+          const double disc = g1 * g1 - 4 * g2 * g0;
+          if (disc < -1e-9 * scale * scale) continue;
+          const double sq = std::sqrt(std::max(0.0, disc));
+          const double r1 = (-g1 - std::copysign(sq, g1)) / (2 * g2);
+          roots = {r1, r1 != 0 ? g0 / (g2 * r1) : -g1 / g2};
+        }
+        for (const double r : roots) {
+          if (!(r > -1e-9 && r < 1 + 1e-9)) continue;
+          // Relevance at r (generous margins: an extra cut only costs a sample): X beyond u,
+          // within L and within Q's edge j.
+          const Point p(ad.x() + r * vd.x(), ad.y() + r * vd.y());
+          const double dx = Ud.x() - p.x(), dy = Ud.y() - p.y(), md = mx * dx + my * dy;
+          if (md == 0) continue;
+          const double mu = kd / md;
+          if (mu < 1 - 1e-6) continue;
+          const Point X(p.x() + mu * dx, p.y() + mu * dy);
+          const double lx = L1d.x() - L0d.x(), ly = L1d.y() - L0d.y(), ll = lx * lx + ly * ly;
+          const double along = ((X.x() - L0d.x()) * lx + (X.y() - L0d.y()) * ly) / ll;
+          if (along < -1e-6 || along > 1 + 1e-6) continue;
+          const double ex = qb.x() - qa.x(), ey = qb.y() - qa.y();
+          const double on_q = ((X.x() - p.x() - qa.x()) * ex + (X.y() - p.y() - qa.y()) * ey) / (ex * ex + ey * ey);
+          if (on_q < -1e-6 || on_q > 1 + 1e-6) continue;
+          // Exact g and a bracket.
+          const V2 m(-(qb.y() - qa.y()), qb.x() - qa.x());
+          const ExactFT k = m * V2(qa.x(), qa.y());
+          const ExactFT A0 = nl * (a - CGAL::ORIGIN) - c, A1 = nl * v, B0 = m * d0, B1 = -(m * v), C0 = nl * d0, C1 = -A1;
+          const std::array<ExactFT, 3> g{A0 * B0 + k * C0, A0 * B1 + A1 * B0 + k * C1, A1 * B1};
+          double lo = r, hi = r;
+          bool found = false, exact_root = false;
+          for (double delta = 1e-13 * std::max(1.0, std::abs(r)); delta < 1e-4 && !found; delta *= 8) {
+            lo = std::max(0.0, r - delta), hi = std::min(1.0, r + delta);
+            const int sl = sign_at(g, lo), sh = sign_at(g, hi);
+            found = sl * sh < 0 || sl == 0 || sh == 0;
+            // A root at a double (at a waypoint, t = 0 or 1, most often): an exact event.
+            if (sl == 0 || sh == 0) {
+              exact_root = true;
+              for (const double t : {lo, hi})
+                if (sign_at(g, t) == 0 && t > 0 && t < 1) out.cuts.push_back(ExactFT(t));
+            }
+          }
+          if (exact_root) continue;
+          if (!found) {
+            // A double root: the point touches the line and turns back. Sampled at the
+            // touch itself (its two sides are one shadow then).
+            if (r > 0 && r < 1) out.cuts.push_back(ExactFT(r));
+            continue;
+          }
+          out.brackets.push_back({ExactFT(lo), ExactFT(hi), g});
+        }
+      }
+    }
+  }
+}
+
 CheckResult check(const Environment& env, const ExactPaths& paths, const CheckOptions& options, bool exact) {
   const geometry::VisibilityIndex vis(env);
   const std::size_t k = paths.size(), steps = paths[0].size();
+  const std::vector<Point> sensor = options.range != 0 ? range_sensor(options.range, options.range_sides) : std::vector<Point>{};
+  const bool limited = !sensor.empty();
   // Lines through a reflex vertex and a vertex it sees: where one pursuer's V changes.
   std::vector<std::uint32_t> reflex;
   for (std::uint32_t v = 0; v < env.num_vertices(); ++v)
@@ -569,10 +943,10 @@ CheckResult check(const Environment& env, const ExactPaths& paths, const CheckOp
       }
       return at;
     };
-    Moment prev = take(E, VI, j, 0, at_time(j, 0), exact);
+    Moment prev = take(E, VI, j, 0, at_time(j, 0), exact, sensor);
     const StepSummary* before = nullptr;  // the last step, when built here
     if (j == 0) {
-      out.push_back(summarise(E, nullptr, prev, nullptr, wanted(0), options.locate_regions));
+      out.push_back(summarise(E, nullptr, prev, nullptr, wanted(0), options.locate_regions, limited));
       before = &out.back();
     }
     auto commit = [&](Moment next, StepSummary S) {
@@ -590,9 +964,9 @@ CheckResult check(const Environment& env, const ExactPaths& paths, const CheckOp
     std::vector<ExactFT> events;  // the event fractions of the segment (one mover)
     std::function<void(const ExactFT&, const ExactFT&, int)> along = [&](const ExactFT& f0, const ExactFT& f1, int depth) {
       const bool end = f1 >= 1;
-      Moment next = take(E, VI, end ? j + 1 : j, end ? 0 : CGAL::to_double(f1), end ? at_time(j + 1, 0) : at_time(j, f1), exact, &prev);
+      Moment next = take(E, VI, end ? j + 1 : j, end ? 0 : CGAL::to_double(f1), end ? at_time(j + 1, 0) : at_time(j, f1), exact, sensor, &prev);
       const bool frame = next.fraction == 0 && wanted(next.waypoint);
-      StepSummary S = summarise(E, &prev, next, before, frame, options.locate_regions);
+      StepSummary S = summarise(E, &prev, next, before, frame, options.locate_regions, limited);
       if (S.one_to_one || depth >= kRefine) return commit(std::move(next), std::move(S));
       // A step across one event (a region appearing, vanishing, splitting or merging there) is
       // never one to one: bisecting it went 24 levels deep towards the event, two steps per
@@ -619,8 +993,8 @@ CheckResult check(const Environment& env, const ExactPaths& paths, const CheckOp
       if (P[l][j] != P[l][j + 1]) moving.push_back(l);
     if (moving.empty()) {
       if (wanted(j + 1)) {
-        Moment next = take(E, VI, j + 1, 0, at_time(j + 1, 0), exact, &prev);
-        StepSummary S = summarise(E, &prev, next, before, true, options.locate_regions);
+        Moment next = take(E, VI, j + 1, 0, at_time(j + 1, 0), exact, sensor, &prev);
+        StepSummary S = summarise(E, &prev, next, before, true, options.locate_regions, limited);
         commit(std::move(next), std::move(S));
       }
       return out;
@@ -638,6 +1012,97 @@ CheckResult check(const Environment& env, const ExactPaths& paths, const CheckOp
         for (auto& z : whole ? prev.loops[s] : prev.ray_hits[s])
           for (std::uint32_t u : reflex)
             if (whole || tangent_at(E, u, z)) ray_crossings(a, b, E.exact_vertex(u), z, true, false, whole, events);
+      }
+    }
+    if (limited) {
+      RangeEvents re;
+      for (std::size_t l : moving)
+        range_events(E, P[l][j], P[l][j + 1], sensor, options.range, reflex, moving.size() == 1 ? &prev : nullptr, l, re);
+      events.insert(events.end(), re.cuts.begin(), re.cuts.end());
+      std::sort(events.begin(), events.end());
+      // Each bracket holds one root and no other event: shrunk (by exact signs) until it
+      // is apart from the others, or found to be the same event as another (an exact
+      // event the quadratic vanishes at; two quadratics with their common root, rational,
+      // in both), or refused. On axis-parallel plans one wall end is the end of two walls,
+      // and a hit there is an event of both.
+      auto& B = re.brackets;
+      std::vector<char> dropped(B.size(), 0);
+      // Halves x keeping its root: exact, so distinct events always come apart (the cap
+      // only guards against a runaway).
+      auto shrink = [](RangeEvents::Bracket& x) {
+        const ExactFT mid = (x.lo + x.hi) / 2;
+        const int sm = sign_at(x.g, mid);
+        if (sm == 0) return x.lo = x.hi = mid, void();
+        (sign_at(x.g, x.lo) * sm < 0 ? x.hi : x.lo) = mid;
+      };
+      // A quadratic of degree < 2 has its root exactly.
+      for (std::size_t i = 0; i < B.size(); ++i)
+        if (B[i].g[2] == 0) {
+          dropped[i] = 1;
+          if (B[i].g[1] != 0) {
+            const ExactFT t = -B[i].g[0] / B[i].g[1];
+            if (t > 0 && t < 1) events.push_back(t);
+          }
+        }
+      for (int round = 0;; ++round) {
+        if (round > 4000)
+          throw InputError("pursuit check --range: events of the moving pursuer's sensor between waypoints " + std::to_string(j) + " and " +
+                           std::to_string(j + 1) + " could not be told apart: not certified");
+        bool conflict = false;
+        std::sort(events.begin(), events.end());
+        std::vector<std::size_t> order;
+        for (std::size_t i = 0; i < B.size(); ++i)
+          if (!dropped[i] && B[i].lo != B[i].hi) order.push_back(i);
+        std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return B[x].lo < B[y].lo; });
+        for (std::size_t oi = 0; oi < order.size(); ++oi) {
+          auto& x = B[order[oi]];
+          if (dropped[order[oi]] || x.lo == x.hi) continue;
+          const auto it = std::upper_bound(events.begin(), events.end(), x.lo);
+          if (it != events.end() && *it < x.hi) {
+            conflict = true;
+            if (sign_at(x.g, *it) == 0) dropped[order[oi]] = 1;  // the same event
+            else shrink(x);
+            continue;
+          }
+          if (oi + 1 < order.size() && B[order[oi + 1]].lo < x.hi) {
+            conflict = true;
+            auto& y = B[order[oi + 1]];
+            // y2 g - g2 y is linear: zero (proportional: the same roots) or its root is the
+            // only one g and y can share.
+            std::array<ExactFT, 3> l;
+            for (int c = 0; c < 3; ++c) l[c] = y.g[2] * x.g[c] - x.g[2] * y.g[c];
+            if (l[1] == 0 && l[0] == 0) {
+              dropped[order[oi + 1]] = 1;
+              continue;
+            }
+            if (l[1] != 0) {
+              const ExactFT t = -l[0] / l[1];
+              if (sign_at(x.g, t) == 0 && t > x.lo && t < x.hi && t > y.lo && t < y.hi) {
+                dropped[order[oi]] = dropped[order[oi + 1]] = 1;
+                events.push_back(t);
+                continue;
+              }
+            }
+            shrink(x), shrink(y);
+          }
+        }
+        if (!conflict) break;
+      }
+      for (std::size_t i = 0; i < B.size(); ++i) {
+        const auto& x = B[i];
+        if (dropped[i]) continue;
+        if (x.lo == x.hi) {
+          if (x.lo > 0 && x.lo < 1) events.push_back(x.lo);
+          continue;
+        }
+        // The sample between the ends must not be the root itself.
+        const ExactFT mid = (x.lo + x.hi) / 2;
+        if (sign_at(x.g, mid) == 0) {
+          if (mid > 0 && mid < 1) events.push_back(mid);
+          continue;
+        }
+        if (x.lo > 0) events.push_back(x.lo);
+        if (x.hi < 1) events.push_back(x.hi);
       }
     }
     std::sort(events.begin(), events.end());
@@ -702,7 +1167,7 @@ CheckResult check(const Environment& env, const ExactPaths& paths, const CheckOp
       std::vector<ExactPoint> at;
       for (auto& p : P) at.push_back(p[0]);
       return at;
-    }(), exact), nullptr, wanted(0), options.locate_regions));
+    }(), exact, sensor), nullptr, wanted(0), options.locate_regions, limited));
     consume(seg);
   } else {
     // Segments are built on `threads` threads, at most `window` ahead of the one whose

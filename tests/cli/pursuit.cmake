@@ -72,3 +72,17 @@ if(EXISTS ${PROJECT_SOURCE_DIR}/../shared/data/floorplans/mlstruct_302.json)
   cli_test(pursuit_plan_office 0 "upper 2: the static-guard strategy: .*, cleared by the independent check" -
            pursuit plan ${PROJECT_SOURCE_DIR}/../shared/data/floorplans/mlstruct_302.json)
 endif()
+
+# Issue 48, item 5: the checker with range-limited pursuers (an inscribed polygon).
+cli_test(pursuit_check_range_sweeps_the_L 0 "range 1.5 \\(seen through an inscribed 32-gon: what it clears, the disc clears\\): cleared \\(from waypoint 1 on\\)" -
+         pursuit check ${FIX}/pursuit/range_L.json --path ${FIX}/pursuit/range_L_both_arms.json --range 1.5)
+cli_test(pursuit_check_range_walking_back_recontaminates 0 "NOT cleared: 1 region contaminated at the end .*first recontamination on the way from waypoint 1" -
+         pursuit check ${FIX}/pursuit/range_L.json --path ${FIX}/pursuit/range_L_walk_back.json --range 1.5)
+cli_test(pursuit_check_range_unlimited_clears_both 0 "3 waypoints: cleared" -
+         pursuit check ${FIX}/pursuit/range_L.json --path ${FIX}/pursuit/range_L_walk_back.json)
+cli_test(pursuit_check_range_json 0 "\"range\":1.5,\"range_sides\":64" -
+         pursuit check ${FIX}/pursuit/range_L.json --path ${FIX}/pursuit/range_L_both_arms.json --range 1.5 --range-sides 64 --json)
+cli_test(pursuit_check_range_negative fail "--range" -
+         pursuit check ${FIX}/pursuit/range_L.json --path ${FIX}/pursuit/range_L_both_arms.json --range -1)
+cli_test(pursuit_check_range_few_sides fail "--range-sides" -
+         pursuit check ${FIX}/pursuit/range_L.json --path ${FIX}/pursuit/range_L_both_arms.json --range 1.5 --range-sides 4)

@@ -15,6 +15,15 @@
 // "meets" rule follows the evader exactly. When several pursuers move at once the
 // crossings of each with the vertex lines are sampled and the steps are refined
 // uniformly (`substeps`); the result is then as fine as the sampling.
+//
+// With a limited range (CheckOptions::range) each pursuer sees V ∩ (p + Q), Q a polygon
+// inscribed in the range's disc. Q's edges where they run in free space join the free edges
+// in the overlay; a segment with nobody's view on either side separates nothing and its
+// faces are joined. A moving pursuer's events then also include Q's corners crossing walls,
+// free edges and a waiting pursuer's segments, vertices and segment ends crossing Q's edges
+// (rational times), and a free edge's end on a wall, or its crossing with Q, crossing a wall
+// or a waiting pursuer's segment (quadratic: roots bracketed by exact signs and kept apart
+// from every other event by exact bisection).
 #pragma once
 #include <preimage/geometry/environment.hpp>
 
@@ -44,7 +53,20 @@ struct CheckOptions {
   /// on their boundary (no point location). With this set, a point of each is located
   /// instead: the tests' reference for the keys.
   bool locate_regions = false;
+  /// > 0: each pursuer sees only within this distance (a sensor of limited range, the
+  /// book's exercise 9 of 6.3). The sensor is a convex polygon of `range_sides` corners
+  /// inscribed in the disc of radius `range` (corners checked exactly to lie in it), so what
+  /// it sees is a subset of what the range-limited robot sees: a plan it clears is cleared by
+  /// the robot (seeing more never contaminates more), and "not cleared" means not shown.
+  double range = 0;
+  std::size_t range_sides = 32;
 };
+
+/// The corners, counter-clockwise around the origin, of the polygon `CheckOptions::range`
+/// uses: `sides` corners on or inside the circle of radius `range` (exactly), turned by an
+/// irrational-looking fraction of a side so that they do not line up with axis-parallel
+/// walls. Throws InputError unless range is finite and > 0 and 8 <= sides <= 1024.
+std::vector<geometry::Point> range_sensor(double range, std::size_t sides);
 
 /// The state at a waypoint, rounded for drawing.
 struct CheckFrame {
