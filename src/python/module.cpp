@@ -236,6 +236,28 @@ PYBIND11_MODULE(preimage, m) {
      "Visibility-based pursuit-evasion (conservative cells, information graph): a plan for the fewest pursuers up to "
      "max_pursuers, one (n, 2) path each, certified in free space and re-checked by the contamination checker");
 
+  m.def("pursuit_check", [](const geometry::Environment& env, const std::vector<py::handle>& paths, std::optional<double> range,
+                            std::size_t range_sides) {
+    pursuit::Paths P;
+    for (std::size_t l = 0; l < paths.size(); ++l) P.push_back(to_points(paths[l], "paths[" + std::to_string(l) + "]"));
+    pursuit::CheckOptions o;
+    if (range) o.range = *range;
+    o.range_sides = range_sides;
+    const auto r = pursuit::check_paths(env, P, o);
+    py::dict d;
+    d["cleared"] = r.cleared;
+    d["moments"] = r.moments;
+    d["contaminated_area"] = r.contaminated_area;
+    d["contaminated_at_end"] = to_array(r.contaminated_at_end);
+    d["cleared_at_waypoint"] = r.cleared_at ? py::object(py::int_(r.cleared_at->waypoint)) : py::object(py::none());
+    d["recontaminated_at_waypoint"] =
+        r.first_recontamination ? py::object(py::int_(r.first_recontamination->waypoint)) : py::object(py::none());
+    return d;
+  }, py::arg("environment"), py::arg("paths"), py::arg("range") = py::none(), py::arg("range_sides") = 32,
+     "The independent contamination checker on pursuer paths (a list of (n, 2) arrays, waypoint i passed together), as "
+     "`preimage pursuit check` runs it; with `range`, pursuers that see only within it (an inscribed polygon of range_sides "
+     "corners: what it clears, the disc clears)");
+
   m.def("replay_line", [](const std::string& line, double max_range, double radius, double ahead, const std::string& where) -> py::object {
     const auto scan = tracking::parse_log_line(line, max_range, where);
     if (!scan) return py::none();  // a line that carries no scan (ODOM, PARAM, comments)

@@ -151,6 +151,24 @@ def test_pursuit_plan_matches_cli_and_clears():
     assert one["outcome"] == "no plan" and "paths" not in one  # a pillar needs two (a proof: the search is complete)
 
 
+def test_pursuit_check_matches_cli_with_and_without_range():
+    fixtures = os.path.join(os.path.dirname(__file__), "..", "fixtures", "pursuit")
+    scene_path = os.path.join(fixtures, "range_L.json")
+    env = preimage.load_scene(scene_path).environment
+    for name, cleared_with_range in (("range_L_both_arms.json", True), ("range_L_walk_back.json", False)):
+        path_file = os.path.join(fixtures, name)
+        with open(path_file) as f:
+            paths = [np.array(json.load(f), dtype=float)]
+        mine = preimage.pursuit_check(env, paths, range=1.5)
+        theirs = cli_json("pursuit", "check", scene_path, "--path", path_file, "--range", "1.5")
+        assert mine["cleared"] == theirs["cleared"] == cleared_with_range
+        assert mine["moments"] == theirs["moments"]
+        assert mine["contaminated_area"] == pytest.approx(theirs["contaminated_area"], rel=1e-12)
+        assert preimage.pursuit_check(env, paths)["cleared"]  # unlimited, both clear the L
+    with pytest.raises(Exception, match="range"):
+        preimage.pursuit_check(env, paths, range=-1)
+
+
 def test_track_game_matches_cli():
     path = os.path.join(EXAMPLES, "tracking", "box.json")
     scene = preimage.load_scene(path)
