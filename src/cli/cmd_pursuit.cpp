@@ -134,8 +134,8 @@ void write_frames(const std::string& svg, const geometry::Environment& env, cons
 // ---------------------------------------------------------------- plan
 struct PlanFlags {
   std::string file, start, svg;
-  std::size_t pursuers = 1, max_states = 4'000'000, frames = 6, max_mb = 2048;
-  double time_limit = 45;
+  std::size_t pursuers = 1, max_states = 4'000'000, frames = 6, max_mb = 2048, range_sides = 32;
+  double time_limit = 45, range = 0;
   bool pursuers_given = false, split = false, no_check = false, as_json = false, any = false;
 };
 
@@ -183,6 +183,7 @@ void run_bounds(const PlanFlags& F, const geometry::Environment& env, const std:
   o.max_states = F.max_states;
   o.max_mb = F.max_mb;
   o.shortest = !F.any;
+  o.range = F.range, o.range_sides = F.range_sides;
   // The figure's frames come from the checker, so --svg checks even with --no-check. The
   // bounds check the strategy's plan before searching for fewer pursuers, within the time.
   o.check = !F.no_check || !F.svg.empty();
@@ -194,8 +195,9 @@ void run_bounds(const PlanFlags& F, const geometry::Environment& env, const std:
   if (tty) std::cerr << "\r\033[K" << std::flush;
   const std::vector<Point> guards = b.guard_points();
   const std::string interval = "[" + std::to_string(b.lower) + ", " + std::to_string(b.upper) + "]";
+  const std::string with_range = F.range > 0 ? " with range " + geometry::format_number(F.range) : "";
   if (!F.svg.empty()) {
-    const auto map = pursuit::plan_map_panel(env, b.plan->paths, guards, "pursuers needed: " + interval + "; the plan");
+    const auto map = pursuit::plan_map_panel(env, b.plan->paths, guards, "pursuers needed" + with_range + ": " + interval + "; the plan");
     std::ofstream f(F.svg);
     f << pursuit::plan_frames_figure(env, b.plan->paths, checked->frames, 3, {}, &map);
     if (!f) throw InputError(F.svg + ": cannot write file");
@@ -218,9 +220,11 @@ void run_bounds(const PlanFlags& F, const geometry::Environment& env, const std:
     if (b.plan->paths.size() == 1) out["shortest"] = b.shortest;
     if (env.has_contacts()) out["paths_avoid_contacts"] = true;
     if (checked) out["check"] = check_json(*checked);
+    out["range"] = F.range > 0 ? json(F.range) : json(nullptr);
+    if (F.range > 0) out["range_sides"] = F.range_sides;
     return print_json(out);
   }
-  std::cout << "pursuers needed: " << interval << (b.exact() ? " (exact)" : "") << "\n";
+  std::cout << "pursuers needed" << with_range << ": " << interval << (b.exact() ? " (exact)" : "") << "\n";
   std::cout << "  lower " << b.lower << ": " << b.lower_reason << "\n";
   std::cout << "  upper " << b.upper << ": " << b.upper_reason << (checked ? ", cleared by the independent check" : " (not checked: --no-check)") << "\n";
   for (std::size_t i = 0; i < b.searches.size(); ++i)
@@ -245,6 +249,8 @@ void run_plan(const PlanFlags& F) {
   const auto& env = s.require_environment();
   std::optional<Point> start = s.start;
   if (!F.start.empty()) start = parse_point(F.start, "--start");
+  if (F.range > 0 && (F.split || F.pursuers_given))
+    throw InputError("--range: works with the interval (the default); --pursuers and --split plan for unlimited sight");
   if (!F.split && !F.pursuers_given) return run_bounds(F, env, start);
   json out;
   std::optional<pursuit::Plan> plan;
@@ -377,6 +383,11 @@ void add_pursuit_commands(CLI::App& app) {
     cmd->add_flag("--split", F->split, "The static-guard strategy of 6.3 alone (any scene, holes included), beside the exact minimum");
     cmd->add_flag("--any", F->any, "Any plan, not the shortest: states with fewer contaminated components first (still complete)");
     cmd->add_flag("--no-check", F->no_check, "Skip the independent contamination check of the plan");
+    cmd->add_option("--range", F->range,
+                    "Pursuers see only within this distance: the plan is checked with it (an inscribed polygon), and where the plan "
+                    "for unlimited sight does not clear, the upper end is a static cover of guards (default: unlimited)")
+        ->check(number_in(0, 1e15, true));
+    add_count(cmd, "--range-sides", F->range_sides, 8, 1024, "Corners of the polygon inscribed in the range's disc");
     add_count(cmd, "--frames", F->frames, 1, 24, "Moments drawn in the --svg small multiples");
     add_json_flag(cmd, F->as_json, "Machine-readable output on stdout");
     cmd->add_option("--svg", F->svg, "Draw the plan as small multiples (pursuers, V, contaminated regions) to this SVG file");

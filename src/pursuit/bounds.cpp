@@ -2,6 +2,7 @@
 // The interval [lower, upper] of pursuers an environment needs (see bounds.hpp).
 #include <preimage/pursuit/bounds.hpp>
 #include <preimage/pursuit/figures.hpp>
+#include <preimage/geometry/coordinates.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -25,6 +26,10 @@ PursuerBounds pursuer_bounds(const geometry::Environment& env, const BoundsOptio
                              " contaminated at the end)");
     return r;
   };
+  // With a range the plans below are for unlimited sight: checked with the range at the end.
+  const bool limited = o.range != 0;
+  if (limited) range_sensor(o.range, o.range_sides);  // a bad range is refused before any work
+  const bool check_unlimited = o.check && !limited;
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
   // Every search gets what is left of the time budget (at least a moment, so that a
@@ -87,7 +92,7 @@ PursuerBounds pursuer_bounds(const geometry::Environment& env, const BoundsOptio
     // (the check of office 848's plan takes half a minute; after a 45 s search the answer
     // came in 85 s).
     const std::size_t first_k = std::max<std::size_t>(b.lower, 2);
-    if (o.check && first_k < b.upper && first_k <= o.max_pursuers) {
+    if (check_unlimited && first_k < b.upper && first_k <= o.max_pursuers) {
       say("checking the static-guard plan");
       b.check = check(*b.plan, b.plan_source);
     }
@@ -106,9 +111,37 @@ PursuerBounds pursuer_bounds(const geometry::Environment& env, const BoundsOptio
     }
   }
   cells.reset();  // the check needs none of it (house 1451: 41,440 cells)
-  if (o.check && !b.check) {
+  if (check_unlimited && !b.check) {
     say("checking the plan");
     b.check = check(*b.plan, b.plan_source);
+  }
+  if (limited) {
+    const std::string R = geometry::format_number(o.range);
+    say("checking the plan with range " + R);
+    CheckOptions co;
+    co.range = o.range, co.range_sides = o.range_sides;
+    if (o.check_frames) co.frames = frame_waypoints(b.plan->paths[0].size(), o.check_frames);
+    CheckResult r = check_paths(env, b.plan->paths, co);
+    if (r.cleared) {
+      b.check = std::move(r);
+      b.upper_reason += ", which also clears with range " + R;
+    } else {
+      say("posting a static range cover");
+      const std::size_t unlimited = b.upper;
+      b.cover = static_range_cover(env, o.range, o.range_sides, o.start);
+      b.upper = b.cover->guards.size();
+      b.plan = b.cover->plan;
+      b.plan_source = "range cover";
+      if (o.check_frames) {
+        co.frames = frame_waypoints(b.plan->paths[0].size(), o.check_frames);
+        b.check = check_paths(env, b.plan->paths, co);
+      } else {
+        b.check = b.cover->check;
+      }
+      b.upper_reason = count(b.upper, "guard", "guards") + " standing where together they see all of free space within range " + R +
+                       " (a static cover; the plan for unlimited sight with " + count(unlimited, "pursuer", "pursuers") +
+                       " leaves " + count(r.contaminated_at_end.size(), "region", "regions") + " with this range)";
+    }
   }
   return b;
 }

@@ -86,3 +86,10 @@ cli_test(pursuit_check_range_negative fail "--range" -
          pursuit check ${FIX}/pursuit/range_L.json --path ${FIX}/pursuit/range_L_both_arms.json --range -1)
 cli_test(pursuit_check_range_few_sides fail "--range-sides" -
          pursuit check ${FIX}/pursuit/range_L.json --path ${FIX}/pursuit/range_L_both_arms.json --range 1.5 --range-sides 4)
+# ... and in the planner: the interval with a range, its upper end certified with it.
+cli_test(pursuit_plan_range_cover 0 "upper [0-9]+: [0-9]+ guards standing where together they see all of free space within range 1.5 .*cleared by the independent check" -
+         pursuit plan ${FIX}/pursuit/range_L.json --range 1.5)
+cli_test(pursuit_plan_range_far 0 "pursuers needed with range 100: \\[2, 2\\] \\(exact\\)" -
+         pursuit plan ${PE}/pillar.json --range 100)
+cli_test(pursuit_plan_range_refuses_search 1 "--range: works with the interval" -
+         pursuit plan ${PE}/pillar.json --range 3 --pursuers 2)

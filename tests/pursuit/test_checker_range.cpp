@@ -6,7 +6,9 @@
 #include <preimage/geometry/queries.hpp>
 #include <preimage/geometry/visibility.hpp>
 #include <preimage/pursuit/checker.hpp>
+#include <preimage/pursuit/bounds.hpp>
 #include <preimage/pursuit/cells.hpp>
+#include <preimage/pursuit/static_cover.hpp>
 #include <preimage/pursuit/search.hpp>
 #include <preimage/scene/scene.hpp>
 
@@ -279,4 +281,42 @@ TEST(PursuitCheckerRange, ShadowAndOutOfRangeAreOneRegion) {
   const auto r = check(pillar_room(), {{{1, 1}}}, 4);
   EXPECT_FALSE(r.cleared);
   EXPECT_EQ(r.contaminated_at_end.size(), 1u);
+}
+
+// The planner with a range: the lower end of the interval stands (a weaker sensor never
+// needs fewer pursuers), the upper end is a plan the range check clears — the plan for
+// unlimited sight where it clears, else a static cover — and the plan is re-checked here.
+TEST(PursuitCheckerRange, BoundsWithARangeAreCertifiedWithIt) {
+  const Environment room = pillar_room();
+  pursuit::BoundsOptions o;
+  o.range = 50;
+  const auto far = pursuit::pursuer_bounds(room, o);
+  EXPECT_EQ(far.lower, 2u);
+  EXPECT_EQ(far.upper, 2u);
+  EXPECT_EQ(far.plan_source, "strategy");
+  for (const double R : {3.0, 1.5}) {
+    o.range = R;
+    const auto b = pursuit::pursuer_bounds(room, o);
+    EXPECT_EQ(b.lower, 2u) << R;
+    EXPECT_EQ(b.plan_source, "range cover") << R;
+    EXPECT_EQ(b.upper, b.plan->paths.size()) << R;
+    EXPECT_EQ(b.guard_points().size(), b.upper) << R;
+    ASSERT_TRUE(b.check && b.check->cleared) << R;
+    EXPECT_TRUE(check(room, b.plan->paths, R).cleared) << R;
+    EXPECT_FALSE(check(room, b.plan->paths, R / 2).cleared) << R;  // the range matters
+  }
+  o.range = -1;
+  EXPECT_THROW(pursuit::pursuer_bounds(room, o), InputError);
+}
+
+// In a 10 x 10 room with range 12 (inner radius 11.94, samples 5.97 apart) one guard sees
+// it all; with 6 the corners need more, and the cover walks them from a start one at a time.
+TEST(PursuitCheckerRange, StaticCoverOfARoom) {
+  const Environment room = rect(10, 10);
+  EXPECT_EQ(pursuit::static_range_cover(room, 12).guards.size(), 1u);
+  const auto c = pursuit::static_range_cover(room, 6, 32, Point(1, 1));
+  EXPECT_GE(c.guards.size(), 2u);
+  EXPECT_TRUE(c.check.cleared);
+  for (const auto& p : c.plan.paths) EXPECT_EQ(p.front(), Point(1, 1));
+  EXPECT_TRUE(check(room, c.plan.paths, 6).cleared);
 }

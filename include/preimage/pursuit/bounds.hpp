@@ -11,6 +11,7 @@
 #include <preimage/pursuit/checker.hpp>
 #include <preimage/pursuit/search.hpp>
 #include <preimage/pursuit/split.hpp>
+#include <preimage/pursuit/static_cover.hpp>
 
 #include <functional>
 #include <optional>
@@ -32,6 +33,12 @@ struct BoundsOptions {
   bool shortest = true;
   bool check = true;              // run the independent checker on the plan (false: the plan is not certified)
   std::size_t check_frames = 0;   // moments the check records for a figure (frame_waypoints)
+  /// > 0: pursuers see only within this distance (CheckOptions::range). The lower end
+  /// stands (a weaker sensor never needs fewer pursuers); the upper end is the plan above
+  /// if the range check clears it, else a static range cover (static_cover.hpp). The plan
+  /// is always checked with the range then.
+  double range = 0;
+  std::size_t range_sides = 32;
   /// Called with a line about each step (a terminal shows progress).
   std::function<void(const std::string&)> progress;
 };
@@ -49,9 +56,11 @@ struct PursuerBounds {
   /// (false: the shortest-first search ran out of its budget, the plan is the first found).
   bool shortest = false;
   std::optional<CheckResult> check;
+  std::optional<StaticCover> cover;    // with a range, when the plan above did not clear
   bool exact() const { return upper == lower; }
-  /// Where the plan's static guards stand (none unless the plan is the strategy's).
+  /// Where the plan's static guards stand (none unless the plan is the strategy's or a cover).
   std::vector<Point> guard_points() const {
+    if (cover && plan_source == "range cover") return cover->guards;
     return strategy && plan_source == "strategy" ? strategy->guard_points : std::vector<Point>{};
   }
 };
