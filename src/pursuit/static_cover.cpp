@@ -3,6 +3,7 @@
 #include <preimage/pursuit/static_cover.hpp>
 
 #include <preimage/error.hpp>
+#include <preimage/geometry/local_frame.hpp>
 #include <preimage/geometry/visibility.hpp>
 #include <preimage/geometry/visibility_graph.hpp>
 
@@ -15,12 +16,18 @@ namespace preimage::pursuit {
 
 StaticCover static_range_cover(const geometry::Environment& env, double range, std::size_t range_sides, const std::optional<Point>& start) {
   const std::vector<Point> q = range_sensor(range, range_sides);
-  const geometry::VisibilityIndex vis(env);
-  if (start && !vis.in_free_space(*start))
+  const geometry::VisibilityIndex input_vis(env);
+  if (start && !input_vis.in_free_space(*start))
     throw InputError("start " + geometry::format_point(*start) + " is not in free space");
+  // The samples and the greedy choice run in the plan's canonical frame (its box at the
+  // origin, the same for every exact translate), so a georeferenced plan gets the guards it
+  // gets at the origin, moved; the check below is in input coordinates.
+  const geometry::LocalFrame frame = geometry::LocalFrame::canonical(env);
+  const geometry::Environment local = frame.to_local(env);
+  const geometry::VisibilityIndex vis(local);
   // Samples half the sensor's inner radius apart: every sample is seen from its neighbours.
   const double inner = range * std::cos(std::numbers::pi / static_cast<double>(range_sides));
-  const auto box = env.bbox();
+  const auto box = local.bbox();
   const double s = inner / 2;
   const auto nx = static_cast<std::size_t>(std::floor((box.xmax() - box.xmin()) / s)) + 1;
   const auto ny = static_cast<std::size_t>(std::floor((box.ymax() - box.ymin()) / s)) + 1;
@@ -37,8 +44,8 @@ StaticCover static_range_cover(const geometry::Environment& env, double range, s
       cell_of[j * nx + i] = sample.size();
       sample.push_back(p);
     }
-  // Triangle-free plans thinner than the spacing still get a sample: each vertex's
-  // neighbourhood is reached by the completions below.
+  // (A part of the plan thinner than the spacing may hold no sample: the exact check below
+  // finds it, and a guard is posted inside it.)
   auto sees = [&](const Point& g, const Point& x) {
     for (std::size_t k = 0; k < q.size(); ++k) {
       const Point a(g.x() + q[k].x(), g.y() + q[k].y()), b(g.x() + q[(k + 1) % q.size()].x(), g.y() + q[(k + 1) % q.size()].y());
@@ -82,12 +89,15 @@ StaticCover static_range_cover(const geometry::Environment& env, double range, s
       if (n > most || (n == most && n > 0 && d2 < spread)) most = n, best = g, spread = d2;
     }
     if (best == SIZE_MAX) break;  // cannot happen: every sample sees itself
-    out.guards.push_back(sample[best]);
+    // Back in input coordinates; a sample that rounding moves out of free space is left to
+    // the completions.
+    const Point g = frame.to_input(sample[best]);
+    if (input_vis.in_free_space(g)) out.guards.push_back(g);
     for (auto x : seen_by[best])
       if (!covered[x]) covered[x] = 1, --left;
   }
   // Posted, and checked exactly; a region the samples missed gets a guard inside it.
-  const geometry::VisibilityGraph graph(vis);
+  const geometry::VisibilityGraph graph(input_vis);
   // With a start, the guards walk to their posts one at a time (the others wait), so every
   // step of the check has one mover and its exact events.
   auto make_plan = [&] {
@@ -114,7 +124,7 @@ StaticCover static_range_cover(const geometry::Environment& env, double range, s
     if (round >= 200) throw std::logic_error("pursuit: the static range cover still leaves a region after 200 completions");
     const std::size_t before = out.guards.size();
     for (const Point& p : out.check.contaminated_at_end)
-      if (vis.in_free_space(p)) out.guards.push_back(p), ++out.completions;
+      if (input_vis.in_free_space(p)) out.guards.push_back(p), ++out.completions;
     if (out.guards.size() == before) throw std::logic_error("pursuit: the static range cover's regions left have no point in free space");
   }
 }

@@ -320,3 +320,22 @@ TEST(PursuitCheckerRange, StaticCoverOfARoom) {
   for (const auto& p : c.plan.paths) EXPECT_EQ(p.front(), Point(1, 1));
   EXPECT_TRUE(check(room, c.plan.paths, 6).cleared);
 }
+
+// Far from the origin (UTM-like coordinates) the cover is the one at the origin, moved: the
+// samples and the greedy choice run in the plan's canonical frame.
+TEST(PursuitCheckerRange, StaticCoverDoesNotDependOnWhereThePlanSits) {
+  auto shifted = [](double dx, double dy) {
+    return Environment::make({{dx, dy}, {dx + 6, dy}, {dx + 6, dy + 6}, {dx, dy + 6}},
+                             {{{dx + 2, dy + 2}, {dx + 4, dy + 2}, {dx + 4, dy + 4}, {dx + 2, dy + 4}}});
+  };
+  const auto at0 = pursuit::static_range_cover(shifted(0, 0), 2.5);
+  for (const auto& [dx, dy] : {std::pair{5e5, 4e6}, std::pair{-2e7, 1e7}}) {
+    const auto far = pursuit::static_range_cover(shifted(dx, dy), 2.5);
+    ASSERT_EQ(far.guards.size(), at0.guards.size()) << dx;
+    for (std::size_t i = 0; i < far.guards.size(); ++i) {
+      EXPECT_NEAR(far.guards[i].x() - dx, at0.guards[i].x(), 1e-6) << dx;
+      EXPECT_NEAR(far.guards[i].y() - dy, at0.guards[i].y(), 1e-6) << dx;
+    }
+    EXPECT_TRUE(far.check.cleared);
+  }
+}
