@@ -129,8 +129,8 @@ void add_sensor_pieces(const Environment& env, const std::vector<ExactPoint>& C,
 }
 
 
-int range_sign_at(const std::array<ExactFT, 3>& g, const ExactFT& t) { return CGAL::sign(g[0] + t * (g[1] + t * g[2])); }
-int range_sign_at(const std::array<ExactFT, 3>& g, double t) { return range_sign_at(g, ExactFT(t)); }
+static int range_sign_at(const std::array<ExactFT, 3>& g, const ExactFT& t) { return CGAL::sign(g[0] + t * (g[1] + t * g[2])); }
+static int range_sign_at(const std::array<ExactFT, 3>& g, double t) { return range_sign_at(g, ExactFT(t)); }
 
 void range_events(const Environment& env, const ExactPoint& a, const ExactPoint& b, const std::vector<Point>& Q, double R,
                   const std::vector<std::uint32_t>& reflex, const Moment* waiting, std::size_t mover, RangeEvents& out) {
@@ -139,9 +139,9 @@ void range_events(const Environment& env, const ExactPoint& a, const ExactPoint&
   CGAL::Bbox_2 reach = a.bbox() + b.bbox();
   reach = CGAL::Bbox_2(reach.xmin() - R, reach.ymin() - R, reach.xmax() + R, reach.ymax() + R);
   auto near = [&](const CGAL::Bbox_2& x) { return CGAL::do_overlap(reach, x); };
-  // p(t) strictly crosses the line of L0 L1 inside the closed segment: the t.
+  // p(t) strictly crosses the line of L0 L1 inside the closed segment (crossing() decides
+  // the strict crossing of the line): the t.
   auto through = [&](const ExactPoint& L0, const ExactPoint& L1) {
-    if (geometry::orientation(L0, L1, a) * geometry::orientation(L0, L1, b) >= 0) return;
     if (geometry::orientation(a, b, L0) * geometry::orientation(a, b, L1) > 0) return;
     if (const auto t = crossing(a, b, L0, L1)) out.cuts.push_back(*t);
   };
@@ -173,8 +173,8 @@ void range_events(const Environment& env, const ExactPoint& a, const ExactPoint&
     for (std::size_t i = 0; i < n; ++i) through(L0 - q[i], L1 - q[i]);
   // (ii), (vi): a vertex or a waiting segment's end on edge j of Q.
   std::vector<ExactPoint> fixed;
-  for (std::uint32_t v = 0; v < env.num_vertices(); ++v)
-    if (near(env.exact_vertex(v).bbox())) fixed.push_back(env.exact_vertex(v));
+  for (std::uint32_t w = 0; w < env.num_vertices(); ++w)
+    if (near(env.exact_vertex(w).bbox())) fixed.push_back(env.exact_vertex(w));
   fixed.insert(fixed.end(), ends.begin(), ends.end());
   for (const ExactPoint& z : fixed)
     for (std::size_t j = 0; j < n; ++j) through(z - q[(j + 1) % n], z - q[j]);
