@@ -358,6 +358,7 @@ void run_evaluate(const std::vector<std::string>& files, const EvaluationParams&
 struct GameOptions {
   double resolution = 0.25, speed_ratio = 0.5, range = 8, separation = -1, target_radius = -1;
   double accel = 0;  // > 0: also the game with the observer's velocity in the state
+  std::string observer_step = "semi-implicit";
   std::string observer, target, svg;
   std::size_t jobs = 0;
   bool json = false;
@@ -395,7 +396,16 @@ void run_game(const std::string& file, const GameOptions& o) {
     DynamicGameParams dp;
     dp.accel = o.accel;
     dp.threads = gp.threads;
-    dyn.emplace(shared, dp);
+    if (o.observer_step == "constant-acceleration") {
+      // Its own step, the one the acceleration makes whole: the same grid, longer moves.
+      dp.step = ObserverStep::ConstantAcceleration;
+      GameParams slow = gp;
+      slow.step_time = DynamicVisibilityGame::constant_acceleration_step(gp.resolution, o.accel);
+      slow.progress = {};
+      dyn.emplace(std::make_shared<const VisibilityGame>(env, slow), dp);
+    } else {
+      dyn.emplace(shared, dp);
+    }
   }
   progress.reset();  // erase the status line before the answer
   auto snap = [&](const Point& p, const char* flag) {
@@ -446,15 +456,17 @@ void run_game(const std::string& file, const GameOptions& o) {
       dstart = {{"kept", v == VisibilityGame::kForever}, {"escape_steps", v == VisibilityGame::kForever ? json(nullptr) : json(v)}};
       verdict = v == VisibilityGame::kForever ? "the observer, starting at rest, keeps the target forever"
                 : v == 0                      ? "the observer does not see the target"
-                                              : "the target escapes within " + std::to_string(v) + " steps (" + two_decimals(v * g.step_time()) +
-                                                    " s) against every observer starting at rest";
+                                              : "the target escapes within " + std::to_string(v) + " steps (" +
+                                                    two_decimals(v * dyn->game().step_time()) + " s) against every observer starting at rest";
     }
-    dyn_json = {{"accel", o.accel}, {"accel_steps", dyn->accel_steps()}, {"velocities", ds.velocities}, {"states", ds.states},
+    dyn_json = {{"accel", o.accel}, {"observer_step", o.observer_step}, {"step_time", dyn->game().step_time()},
+                {"velocity_unit", dyn->velocity_unit()}, {"accel_steps", dyn->accel_steps()}, {"velocities", ds.velocities}, {"states", ds.states},
                 {"seen", ds.seen}, {"kept", ds.winning}, {"kept_at_rest", ds.winning_at_rest}, {"longest_escape_steps", ds.levels},
                 {"memory_bytes", ds.memory_bytes}, {"seconds", ds.seconds}, {"start", dstart}};
     std::ostringstream t;
-    t << std::fixed << std::setprecision(2) << "with dynamics (acceleration " << o.accel << " m/s^2 per axis, " << ds.velocities
-      << " velocities): " << ds.states << " states solved in " << ds.seconds << " s, " << std::setprecision(0) << ds.memory_bytes / 1e6
+    t << std::fixed << std::setprecision(2) << "with dynamics (acceleration " << o.accel << " m/s^2 per axis, " << o.observer_step
+      << " steps of " << dyn->game().step_time() << " s, " << ds.velocities << " velocities): " << ds.states << " states solved in "
+      << ds.seconds << " s, " << std::setprecision(0) << ds.memory_bytes / 1e6
       << " MB; the observer keeps the target forever from " << ds.winning << " of the " << ds.seen << " states where it sees it ("
       << std::setprecision(1) << (ds.seen ? 100.0 * static_cast<double>(ds.winning) / static_cast<double>(ds.seen) : 0.0) << " %)";
     if (!verdict.empty()) t << "\nstart with dynamics: " << verdict;
@@ -787,9 +799,13 @@ void add_track_commands(CLI::App& app) {
   gm->add_option("--target-radius", go.target_radius, "The target's disc keeps this far from obstacles, m (default: $.tracking.target_radius, else 0.2)")
       ->check(number_in(0, 100));
   gm->add_option("--accel", go.accel,
-                 "Also solve the game with the observer's velocity in the state: its acceleration per axis, m/s^2 (the resolution must "
-                 "make it a whole number of grid steps per step squared: 0.25 m at 0.5 m/s^2 and half speed)")
+                 "Also solve the game with the observer's velocity in the state: its acceleration per axis, m/s^2 (semi-implicit "
+                 "steps: the resolution must make it a whole number of grid steps per step squared, 0.25 m at 0.5 m/s^2 and half speed)")
       ->check(number_in(0, 100));
+  gm->add_option("--observer-step", go.observer_step,
+                 "With --accel: semi-implicit (the new velocity moves the observer for the whole step: it favours the observer) or "
+                 "constant-acceleration (what a robot does; the game's step becomes sqrt(2 resolution / accel))")
+      ->check(CLI::IsMember({"semi-implicit", "constant-acceleration"}))->capture_default_str();
   gm->add_option("--observer", go.observer, "Observer X,Y for the start's verdict (default: $.tracking.observer)");
   gm->add_option("--target", go.target, "Target X,Y (default: $.tracking.target)");
   gm->add_option("--svg", go.svg, "Draw, for the target's point, where the observer keeps it");

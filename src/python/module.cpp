@@ -281,7 +281,8 @@ PYBIND11_MODULE(preimage, m) {
      "TRACK's steps on one log line (CARMEN FLASER/ROBOTLASER1 or the text format), as `preimage track replay` does; None for other lines");
 
   m.def("track_game", [](const geometry::Environment& env, double resolution, double speed_ratio, double range, double separation,
-                         double target_radius, const py::object& observer, const py::object& target, double accel) {
+                         double target_radius, const py::object& observer, const py::object& target, double accel,
+                         const std::string& observer_step) {
     tracking::GameParams p;
     p.resolution = resolution;
     p.speed_ratio = speed_ratio;
@@ -291,10 +292,19 @@ PYBIND11_MODULE(preimage, m) {
     const auto shared = std::make_shared<const tracking::VisibilityGame>(env, p);
     const tracking::VisibilityGame& g = *shared;
     std::optional<tracking::DynamicVisibilityGame> dyn;
+    if (observer_step != "semi-implicit" && observer_step != "constant-acceleration")
+      throw InputError("observer_step: expected semi-implicit or constant-acceleration, got \"" + observer_step + "\"");
     if (accel > 0) {
       tracking::DynamicGameParams dp;
       dp.accel = accel;
-      dyn.emplace(shared, dp);
+      if (observer_step == "constant-acceleration") {
+        dp.step = tracking::ObserverStep::ConstantAcceleration;
+        tracking::GameParams slow = p;
+        slow.step_time = tracking::DynamicVisibilityGame::constant_acceleration_step(resolution, accel);
+        dyn.emplace(std::make_shared<const tracking::VisibilityGame>(env, slow), dp);
+      } else {
+        dyn.emplace(shared, dp);
+      }
     }
     const auto& st = g.stats();
     py::dict d;
@@ -328,6 +338,7 @@ PYBIND11_MODULE(preimage, m) {
       const auto& ds = dyn->stats();
       py::dict dd;
       dd["accel_steps"] = dyn->accel_steps();
+      dd["step_time"] = dyn->game().step_time();
       dd["velocities"] = ds.velocities;
       dd["states"] = ds.states;
       dd["seen"] = ds.seen;
@@ -338,11 +349,11 @@ PYBIND11_MODULE(preimage, m) {
     return d;
   }, py::arg("environment"), py::arg("resolution") = 0.25, py::arg("speed_ratio") = 0.5, py::arg("range") = 8.0,
      py::arg("separation") = 0.35, py::arg("target_radius") = 0.2, py::arg("observer") = py::none(), py::arg("target") = py::none(),
-     py::arg("accel") = 0.0,
+     py::arg("accel") = 0.0, py::arg("observer_step") = "semi-implicit",
      "The visibility game of `preimage track game`: can an observer keep the target in view forever? Counts, and for a "
      "target point the keeping observer points ((n, 2) array); with an observer too, escape_steps (None: kept forever). "
      "accel > 0 (m/s^2 per axis, as `--accel`): also the game with the observer's velocity in the state, under "
-     "'dynamics', and escape_steps_at_rest for the observer starting still");
+     "'dynamics', and escape_steps_at_rest for the observer starting still; observer_step as `--observer-step`");
 
   m.def("cover", [](const geometry::Environment& env, double radius, std::optional<double> width, std::optional<double> angle,
                     const py::object& start, double min_turn_radius) {

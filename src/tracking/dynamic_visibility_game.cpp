@@ -23,39 +23,50 @@ DynamicVisibilityGame::DynamicVisibilityGame(std::shared_ptr<const VisibilityGam
   const VisibilityGame& g = *game_;
   const GameParams& gp = g.params();
   const double h = gp.resolution;
+  const bool exact = p.step == ObserverStep::ConstantAcceleration;
   if (!(p.accel > 0) || !std::isfinite(p.accel)) throw InputError("dynamic game: the acceleration must be a positive number of m/s^2");
-  // accel * step^2 / h grid steps per step squared, with step = sqrt(2) h / (ratio v_max).
-  const double steps = p.accel * g.step_time() * g.step_time() / h;
-  const double base = gp.speed_ratio * gp.speed_ratio * gp.observer_speed * gp.observer_speed / (2 * p.accel);
+  // The velocity unit (m/s): one grid step per step, or two with the constant
+  // acceleration, whose displacement (v + v') step / 2 must land on the grid.
+  const double tau = g.step_time();
+  unit_ = (exact ? 2 : 1) * h / tau;
+  // The acceleration in velocity units per step.
+  const double steps = p.accel * tau / unit_;
   accel_steps_ = static_cast<int>(std::llround(steps));
   if (accel_steps_ < 1 || std::abs(steps - accel_steps_) > 1e-9 * steps) {
     std::ostringstream m;
-    m << "dynamic game: an acceleration of " << p.accel << " m/s^2 is " << steps << " grid steps per step squared at resolution " << h
-      << " m; the velocities carry grid points to grid points only at a multiple of " << base << " m";
+    if (exact) {
+      m << "dynamic game: with a constant acceleration of " << p.accel << " m/s^2 per step, the step (" << tau
+        << " s) must make accel * step^2 a whole multiple of twice the resolution " << h << " m: "
+        << constant_acceleration_step(h, p.accel) << " s, or that times sqrt(k)";
+    } else {
+      const double base = gp.speed_ratio * gp.speed_ratio * gp.observer_speed * gp.observer_speed / (2 * p.accel);
+      m << "dynamic game: an acceleration of " << p.accel << " m/s^2 is " << steps << " grid steps per step squared at resolution " << h
+        << " m; the velocities carry grid points to grid points only at a multiple of " << base << " m";
+    }
     throw InputError(m.str());
   }
   const unsigned threads = p.threads ? p.threads : std::max(1u, std::thread::hardware_concurrency());
   const std::size_t n = g.num_points();
 
-  // Velocities: the observer's reach in grid steps (the moves of the game without dynamics).
-  const double reach = g.observer_reach() / h, r2 = reach * reach * (1 + 1e-12);
+  // Velocities: up to the observer's top speed (its reach per step).
+  const double reach = g.observer_reach() / (unit_ * tau), r2 = reach * reach * (1 + 1e-12);
   const int r = static_cast<int>(std::floor(std::sqrt(r2)));
-  const int side = 2 * r + 1;
-  std::vector<std::uint32_t> lookup(static_cast<std::size_t>(side * side), kNone);
   velocities_.push_back({0, 0});
   for (int j = -r; j <= r; ++j)
     for (int i = -r; i <= r; ++i)
       if ((i || j) && i * i + j * j <= r2) velocities_.push_back({i, j});
-  for (std::uint32_t v = 0; v < velocities_.size(); ++v)
-    lookup[static_cast<std::size_t>((velocities_[v][1] + r) * side + velocities_[v][0] + r)] = v;
   const std::size_t V = velocities_.size();
   next_begin_.assign(V + 1, 0);
+  edge_of_.assign(V * V, kNone);
   for (std::uint32_t v = 0; v < V; ++v) {
     for (std::uint32_t w = 0; w < V; ++w)
-      if (std::abs(velocities_[w][0] - velocities_[v][0]) <= accel_steps_ && std::abs(velocities_[w][1] - velocities_[v][1]) <= accel_steps_)
+      if (std::abs(velocities_[w][0] - velocities_[v][0]) <= accel_steps_ && std::abs(velocities_[w][1] - velocities_[v][1]) <= accel_steps_) {
+        edge_of_[static_cast<std::size_t>(v) * V + w] = static_cast<std::uint32_t>(next_.size());
         next_.push_back(w);
+      }
     next_begin_[v + 1] = static_cast<std::uint32_t>(next_.size());
   }
+  const std::size_t E = next_.size();
 
   const double states = static_cast<double>(n) * static_cast<double>(n) * static_cast<double>(V);
   if (states > static_cast<double>(std::min<std::size_t>(p.max_states, std::numeric_limits<std::uint32_t>::max() - 1)))
@@ -65,19 +76,53 @@ DynamicVisibilityGame::DynamicVisibilityGame(std::shared_ptr<const VisibilityGam
   stats_.velocities = V;
   stats_.states = n * n * V;
 
-  // Where each velocity carries the observer: the free straight moves of the game.
-  dest_.assign(n * V, kNone);
-  src_.assign(n * V, kNone);
+  // The observer's free straight moves, by grid offset: moves[o][offset] (o itself at 0).
+  const int R = static_cast<int>(std::floor(g.observer_reach() / h * (1 + 1e-12))), side = 2 * R + 1;
+  std::vector<std::uint32_t> moves(n * static_cast<std::size_t>(side * side), kNone);
+  const auto at = [&](std::size_t o, int di, int dj) -> std::uint32_t {
+    if (std::abs(di) > R || std::abs(dj) > R) return kNone;
+    return moves[o * static_cast<std::size_t>(side * side) + static_cast<std::size_t>((dj + R) * side + di + R)];
+  };
   for (std::uint32_t o = 0; o < n; ++o)
     for (std::uint32_t q : g.observer_moves(o)) {
-      const int di = static_cast<int>(std::llround((g.point(q).x() - g.point(o).x()) / h));
-      const int dj = static_cast<int>(std::llround((g.point(q).y() - g.point(o).y()) / h));
-      if (std::abs(di) > r || std::abs(dj) > r) continue;
-      const std::uint32_t v = lookup[static_cast<std::size_t>((dj + r) * side + di + r)];
-      if (v == kNone) continue;
-      dest_[static_cast<std::size_t>(o) * V + v] = q;
-      src_[static_cast<std::size_t>(q) * V + v] = o;
+      const auto d = g.offset(o, q);
+      if (std::abs(d[0]) <= R && std::abs(d[1]) <= R)
+        moves[static_cast<std::size_t>(o) * static_cast<std::size_t>(side * side) + static_cast<std::size_t>((d[1] + R) * side + d[0] + R)] = q;
     }
+  // Where each edge v -> w carries the observer from o.
+  const std::vector<Point>& vertices = g.environment_vertices();
+  dest_.assign(n * E, kNone);
+  parallel_for(n, threads, [&](std::size_t o) {
+    for (std::uint32_t v = 0; v < V; ++v)
+      for (std::uint32_t e = next_begin_[v]; e < next_begin_[v + 1]; ++e) {
+        const auto& w = velocities_[next_[e]];
+        if (!exact) {
+          dest_[o * E + e] = at(o, w[0], w[1]);
+          continue;
+        }
+        // The parabola's control polygon o -> o + v -> o + v + w (grid steps), and the chord.
+        const auto& u = velocities_[v];
+        const std::uint32_t q1 = at(o, u[0], u[1]);
+        if (q1 == kNone) continue;
+        const std::uint32_t q2 = at(q1, w[0], w[1]);
+        if (q2 == kNone || at(o, u[0] + w[0], u[1] + w[1]) != q2) continue;
+        const Point &a = g.point(static_cast<std::uint32_t>(o)), &b = g.point(q1), &c = g.point(q2);
+        const int turn = geometry::orientation(a, b, c);
+        bool clear = true;
+        if (turn != 0)  // no vertex in the closed triangle (its corners are in the open free space)
+          for (const Point& x : vertices)
+            if (geometry::orientation(a, b, x) * turn >= 0 && geometry::orientation(b, c, x) * turn >= 0 &&
+                geometry::orientation(c, a, x) * turn >= 0) {
+              clear = false;
+              break;
+            }
+        if (clear) dest_[o * E + e] = q2;
+      }
+  });
+  src_.assign(n * E, kNone);
+  for (std::size_t o = 0; o < n; ++o)
+    for (std::size_t e = 0; e < E; ++e)
+      if (const std::uint32_t q = dest_[o * E + e]; q != kNone) src_[static_cast<std::size_t>(q) * E + e] = static_cast<std::uint32_t>(o);
 
   // Level 0 where the game without dynamics has lost already (not seen, within the
   // separation, or the target where it cannot stand): sight does not depend on velocity.
@@ -97,11 +142,10 @@ DynamicVisibilityGame::DynamicVisibilityGame(std::shared_ptr<const VisibilityGam
   parallel_for(threads, threads, [&](std::size_t th) {
     for (std::size_t o = th; o < n; o += threads)
       for (std::uint32_t v = 0; v < V; ++v) {
-        const auto choices = next_velocities(v);
         for (std::size_t tp = 0; tp < n; ++tp) {
           unsigned alive = 0;
-          for (std::uint32_t w : choices) {
-            const std::uint32_t q = dest_[o * V + w];
+          for (std::uint32_t e = next_begin_[v]; e < next_begin_[v + 1]; ++e) {
+            const std::uint32_t q = dest_[o * E + e], w = next_[e];
             alive += q != kNone && level_[(static_cast<std::size_t>(q) * V + w) * n + tp] != kLost;
           }
           answers[(o * V + v) * n + tp] = static_cast<std::uint8_t>(alive);
@@ -129,16 +173,16 @@ DynamicVisibilityGame::DynamicVisibilityGame(std::shared_ptr<const VisibilityGam
     stats_.levels = k;
     decided += frontier.size();
     if (p.progress) p.progress(std::min(1.0, static_cast<double>(decided) / static_cast<double>(n * n * V)));
-    // X(o', v', t') lost at k: one choice fewer for every Y(o, v, t') with o + v' = o'
-    // and v' among v's next velocities (the relation is symmetric in v and v').
+    // X(o', v', t') lost at k: one choice fewer for every Y(o, v, t') whose edge v -> v'
+    // carries o to o' (v' is next to v exactly when v is next to v').
     parallel_for(threads, threads, [&](std::size_t th) {
       zero[th].clear();
       for (std::size_t f = th; f < frontier.size(); f += threads) {
         const std::size_t s = frontier[f];
         const std::size_t tp = s % n, ov = s / n, vp = ov % V, op = ov / V;
-        const std::uint32_t o = src_[op * V + vp];
-        if (o == kNone) continue;
         for (std::uint32_t v : next_velocities(static_cast<std::uint32_t>(vp))) {
+          const std::uint32_t o = src_[op * E + edge_of_[static_cast<std::size_t>(v) * V + vp]];
+          if (o == kNone) continue;
           std::atomic_ref<std::uint8_t> c(answers[(static_cast<std::size_t>(o) * V + v) * n + tp]);
           if (c.fetch_sub(1, std::memory_order_relaxed) == 1) zero[th].push_back(static_cast<std::uint32_t>((static_cast<std::size_t>(o) * V + v) * n + tp));
         }
@@ -185,7 +229,7 @@ std::uint32_t DynamicVisibilityGame::observer_policy(std::uint32_t o, std::uint3
   std::uint32_t best = kNone, best_value = 0;
   int best_speed = 0;
   for (std::uint32_t w : next_velocities(v)) {
-    const std::uint32_t q = destination(o, w);
+    const std::uint32_t q = destination(o, v, w);
     if (q == kNone) continue;
     const std::uint32_t value = escape_steps(q, w, t);
     const int speed = velocities_[w][0] * velocities_[w][0] + velocities_[w][1] * velocities_[w][1];
@@ -196,7 +240,7 @@ std::uint32_t DynamicVisibilityGame::observer_policy(std::uint32_t o, std::uint3
 
 std::uint32_t DynamicVisibilityGame::answer_value(std::uint32_t o, std::uint32_t v, std::uint32_t t) const {
   const std::uint32_t w = observer_policy(o, v, t);
-  return w == kNone ? 0 : escape_steps(destination(o, w), w, t);
+  return w == kNone ? 0 : escape_steps(destination(o, v, w), w, t);
 }
 
 std::uint32_t DynamicVisibilityGame::target_policy(std::uint32_t o, std::uint32_t v, std::uint32_t t) const {

@@ -35,7 +35,7 @@ std::vector<std::pair<int, int>> disc_offsets(double r2) {
 
 }  // namespace
 
-VisibilityGame::VisibilityGame(const geometry::Environment& env, const GameParams& p) : params_(p) {
+VisibilityGame::VisibilityGame(const geometry::Environment& env, const GameParams& p) : params_(p), vertices_(env.vertices()) {
   const double h = p.resolution;
   if (!(h > 0) || !std::isfinite(h)) throw InputError("game: the resolution must be a positive number of metres");
   if (!(p.observer_speed > 0) || !std::isfinite(p.observer_speed)) throw InputError("game: the observer's speed must be positive");
@@ -45,11 +45,14 @@ VisibilityGame::VisibilityGame(const geometry::Environment& env, const GameParam
   const unsigned threads = p.threads ? p.threads : std::max(1u, std::thread::hardware_concurrency());
   const auto t0 = Clock::now();
 
-  // The target steps at most one diagonal grid step; the observer proportionally more.
-  target_reach_ = h * std::sqrt(2.0);
+  // The target steps at most one diagonal grid step (unless the step is given); the
+  // observer proportionally more.
+  if (!(p.step_time >= 0) || !std::isfinite(p.step_time)) throw InputError("game: the step time must be >= 0 seconds");
+  target_reach_ = p.step_time > 0 ? p.speed_ratio * p.observer_speed * p.step_time : h * std::sqrt(2.0);
   step_ = target_reach_ / (p.speed_ratio * p.observer_speed);
   observer_reach_ = target_reach_ / p.speed_ratio;
-  const double target_r2 = 2.0, observer_r2 = 2.0 / (p.speed_ratio * p.speed_ratio) * (1 + 1e-12);
+  const double target_r2 = p.step_time > 0 ? (target_reach_ / h) * (target_reach_ / h) * (1 + 1e-12) : 2.0;
+  const double observer_r2 = (p.step_time > 0 ? (observer_reach_ / h) * (observer_reach_ / h) : 2.0 / (p.speed_ratio * p.speed_ratio)) * (1 + 1e-12);
 
   // The grid in the environment's own frame: points at x0 + i h, y0 + j h, so that the
   // answers do not depend on where the plan sits in the plane.
@@ -248,6 +251,12 @@ VisibilityGame::VisibilityGame(const geometry::Environment& env, const GameParam
     stats_.winning += l == kForever;
   }
   stats_.seconds_solve = seconds_since(t1);
+}
+
+std::array<int, 2> VisibilityGame::offset(std::uint32_t i, std::uint32_t j) const {
+  const double h = params_.resolution;
+  return {static_cast<int>(std::llround((points_[j].x() - x0_) / h) - std::llround((points_[i].x() - x0_) / h)),
+          static_cast<int>(std::llround((points_[j].y() - y0_) / h) - std::llround((points_[i].y() - y0_) / h))};
 }
 
 std::span<const std::uint32_t> VisibilityGame::observer_moves(std::uint32_t i) const {

@@ -85,6 +85,15 @@ cli_test(track_game_chairs_dynamics 0 "^start with dynamics: the target escapes 
 cli_test(track_game_dynamics_json 0 "\"dynamics\":\\{\"accel\":0.5,\"accel_steps\":2," - track game ${TRACKING}/box.json --resolution 0.5 --accel 0.5 --json)
 cli_test(track_game_dynamics_off_grid fail "the velocities carry grid points to grid points only at a multiple of 0.25 m" -
          track game ${TRACKING}/box.json --resolution 0.125 --accel 0.5)
+# The robot's own motion (constant acceleration for a step, sqrt(2 h / accel) long): the
+# box's start is still kept at 0.25 m; the lab's is lost at 0.5 m (every lab state is).
+cli_test(track_game_box_constant_acceleration 0
+         "constant-acceleration steps of 1.00 s, 13 velocities\\): 25992148 states .* from 9892448 of the 16474406 states" -
+         track game ${TRACKING}/box.json --accel 0.5 --observer-step constant-acceleration)
+cli_test(track_game_lab_constant_acceleration 0
+         "^start with dynamics: the target escapes within 10 steps \\(14.14 s\\) against every observer starting at rest$" -
+         track game ${TRACKING}/lab.json --resolution 0.5 --accel 0.5 --observer-step constant-acceleration)
+cli_test(track_game_bad_observer_step fail "--observer-step: .*euler" - track game ${TRACKING}/box.json --accel 0.5 --observer-step euler)
 cli_test(track_game_zero_resolution fail "--resolution: expected a number in" - track game ${TRACKING}/box.json --resolution 0)
 cli_test(track_game_huge_grid fail "game: .* states, more than the limit" - track game ${TRACKING}/box.json --resolution 0.01)
 cli_test(track_game_target_outside fail "--target \\(50, 50\\): no grid point of the game within two grid steps" - track game ${TRACKING}/box.json --target 50,50)

@@ -188,3 +188,11 @@ def test_track_game_matches_cli():
     assert dyn["dynamics"]["kept"] < dyn["kept"] * dyn["dynamics"]["velocities"]  # the bound on acceleration costs states
     with pytest.raises(Exception, match="multiple of 0.25 m"):
         preimage.track_game(scene.environment, resolution=0.125, accel=0.5)
+    # The constant-acceleration step: the CLI's counts, its own step.
+    exact = preimage.track_game(scene.environment, resolution=0.5, accel=0.5, observer_step="constant-acceleration")
+    theirs = cli_json("track", "game", path, "--resolution", "0.5", "--accel", "0.5", "--observer-step", "constant-acceleration")
+    for key in ("accel_steps", "velocities", "states", "seen", "kept", "kept_at_rest", "step_time"):
+        assert exact["dynamics"][key] == theirs["dynamics"][key], key
+    assert exact["dynamics"]["step_time"] == pytest.approx(2 ** 0.5)
+    with pytest.raises(Exception, match="observer_step"):
+        preimage.track_game(scene.environment, resolution=0.5, accel=0.5, observer_step="euler")

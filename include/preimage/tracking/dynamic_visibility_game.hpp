@@ -4,30 +4,44 @@
 // tracking paper, 002 section III.C, which its controllers do not plan for).
 //
 // Same grid, sight, separation, target and target moves as VisibilityGame (it is built on
-// a solved one); the observer, a holonomic base whose sensor turns freely, moves at the
-// velocity it chose for the step: from (o, v) it picks v' = v + a with each component of
-// a in {-1, 0, 1} grid steps per game step, |v'| within its reach, and goes to o + v'
-// along a free straight segment (semi-implicit Euler: the new velocity moves it). With no
-// such v' (too fast towards a wall to stop) the observer has lost. The acceleration bound
-// `accel` (m/s^2 per axis) is one grid step per game step squared: resolution =
-// accel_steps * speed_ratio^2 * v_max^2 / (2 accel) for an integer accel_steps >= 1
-// (0.25 m at the evaluation's 0.5 m/s^2, half speed and 1 m/s), anything else is refused:
-// the velocities must carry grid points to grid points.
+// a solved one); the observer is a holonomic base whose sensor turns freely, with each
+// component of its acceleration bounded by `accel` (m/s^2). Two models of its step:
 //
-// Backward induction over (observer, velocity, target) states as in VisibilityGame; the
-// winning region here is contained in the one without dynamics at the same grid (the
-// observer's moves are a subset of its moves there), and equals it when accel_steps spans
-// every velocity in one step.
+// * SemiImplicit: from (o, v) it picks v' = v + a, each component of a in {-k..k} grid
+//   steps per game step, |v'| within its reach, and goes to o + v' along a free straight
+//   segment (semi-implicit Euler: the new velocity moves it). accel * step^2 must be k grid
+//   steps: resolution = k * speed_ratio^2 * v_max^2 / (2 accel) with the game's usual step
+//   (0.25 m at 0.5 m/s^2, half speed and 1 m/s). It moves the observer accel * step^2 per
+//   step where a robot can go accel * step^2 / 2: it favours the observer.
+// * ConstantAcceleration: exactly what a robot does holding the acceleration (v' - v) /
+//   step for the step: it goes to o + (v + v') step / 2 along a parabola, which lies in
+//   the triangle o, o + v step / 2, o + (v + v') step / 2 (its Bezier control polygon);
+//   the move is allowed when the triangle's three sides are free and it holds no vertex of
+//   the environment, so the parabola is in free space. Velocities are whole multiples of
+//   2 resolution / step (so the corners are grid points), and accel * step^2 must be
+//   2 k resolution: the VisibilityGame's step must be constant_acceleration_step(h,
+//   accel) (1 s at 0.25 m and 0.5 m/s^2). Positions and velocities on the grid are the
+//   only restriction of the robot; sight is checked at the steps' ends only.
+//
+// With no allowed v' (too fast towards a wall to stop) the observer has lost. Backward
+// induction over (observer, velocity, target) states as in VisibilityGame; with the
+// semi-implicit step the winning region is contained in the one without dynamics at the
+// same grid (the observer's moves are a subset of its moves there), and equals it when k
+// spans every velocity in one step.
 #pragma once
 #include <preimage/tracking/visibility_game.hpp>
 
 #include <array>
+#include <cmath>
 #include <memory>
 
 namespace preimage::tracking {
 
+enum class ObserverStep { SemiImplicit, ConstantAcceleration };
+
 struct DynamicGameParams {
   double accel = 0.5;  // the observer's acceleration bound per axis (m/s^2)
+  ObserverStep step = ObserverStep::SemiImplicit;
   unsigned threads = 0;  // 0: one per hardware thread
   std::size_t max_states = 400'000'000;  // (observer, velocity, target) states; 2 bytes each
   std::function<void(double)> progress;  // share of the induction's states decided (a guess until the end)
@@ -49,28 +63,39 @@ class DynamicVisibilityGame {
   static constexpr std::uint32_t kForever = VisibilityGame::kForever;
   static constexpr std::uint32_t kNone = VisibilityGame::kNoPoint;
 
-  /// InputError when the resolution does not make accel a whole number of grid steps per
-  /// step squared (the message names the resolutions that do), or too many states.
+  /// InputError when the game's resolution and step do not make the acceleration whole
+  /// (the message names what does), or too many states.
   DynamicVisibilityGame(std::shared_ptr<const VisibilityGame> game, const DynamicGameParams& params);
+
+  /// The step (s) for ObserverStep::ConstantAcceleration at this resolution: accel *
+  /// step^2 = 2 resolution (set it as GameParams::step_time).
+  static double constant_acceleration_step(double resolution, double accel) { return std::sqrt(2 * resolution / accel); }
 
   const VisibilityGame& game() const { return *game_; }
   const DynamicGameParams& params() const { return params_; }
   const DynamicGameStats& stats() const { return stats_; }
-  /// The acceleration in grid steps per game step squared (a whole number >= 1).
+  /// The acceleration in velocity units per step (a whole number >= 1).
   int accel_steps() const { return accel_steps_; }
 
   std::size_t num_velocities() const { return velocities_.size(); }
-  /// Velocity v in grid steps per game step (resolution / step_time() m/s each); index 0
-  /// is standing still.
+  /// Velocity v in units of resolution / step (SemiImplicit) or 2 resolution / step
+  /// (ConstantAcceleration) m/s; index 0 is standing still.
   std::array<int, 2> velocity(std::uint32_t v) const { return velocities_[v]; }
+  /// The velocity's unit, m/s.
+  double velocity_unit() const { return unit_; }
 
   /// Steps in which the target forces a loss from (observer o moving at v, target t), the
   /// target to move; 0 if lost already, kForever if kept forever. Escape times longer than
   /// 253 steps read 253.
   std::uint32_t escape_steps(std::uint32_t o, std::uint32_t v, std::uint32_t t) const;
   bool keeps(std::uint32_t o, std::uint32_t v, std::uint32_t t) const { return escape_steps(o, v, t) == kForever; }
-  /// Where velocity v' carries the observer from o (kNone: not a free straight move).
-  std::uint32_t destination(std::uint32_t o, std::uint32_t v) const { return dest_[static_cast<std::size_t>(o) * velocities_.size() + v]; }
+  /// Where the observer at o moving at v goes when it chooses w, one of v's next
+  /// velocities (kNone: not an allowed move, or w not one of them).
+  std::uint32_t destination(std::uint32_t o, std::uint32_t v, std::uint32_t w) const {
+    if (v >= velocities_.size() || w >= velocities_.size()) return kNone;
+    const std::uint32_t e = edge_of_[static_cast<std::size_t>(v) * velocities_.size() + w];
+    return e == kNone ? kNone : dest_[static_cast<std::size_t>(o) * next_.size() + e];
+  }
   /// The velocities the observer at velocity v may choose next (v + a, within reach).
   std::span<const std::uint32_t> next_velocities(std::uint32_t v) const;
 
@@ -93,8 +118,10 @@ class DynamicVisibilityGame {
   DynamicGameStats stats_;
   int accel_steps_ = 1;
   std::vector<std::array<int, 2>> velocities_;
-  std::vector<std::uint32_t> next_begin_, next_;  // CSR: velocities reachable in one step
-  std::vector<std::uint32_t> dest_, src_;         // per (point, velocity): o + v, and the o with o + v = point
+  double unit_ = 0;
+  std::vector<std::uint32_t> next_begin_, next_;  // CSR: velocities reachable in one step; its entries are the edges
+  std::vector<std::uint32_t> edge_of_;            // per (v, w): the edge v -> w, kNone if w is not next to v
+  std::vector<std::uint32_t> dest_, src_;         // per (point, edge v -> w): where it goes, and where it comes from
   std::vector<std::uint8_t> level_;               // per state: escape steps, 255 forever
 };
 

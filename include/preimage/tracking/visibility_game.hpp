@@ -18,6 +18,7 @@
 #pragma once
 #include <preimage/geometry/environment.hpp>
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -42,6 +43,11 @@ struct GameParams {
   /// that no observer kept off it by the separation can see round it: at 0.1 m the lab's
   /// 0.3 m chairs made every state a loss.
   double target_radius = 0.2;
+  /// Seconds per step; 0: the target's one diagonal grid step (resolution * sqrt 2) over
+  /// its speed. Longer steps let each player move farther (the game with the observer's
+  /// velocity in the state needs the step its acceleration makes whole, see
+  /// DynamicVisibilityGame::constant_acceleration_step).
+  double step_time = 0;
   unsigned threads = 0;          // 0: one per hardware thread
   std::size_t max_states = 200'000'000;  // more (observer, target) pairs than this (or 2^32 - 1): InputError (6 bytes each)
   /// Called with the share of the work done (0..1), from one thread at a time: the sight
@@ -74,7 +80,8 @@ class VisibilityGame {
   const GameParams& params() const { return params_; }
   const GameStats& stats() const { return stats_; }
   /// Seconds per step: the target's reach (one diagonal grid step, resolution * sqrt 2)
-  /// over its speed. The observer's reach is speed * step = target reach / speed ratio.
+  /// over its speed, unless GameParams::step_time sets it. The reaches are the speeds
+  /// times the step.
   double step_time() const { return step_; }
   double target_reach() const { return target_reach_; }
   double observer_reach() const { return observer_reach_; }
@@ -86,6 +93,11 @@ class VisibilityGame {
   std::uint32_t nearest(const Point& p) const { return nearest_where(p, false); }
   std::uint32_t nearest_target(const Point& p) const { return nearest_where(p, true); }
   bool target_may_stand(std::uint32_t i) const { return target_ok_[i] != 0; }
+  /// The grid offset (di, dj) of point j from point i, in grid steps (exact: both lie on
+  /// the grid).
+  std::array<int, 2> offset(std::uint32_t i, std::uint32_t j) const;
+  /// The environment's vertices (for tests of regions the moves sweep).
+  const std::vector<Point>& environment_vertices() const { return vertices_; }
 
   /// Where each player may go in one step from point i (i itself first; the target only
   /// between points where it may stand, none from elsewhere).
@@ -120,6 +132,7 @@ class VisibilityGame {
   double x0_ = 0, y0_ = 0;           // grid origin (the environment's lower-left corner)
   std::int64_t columns_ = 0, rows_ = 0;
   std::vector<Point> points_;
+  std::vector<Point> vertices_;               // the environment's
   std::vector<std::uint32_t> cell_to_point_;  // row-major grid cell -> point, kNoPoint where not free
   std::vector<char> target_ok_;               // per point: the target's disc fits there
   std::vector<std::uint32_t> observer_moves_, target_moves_;              // CSR lists
