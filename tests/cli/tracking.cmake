@@ -93,6 +93,8 @@ cli_test(track_game_box_constant_acceleration 0
 cli_test(track_game_lab_constant_acceleration 0
          "^start with dynamics: the target escapes within 10 steps \\(14.14 s\\) against every observer starting at rest$" -
          track game ${TRACKING}/lab.json --resolution 0.5 --accel 0.5 --observer-step constant-acceleration)
+cli_test(track_game_constant_acceleration_too_short fail "the target moves at most 0.05.* m, less than one grid step" -
+         track game ${TRACKING}/box.json --accel 50 --observer-step constant-acceleration)
 cli_test(track_game_bad_observer_step fail "--observer-step: .*euler" - track game ${TRACKING}/box.json --accel 0.5 --observer-step euler)
 cli_test(track_game_zero_resolution fail "--resolution: expected a number in" - track game ${TRACKING}/box.json --resolution 0)
 cli_test(track_game_huge_grid fail "game: .* states, more than the limit" - track game ${TRACKING}/box.json --resolution 0.01)

@@ -412,4 +412,39 @@ TEST(DynamicVisibilityGame, ConstantAccelerationRefusesAStepTheAccelerationDoesN
   EXPECT_DOUBLE_EQ(ok->observer_reach(), 2.0);
   p.step_time = -1;
   EXPECT_THROW(VisibilityGame(env, p), InputError);
+  p.step_time = 0.5;  // the target would move 0.25 m, half a grid step: it could not move at all
+  EXPECT_THROW(VisibilityGame(env, p), InputError);
+}
+
+// The constant-acceleration game of a plan moved by an exact offset (coordinates in
+// eighths of a metre) has the same moves and values, state for state: the hull test
+// compares grid points and vertices that move together.
+TEST(DynamicVisibilityGame, ConstantAccelerationGivesTheSameAnswersWhereverThePlanSits) {
+  auto room = [](double d) {
+    auto at = [d](double x, double y) { return Point(x + d, y + d); };
+    return Environment::make({at(0, 0), at(4.5, 0), at(4.5, 3), at(0, 3)},
+                             {{at(1.875, 0.5), at(2.5, 0.5), at(2.5, 1.125), at(1.875, 1.125)},
+                              {at(3.625, 2.125), at(3.75, 2.125), at(3.75, 2.25), at(3.625, 2.25)}});
+  };
+  GameParams p;
+  p.resolution = 0.5;
+  p.range = std::numeric_limits<double>::infinity();
+  DynamicGameParams dp;
+  dp.accel = 0.25;
+  dp.step = ObserverStep::ConstantAcceleration;
+  const Environment here = room(0);
+  const DynamicVisibilityGame origin(constant_acceleration_base(here, p, dp.accel), dp);
+  ASSERT_GT(origin.stats().winning, 0u);
+  ASSERT_LT(origin.stats().winning, origin.stats().seen);
+  const std::size_t n = origin.game().num_points(), V = origin.num_velocities();
+  for (double d : {5e5, 4e6, 2e7, 1e10, 1e12 - 16}) {
+    const Environment there = room(d);
+    const DynamicVisibilityGame moved(constant_acceleration_base(there, p, dp.accel), dp);
+    ASSERT_EQ(moved.game().num_points(), n) << d;
+    for (std::uint32_t o = 0; o < n; ++o)
+      for (std::uint32_t v = 0; v < V; ++v) {
+        for (std::uint32_t w = 0; w < V; ++w) ASSERT_EQ(moved.destination(o, v, w), origin.destination(o, v, w)) << d;
+        for (std::uint32_t t = 0; t < n; ++t) ASSERT_EQ(moved.escape_steps(o, v, t), origin.escape_steps(o, v, t)) << d;
+      }
+  }
 }
