@@ -296,7 +296,8 @@ void run_evaluate(const std::vector<std::string>& files, const EvaluationParams&
                   {"escape_times", c.escape_times}};
       if (c.game_resolution > 0) {
         std::vector<int> w(c.winnable.begin(), c.winnable.end());
-        row["game"] = {{"resolution", c.game_resolution}, {"winnable_runs", c.winnable_runs}, {"kept_winnable", c.kept_winnable},
+        row["game"] = {{"resolution", c.game_resolution}, {"observer_dynamics", c.observer_dynamics},
+                       {"winnable_runs", c.winnable_runs}, {"kept_winnable", c.kept_winnable},
                        {"kept_winnable_fraction", iv(c.kept_winnable_fraction)}, {"game_policy_kept_on_grid", c.grid_kept},
                        {"winnable", w}};
       }
@@ -310,7 +311,8 @@ void run_evaluate(const std::vector<std::string>& files, const EvaluationParams&
     json out = {{"seeds", ep.seeds}, {"steps", ep.steps}, {"accel", ep.accel}, {"alpha", ep.alpha},
                 {"start_spread", ep.start_spread}, {"heading_spread_degrees", ep.heading_spread * 180 / M_PI},
                 {"speed_ratio", ep.speed_ratio}, {"lookahead_steps", ep.lookahead_steps},
-                {"lookahead_headings", ep.lookahead_headings}, {"game_resolution", ep.game_resolution}, {"cells", rows}};
+                {"lookahead_headings", ep.lookahead_headings}, {"game_resolution", ep.game_resolution},
+                {"dynamic_game_resolution", ep.dynamic_game_resolution}, {"cells", rows}};
     print_json(out);
     return;
   }
@@ -328,7 +330,9 @@ void run_evaluate(const std::vector<std::string>& files, const EvaluationParams&
   for (std::size_t i = 0; i < cells.size(); i += ep.strategies.size()) {
     const CellResult& c = cells[i];
     std::cout << "| " << c.scene << " | " << c.fov << "° | " << (c.dynamics ? "yes" : "no") << " | " << to_string(c.policy) << " |";
-    if (game) std::cout << " " << c.winnable_runs << "/" << c.escape_times.size() << " | " << c.grid_kept << "/" << c.winnable_runs << " |";
+    if (game)
+      std::cout << " " << c.winnable_runs << "/" << c.escape_times.size() << (c.observer_dynamics ? " (with dynamics)" : "") << " | "
+                << c.grid_kept << "/" << c.winnable_runs << " |";
     std::string tv;
     for (Strategy s : ep.strategies) {
       const CellResult* x = find(i, s);
@@ -348,9 +352,15 @@ void run_evaluate(const std::vector<std::string>& files, const EvaluationParams&
   std::cout << "(" << ep.seeds << " seeds per cell, " << ep.steps / 10.0 << " s each; a run never lost counts "
             << ep.steps / 10.0 << " s; starts spread " << ep.start_spread << " m and " << ep.heading_spread * 180 / M_PI
             << " deg; dynamics: accel " << ep.accel << " m/s^2, alpha " << ep.alpha << " rad/s^2";
-  if (game)
+  const auto dyn = std::find_if(cells.begin(), cells.end(), [](const CellResult& c) { return c.observer_dynamics; });
+  if (game) {
     std::cout << "; winnable: the start, snapped to the visibility game's " << ep.game_resolution
-              << " m grid, is kept forever in the game at speed ratio " << ep.speed_ratio << ")\n";
+              << " m grid, is kept forever in the game at speed ratio " << ep.speed_ratio;
+    if (dyn != cells.end())
+      std::cout << "; with dynamics, in the game with the observer's velocity in the state (constant acceleration "
+                << ep.accel << " m/s^2 per axis, at rest at the start) on a " << dyn->game_resolution << " m grid";
+    std::cout << ")\n";
+  }
   else
     std::cout << ")\n";
 }
@@ -756,6 +766,10 @@ void add_track_commands(CLI::App& app) {
   v->add_option("--strategy", v_strategies, "Strategies (default: risk,sde,naive; also game, risk-game)")->delimiter(',');
   v->add_option("--game-resolution", ep.game_resolution,
                 "Grid of the visibility game that says which starts are winnable, m (0: no game)")
+      ->check(number_in(0, 100))->capture_default_str();
+  v->add_option("--dynamic-game-resolution", ep.dynamic_game_resolution,
+                "With dynamics, the starts are judged in the game with the observer's velocity in the state, on a grid this coarse "
+                "at least, m (0: in the game without dynamics)")
       ->check(number_in(0, 100))->capture_default_str();
   v->add_option("--speed-ratio", ep.speed_ratio, "Adversarial and lookahead target speed / observer top speed")
       ->check(number_in(0, 10, true))->capture_default_str();

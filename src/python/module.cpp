@@ -283,6 +283,8 @@ PYBIND11_MODULE(preimage, m) {
   m.def("track_game", [](const geometry::Environment& env, double resolution, double speed_ratio, double range, double separation,
                          double target_radius, const py::object& observer, const py::object& target, double accel,
                          const std::string& observer_step) {
+    if (observer_step != "semi-implicit" && observer_step != "constant-acceleration")
+      throw InputError("observer_step: expected semi-implicit or constant-acceleration, got \"" + observer_step + "\"");
     tracking::GameParams p;
     p.resolution = resolution;
     p.speed_ratio = speed_ratio;
@@ -292,8 +294,6 @@ PYBIND11_MODULE(preimage, m) {
     const auto shared = std::make_shared<const tracking::VisibilityGame>(env, p);
     const tracking::VisibilityGame& g = *shared;
     std::optional<tracking::DynamicVisibilityGame> dyn;
-    if (observer_step != "semi-implicit" && observer_step != "constant-acceleration")
-      throw InputError("observer_step: expected semi-implicit or constant-acceleration, got \"" + observer_step + "\"");
     if (accel > 0) {
       tracking::DynamicGameParams dp;
       dp.accel = accel;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <preimage/error.hpp>
 #include <preimage/render/svg.hpp>
+#include <preimage/tracking/dynamic_visibility_game.hpp>
 #include <preimage/tracking/evaluation.hpp>
 
 #include <algorithm>
@@ -129,6 +130,35 @@ std::vector<CellResult> evaluate(const std::vector<TrackingScenario>& scenarios,
   } else if (wants_game) {
     throw InputError("the game strategies and the game target need the game (a game resolution above 0)");
   }
+  // With dynamics: the game with the observer's velocity in the state, the robot's own
+  // step, the same point target; one per scene.
+  std::vector<std::shared_ptr<const DynamicVisibilityGame>> dynamic_games(scenarios.size());
+  if (ep.game_resolution > 0 && ep.dynamic_game_resolution > 0 && ep.accel > 0 &&
+      std::find(ep.dynamics.begin(), ep.dynamics.end(), true) != ep.dynamics.end()) {
+    const double h = std::max(ep.game_resolution, ep.dynamic_game_resolution);
+    for (std::size_t s = 0; s < scenarios.size(); ++s) {
+      SimulationParams probe;
+      probe.speed_ratio = ep.speed_ratio;
+      GameParams gp = game_params(scenarios[s], probe, h);
+      gp.step_time = DynamicVisibilityGame::constant_acceleration_step(h, ep.accel);
+      gp.threads = static_cast<unsigned>(std::max<std::size_t>(ep.jobs, 1));
+      DynamicGameParams dp;
+      dp.accel = ep.accel;
+      dp.step = ObserverStep::ConstantAcceleration;
+      dp.threads = gp.threads;
+      try {
+        dynamic_games[s] = std::make_shared<const DynamicVisibilityGame>(
+            std::make_shared<const VisibilityGame>(*scenarios[s].environment, gp), dp);
+      } catch (const InputError& e) {
+        throw InputError(scenarios[s].name + ", the game with dynamics: " + e.what());
+      }
+    }
+    for (auto& c : cells)
+      if (c.dynamics) {
+        c.game_resolution = h;
+        c.observer_dynamics = true;
+      }
+  }
   std::vector<double> var_v(cells.size() * ep.seeds), var_w(cells.size() * ep.seeds);
   std::vector<char> grid_kept(cells.size() * ep.seeds, 0);
   const std::size_t total = cells.size() * ep.seeds;
@@ -162,7 +192,22 @@ std::vector<CellResult> evaluate(const std::vector<TrackingScenario>& scenarios,
         p.game = games[scenario_of[ci]];
         const SimulationResult r = simulate(scenarios[scenario_of[ci]], p);
         c.escape_times[seed - 1] = r.escape_time >= 0 ? r.escape_time : horizon;  // distinct slots: no lock
-        if (p.game) {
+        if (c.observer_dynamics) {
+          // The start with the observer at rest; the game's policies against each other.
+          const DynamicVisibilityGame& d = *dynamic_games[scenario_of[ci]];
+          const VisibilityGame& g = d.game();
+          std::uint32_t o = g.nearest(r.observer.front().position), t = g.nearest_target(r.target.front()), v = 0;
+          const bool win = o != VisibilityGame::kNoPoint && t != VisibilityGame::kNoPoint && d.keeps(o, v, t);
+          c.winnable[seed - 1] = win;
+          bool kept = win;
+          for (std::size_t k = 0, steps = static_cast<std::size_t>(std::ceil(horizon / g.step_time())); kept && k < steps; ++k) {
+            t = d.target_policy(o, v, t);
+            const std::uint32_t w = d.observer_policy(o, v, t);
+            kept = w != DynamicVisibilityGame::kNone;
+            if (kept) o = d.destination(o, v, w), v = w, kept = d.escape_steps(o, v, t) != 0;
+          }
+          grid_kept[i] = kept;
+        } else if (p.game) {
           const VisibilityGame& g = *p.game;
           const std::uint32_t go = g.nearest(r.observer.front().position), gt = g.nearest_target(r.target.front());
           const bool win = go != VisibilityGame::kNoPoint && gt != VisibilityGame::kNoPoint && g.keeps(go, gt);

@@ -52,8 +52,9 @@ VisibilityGame::VisibilityGame(const geometry::Environment& env, const GameParam
   step_ = target_reach_ / (p.speed_ratio * p.observer_speed);
   observer_reach_ = target_reach_ / p.speed_ratio;
   if (target_reach_ < h)  // only with a given step: the usual one reaches a diagonal step
-    throw InputError("game: in a step of " + std::to_string(step_) + " s the target moves at most " + std::to_string(target_reach_) +
-                     " m, less than one grid step (" + std::to_string(h) + " m): it could not move on the grid; choose a longer step or a finer grid");
+    throw InputError("game: in a step of " + std::to_string(step_) + " s the target moves at most " +
+                     std::to_string(target_reach_) + " m, less than one grid step (" + std::to_string(h) +
+                     " m): it could not move on the grid; choose a longer step or a finer grid");
   const double target_r2 = p.step_time > 0 ? (target_reach_ / h) * (target_reach_ / h) * (1 + 1e-12) : 2.0;
   const double observer_r2 = (p.step_time > 0 ? (observer_reach_ / h) * (observer_reach_ / h) : 2.0 / (p.speed_ratio * p.speed_ratio)) * (1 + 1e-12);
 

@@ -31,9 +31,14 @@ cli_test(track_ept_huge_m fail "--m: expected an integer from 0 to 16, got 21474
 cli_test(track_ept_negative_m fail "--m: expected an integer from 0 to 16, got -1" - track ept ${TRACKING}/box.json --m -1)
 cli_test(track_ept_bad_radius fail "--radius: expected a number in \\(0, 100\\], got -0.2" - track ept ${TRACKING}/box.json --radius -0.2)
 cli_test(track_simulate_no_slot fail "the scene has no \"tracking\" slot" - track simulate ${EXAMPLES}/gallery.json)
-cli_test(track_evaluate 0 "^\\| cardboard box \\(Fig. 6b\\) \\| 180° \\| yes \\| lookahead \\| [0-2]/2 \\| [0-2]/[0-2] \\| [0-2]/2, " - track evaluate ${TRACKING}/box.json --seeds 2 --steps 20 --game-resolution 0.5 --headings 4 --lookahead-steps 2)
+cli_test(track_evaluate 0 "^\\| cardboard box \\(Fig. 6b\\) \\| 180° \\| yes \\| lookahead \\| [0-2]/2 \\(with dynamics\\) \\| [0-2]/[0-2] \\| [0-2]/2, " - track evaluate ${TRACKING}/box.json --seeds 2 --steps 20 --game-resolution 0.5 --headings 4 --lookahead-steps 2)
 cli_test(track_evaluate_json 0 "\"minus_sde\":\\{" - track evaluate ${TRACKING}/box.json --seeds 2 --steps 20 --game-resolution 0.5 --fov 360 --dynamics off --target-policy adversarial --json)
 cli_test(track_evaluate_cdf 0 "^\\| cardboard box" ${OUT}/cdf.svg track evaluate ${TRACKING}/box.json --seeds 2 --steps 20 --game-resolution 0.5 --fov 180 --dynamics on --target-policy random,adversarial --strategy risk,sde --cdf-svg ${OUT}/cdf.svg)
+# With dynamics the starts are judged with the observer's velocity in the state; 0 turns that off.
+cli_test(track_evaluate_dynamic_game_json 0 "\"observer_dynamics\":true,\"resolution\":0.5,\"winnable\":\\[0,0\\]" -
+         track evaluate ${TRACKING}/box.json --seeds 2 --steps 20 --game-resolution 0.5 --fov 360 --dynamics on --target-policy adversarial --strategy risk --json)
+cli_test(track_evaluate_dynamic_game_off 0 "^\\| cardboard box \\(Fig. 6b\\) \\| 360° \\| yes \\| adversarial \\| [0-2]/2 \\| " -
+         track evaluate ${TRACKING}/box.json --seeds 2 --steps 20 --game-resolution 0.5 --dynamic-game-resolution 0 --fov 360 --dynamics on --target-policy adversarial --strategy risk)
 cli_test(track_evaluate_zero_seeds fail "--seeds: expected an integer from 1 to 10000, got 0" - track evaluate ${TRACKING}/box.json --seeds 0)
 cli_test(track_evaluate_too_many_seeds fail "--seeds: expected an integer from 1 to 10000, got 10001" - track evaluate ${TRACKING}/box.json --seeds 10001)
 cli_test(track_evaluate_negative_steps fail "--steps: expected an integer from 1 to 1000000, got -5" - track evaluate ${TRACKING}/box.json --steps -5)

@@ -141,6 +141,48 @@ TEST(TrackingSimulation, RunsAreConsistentAndStayInFreeSpace) {
   }
 }
 
+// With dynamics the acceleration is bounded as a vector: between two periods the
+// executed world-frame velocity changes by at most accel dt, turning at speed included,
+// for the unicycles (risk, sde) and the holonomic game strategy alike; and the bound is
+// what limits them (without it the risk controller's velocity turns faster).
+TEST(TrackingSimulation, WithDynamicsTheWorldFrameAccelerationIsBounded) {
+  const scene::Scene sc = scene::load_scene(example("lab.json"));
+  const TrackingScenario scenario = TrackingScenario::from_scene(sc);
+  auto largest_change = [&](Strategy strategy, double accel, std::uint64_t seed) {
+    SimulationParams p;
+    p.strategy = strategy;
+    p.policy = TargetPolicy::Adversarial;
+    p.steps = 150;
+    p.seed = seed;
+    p.start_spread = 0.5;
+    p.accel = accel;
+    p.alpha = 1.5;
+    if (strategy == Strategy::Game) p.game = std::make_shared<const VisibilityGame>(*scenario.environment, game_params(scenario, p, 0.5));
+    std::vector<Vec2> w;
+    p.on_step = [&](const StepRecord& r) {
+      // The velocity executed this period, in the world frame at the heading it ends on.
+      const double th = r.observer.heading + r.velocity.omega * p.dt;
+      w.push_back(Vec2{std::cos(th) * r.velocity.v - std::sin(th) * r.velocity.lateral,
+                       std::sin(th) * r.velocity.v + std::cos(th) * r.velocity.lateral});
+    };
+    simulate(scenario, p);
+    double most = 0;
+    for (std::size_t i = 1; i < w.size(); ++i) {
+      const bool collision = w[i].norm() == 0 && w[i - 1].norm() > accel * p.dt;  // a blocked move stops dead
+      if (!collision) most = std::max(most, (w[i] - w[i - 1]).norm());
+    }
+    EXPECT_GT(w.size(), 20u);
+    return most;
+  };
+  for (std::uint64_t seed : {1, 2, 3})
+    for (Strategy s : {Strategy::Risk, Strategy::Sde, Strategy::Game}) EXPECT_LE(largest_change(s, 0.5, seed), 0.05 + 1e-9) << seed;
+  // The bound bites: with a looser one (5 m/s^2, still turning at most 1.5 rad/s^2) risk's
+  // velocity turns by more than 0.05 m/s in some period.
+  double loose = 0;
+  for (std::uint64_t seed : {1, 2, 3}) loose = std::max(loose, largest_change(Strategy::Risk, 5, seed));
+  EXPECT_GT(loose, 0.05);
+}
+
 TEST(TrackingSimulation, TheObserverFollowsAScriptedTargetRoundTheCorridor) {
   // The target walks 31 m round two corners at 0.6 m/s; TRACK must keep it in sight.
   const scene::Scene sc = scene::load_scene(example("corridor.json"));

@@ -5,6 +5,7 @@
 #include <preimage/geometry/queries.hpp>
 #include <preimage/scene/scene.hpp>
 #include <preimage/tracking/evaluation.hpp>
+#include <preimage/tracking/dynamic_visibility_game.hpp>
 #include <preimage/tracking/visibility_game.hpp>
 
 #include <gtest/gtest.h>
@@ -354,6 +355,58 @@ TEST(GameStrategy, EvaluationCountsWinnableStartsAndTheGridPolicyKeepsThemAll) {
     EXPECT_LE(c.kept_winnable, c.winnable_runs);
     EXPECT_EQ(c.winnable, cells.front().winnable);  // the same starts for every strategy
   }
+}
+
+// With dynamics the evaluation judges each start in the game with the observer's
+// velocity in the state (the robot's own constant-acceleration step, at rest at the
+// start), the same starts for every strategy, and that game's own policies keep every
+// start it calls winnable on its grid; the cells without dynamics keep the game without.
+TEST(GameStrategy, WithDynamicsTheEvaluationJudgesStartsWithTheObserversVelocity) {
+  const auto sc = scene::load_scene(std::string(PREIMAGE_EXAMPLES) + "/tracking/box.json");
+  const TrackingScenario scenario = TrackingScenario::from_scene(sc);
+  EvaluationParams ep;
+  ep.seeds = 6;
+  ep.steps = 30;
+  ep.fovs = {360};
+  ep.dynamics = {false, true};
+  ep.policies = {TargetPolicy::Adversarial};
+  ep.strategies = {Strategy::Risk};
+  ep.game_resolution = 0.5;
+  ep.dynamic_game_resolution = 0.5;
+  ep.accel = 1;  // a 1 s step at 0.5 m: the target may move one grid step
+  ep.jobs = 2;
+  const auto cells = evaluate({scenario}, ep);
+  ASSERT_EQ(cells.size(), 2u);
+  EXPECT_FALSE(cells[0].observer_dynamics);
+  ASSERT_TRUE(cells[1].observer_dynamics);
+  EXPECT_EQ(cells[1].game_resolution, 0.5);
+  // The same game, solved here: a point target, as the evaluation's.
+  SimulationParams p;
+  p.policy = TargetPolicy::Adversarial;
+  p.steps = 1;
+  p.start_spread = ep.start_spread;
+  p.heading_spread = ep.heading_spread;
+  GameParams gp = game_params(scenario, p, 0.5);
+  gp.step_time = DynamicVisibilityGame::constant_acceleration_step(0.5, ep.accel);
+  DynamicGameParams dp;
+  dp.accel = ep.accel;
+  dp.step = ObserverStep::ConstantAcceleration;
+  const DynamicVisibilityGame d(std::make_shared<const VisibilityGame>(*scenario.environment, gp), dp);
+  std::size_t winnable = 0;
+  for (std::uint64_t seed = 1; seed <= ep.seeds; ++seed) {
+    p.seed = seed;
+    const SimulationResult r = simulate(scenario, p);
+    const bool win = d.keeps(d.game().nearest(r.observer.front().position), 0, d.game().nearest_target(r.target.front()));
+    EXPECT_EQ(cells[1].winnable[seed - 1] != 0, win) << "seed " << seed;
+    winnable += win;
+  }
+  EXPECT_GT(winnable, 0u);
+  EXPECT_EQ(cells[1].winnable_runs, winnable);
+  EXPECT_EQ(cells[1].grid_kept, winnable);  // the game's own policies, on its own grid
+  // At the evaluation's 0.5 m/s^2 the same starts are all lost: the point target hugs the box.
+  ep.accel = 0.5;
+  ep.dynamics = {true};
+  EXPECT_EQ(evaluate({scenario}, ep).front().winnable_runs, 0u);
 }
 
 TEST(VisibilityGame, GivesTheSameAnswersWhereverThePlanSits) {

@@ -38,6 +38,15 @@ struct EvaluationParams {
   /// default: at 0.25 m the game keeps lab starts the continuous adversary wins (19 of 20
   /// starts winnable, 10 of 20 at 0.125 m), and its policy loses the box's winnable starts.
   double game_resolution = 0.125;
+  /// Cells with dynamics judge their starts in the game with the observer's velocity in
+  /// the state instead (DynamicVisibilityGame with ObserverStep::ConstantAcceleration: a
+  /// holonomic robot accelerating at most `accel` per axis, at rest at the start, which
+  /// can do whatever the simulated robots do, their acceleration being bounded by accel
+  /// as a vector), with the same point target, on a grid of max(game_resolution,
+  /// dynamic_game_resolution) m (the lab at 0.125 m would take 3 G states). The game
+  /// without dynamics changes the observer's velocity at once, so its winnable starts
+  /// need not be winnable with dynamics. 0: the game without dynamics for every cell.
+  double dynamic_game_resolution = 0.25;
   /// Called while each scene's game is solved: the scene's name and the share done.
   std::function<void(const std::string&, double)> game_progress;
 };
@@ -66,6 +75,10 @@ struct CellResult {
   /// the game's own policy keeps, played on its grid against the game's optimal target
   /// for the horizon (a check of the solver: it must be all of them).
   double game_resolution = 0;  // 0: no game in this evaluation
+  /// The starts were judged with the observer's velocity in the state (a cell with
+  /// dynamics, EvaluationParams::dynamic_game_resolution > 0), on a grid of
+  /// game_resolution m; "the game's policy on its grid" is then that game's.
+  bool observer_dynamics = false;
   std::vector<char> winnable;
   std::size_t winnable_runs = 0, kept_winnable = 0, grid_kept = 0;
   Interval kept_winnable_fraction;

@@ -90,7 +90,10 @@ struct SimulationParams {
   LaserSpec laser{2 * M_PI, 360, 8.0, 0.01};
   TrackerParams tracker;         // its detection radius and risk delta come from the scenario's target
   /// Observer dynamics: the executed (v, omega) moves towards the command by at most
-  /// accel dt and alpha dt per period (m/s^2, rad/s^2); 0 leaves that bound off.
+  /// accel dt and alpha dt per period (m/s^2, rad/s^2); 0 leaves that bound off. accel
+  /// bounds the acceleration as a vector: the change of the world-frame velocity in a
+  /// period, turning at speed included (v omega), is at most accel dt; where the command
+  /// would exceed it, the changes of speed and turn rate are scaled back together.
   double accel = 0, alpha = 0;
   std::size_t lookahead_headings = 8, lookahead_steps = 5;
   /// Each seed starts the observer and the target up to start_spread metres off the
