@@ -406,16 +406,10 @@ void run_game(const std::string& file, const GameOptions& o) {
     DynamicGameParams dp;
     dp.accel = o.accel;
     dp.threads = gp.threads;
-    if (o.observer_step == "constant-acceleration") {
-      // Its own step, the one the acceleration makes whole: the same grid, longer moves.
-      dp.step = ObserverStep::ConstantAcceleration;
-      GameParams slow = gp;
-      slow.step_time = DynamicVisibilityGame::constant_acceleration_step(gp.resolution, o.accel);
-      slow.progress = {};
-      dyn.emplace(std::make_shared<const VisibilityGame>(env, slow), dp);
-    } else {
-      dyn.emplace(shared, dp);
-    }
+    if (o.observer_step == "constant-acceleration") dp.step = ObserverStep::ConstantAcceleration;
+    GameParams quiet = gp;  // a second solve (its own step) does not redraw the progress line
+    quiet.progress = {};
+    dyn.emplace(DynamicVisibilityGame::base_game(env, quiet, dp, shared), dp);
   }
   progress.reset();  // erase the status line before the answer
   auto snap = [&](const Point& p, const char* flag) {

@@ -297,14 +297,8 @@ PYBIND11_MODULE(preimage, m) {
     if (accel > 0) {
       tracking::DynamicGameParams dp;
       dp.accel = accel;
-      if (observer_step == "constant-acceleration") {
-        dp.step = tracking::ObserverStep::ConstantAcceleration;
-        tracking::GameParams slow = p;
-        slow.step_time = tracking::DynamicVisibilityGame::constant_acceleration_step(resolution, accel);
-        dyn.emplace(std::make_shared<const tracking::VisibilityGame>(env, slow), dp);
-      } else {
-        dyn.emplace(shared, dp);
-      }
+      if (observer_step == "constant-acceleration") dp.step = tracking::ObserverStep::ConstantAcceleration;
+      dyn.emplace(tracking::DynamicVisibilityGame::base_game(env, p, dp, shared), dp);
     }
     const auto& st = g.stats();
     py::dict d;

@@ -216,6 +216,16 @@ DynamicVisibilityGame::DynamicVisibilityGame(std::shared_ptr<const VisibilityGam
   stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+std::shared_ptr<const VisibilityGame> DynamicVisibilityGame::base_game(const geometry::Environment& env, GameParams game,
+                                                                       const DynamicGameParams& params,
+                                                                       std::shared_ptr<const VisibilityGame> solved) {
+  if (params.step == ObserverStep::ConstantAcceleration) {
+    game.step_time = constant_acceleration_step(game.resolution, params.accel);
+    return std::make_shared<const VisibilityGame>(env, game);
+  }
+  return solved ? solved : std::make_shared<const VisibilityGame>(env, game);
+}
+
 std::span<const std::uint32_t> DynamicVisibilityGame::next_velocities(std::uint32_t v) const {
   return {next_.data() + next_begin_[v], next_.data() + next_begin_[v + 1]};
 }

@@ -140,7 +140,6 @@ std::vector<CellResult> evaluate(const std::vector<TrackingScenario>& scenarios,
       SimulationParams probe;
       probe.speed_ratio = ep.speed_ratio;
       GameParams gp = game_params(scenarios[s], probe, h);
-      gp.step_time = DynamicVisibilityGame::constant_acceleration_step(h, ep.accel);
       gp.threads = static_cast<unsigned>(std::max<std::size_t>(ep.jobs, 1));
       DynamicGameParams dp;
       dp.accel = ep.accel;
@@ -148,7 +147,7 @@ std::vector<CellResult> evaluate(const std::vector<TrackingScenario>& scenarios,
       dp.threads = gp.threads;
       try {
         dynamic_games[s] = std::make_shared<const DynamicVisibilityGame>(
-            std::make_shared<const VisibilityGame>(*scenarios[s].environment, gp), dp);
+            DynamicVisibilityGame::base_game(*scenarios[s].environment, gp, dp), dp);
       } catch (const InputError& e) {
         throw InputError(scenarios[s].name + ", the game with dynamics: " + e.what());
       }

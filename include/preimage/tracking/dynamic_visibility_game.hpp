@@ -70,6 +70,12 @@ class DynamicVisibilityGame {
   /// The step (s) for ObserverStep::ConstantAcceleration at this resolution: accel *
   /// step^2 = 2 resolution (set it as GameParams::step_time).
   static double constant_acceleration_step(double resolution, double accel) { return std::sqrt(2 * resolution / accel); }
+  /// The game to build it on, for these params: with the semi-implicit step, `solved` if
+  /// given (it must be `game` solved on `env`), else `game` solved here; with the constant
+  /// acceleration, `game` solved with the step the acceleration makes whole.
+  static std::shared_ptr<const VisibilityGame> base_game(const geometry::Environment& env, GameParams game,
+                                                         const DynamicGameParams& params,
+                                                         std::shared_ptr<const VisibilityGame> solved = nullptr);
 
   const VisibilityGame& game() const { return *game_; }
   const DynamicGameParams& params() const { return params_; }
