@@ -444,6 +444,7 @@ struct CoverArgs {
   std::uint64_t seed = 1;
   double min_turn_radius = 0;
   double turn_cost = 0.1;
+  bool no_merge = false;
 };
 
 // cover --online: the robot does not know the map (6.2.4).
@@ -550,6 +551,8 @@ void run_cover(const CoverArgs& a) {
   o.pattern = *coverage::parse_pattern(a.pattern);
   o.min_turn_radius = a.min_turn_radius;
   o.turn_cost = a.turn_cost;
+  o.merge_cells = !a.no_merge;
+  if (a.no_merge && o.pattern != coverage::Pattern::Boustrophedon) throw InputError("--no-merge: only the boustrophedon pattern merges cells");
   if (o.pattern != coverage::Pattern::Boustrophedon) {
     if (a.angle != "auto") throw InputError("--angle: only the boustrophedon pattern has a sweep direction");
     if (a.order != "optimised" || a.transit != "shortest")
@@ -601,7 +604,7 @@ void run_cover(const CoverArgs& a) {
     print_json({{"pattern", a.pattern}, {"center", centre}, {"width", rep.width}, {"robot_radius", rep.robot_radius}, {"angle", rep.angle},
                 {"order", o.pattern == coverage::Pattern::Boustrophedon ? a.order : "dfs"}, {"transit", a.transit},
                 {"length", rep.length}, {"transit_length", rep.transit_length}, {"laps", rep.laps}, {"turns", rep.turns},
-                {"turns_over_15_deg", rep.sharp_turns}, {"rotation_deg", rep.rotation_deg}, {"cells", rep.cells}, {"turned_cells", rep.turned_cells}, {"critical_points", rep.critical_points},
+                {"turns_over_15_deg", rep.sharp_turns}, {"rotation_deg", rep.rotation_deg}, {"cells", rep.cells}, {"turned_cells", rep.turned_cells}, {"merged_cells", rep.merged_cells}, {"critical_points", rep.critical_points},
                 {"cell_order", rep.cell_order}, {"sweeps", rep.sweeps},
                 {"order_optimal", rep.order_optimal}, {"order_lower_bound", rep.order_lower_bound},
                 {"metrics", {{"covered_fraction", m.covered_fraction}, {"overlap", m.overlap}, {"efficiency", m.efficiency},
@@ -623,6 +626,7 @@ void run_cover(const CoverArgs& a) {
             << rep.laps << " laps, " << rep.turns << " turns (" << rep.sharp_turns << " over 15 degrees), " << rep.cells << " cells, " << rep.critical_points << " critical points";
   if (rep.touch_ups > 0) std::cout << ", " << rep.touch_ups << " touch-ups";
   if (rep.turned_cells > 0) std::cout << "; " << rep.turned_cells << " of the decomposition's cells swept at " << geometry::format_number(std::fmod(rep.angle + 90, 360)) << " degrees (fewer laps)";
+  if (rep.merged_cells > 0) std::cout << "; " << rep.merged_cells << " cells swept on with the cell before them (monotone union, fewer laps)";
   std::cout << "\n";
   if (rep.min_turn_radius > 0)
     std::cout << "drivable with turning radius " << geometry::format_number(rep.min_turn_radius) << ": " << rep.arcs.size()
@@ -702,7 +706,7 @@ void add_decompose_commands(CLI::App& app) {
     cmd->add_option("--radius", a->radius, "Robot radius r: the path keeps r from every obstacle (default: the scene's robot.radius, else 0)")
         ->check(number_in(0, geometry::kMaxCoordinate));
     cmd->add_option("--start", a->start, "Start X,Y (default: the scene's \"start\", else where the first sweep begins)");
-    cmd->add_option("--angle", a->angle, "Sweep direction in degrees, or 'auto': the best-scored directions, each cell turned to the perpendicular where that needs fewer laps, and the cheaper path (length and --turn-cost per turn)")->capture_default_str();
+    cmd->add_option("--angle", a->angle, "Sweep direction in degrees, or 'auto': the best-scored directions, each cell turned to the perpendicular where that needs fewer laps, and the cheaper path (length, --turn-cost per turn, twice over 15 degrees)")->capture_default_str();
     cmd->add_option("--order", a->order, "optimised (sweeps and order by a generalised TSP) or dfs (6.2.1's depth-first walk)")
         ->check(CLI::IsMember({"optimised", "dfs"}))->capture_default_str();
     cmd->add_option("--transit", a->transit, "shortest (visibility graph) or decomposition (trapezoid midpoints and centroids)")
@@ -717,6 +721,7 @@ void add_decompose_commands(CLI::App& app) {
         ->check(number_in(0, geometry::kMaxCoordinate));
     cmd->add_option("--turn-cost", a->turn_cost, "Metres of path a turn is worth: runs of small turns round corners become fewer corners where that adds at most this much per turn saved (0: shortest transits)")
         ->check(number_in(0, geometry::kMaxCoordinate))->capture_default_str();
+    cmd->add_flag("--no-merge", a->no_merge, "Sweep every boustrophedon cell on its own (by default adjacent cells whose union is monotone in the sweep direction are also tried as one region, and the cheaper path is kept)");
     cmd->add_flag("--online", a->online, "The robot does not know the map: it senses critical points with a range ring and builds the Reeb graph as it covers (6.2.4; --angle auto means 0)");
     cmd->add_option("--sensors", a->sensors, "--online: range sensors on the ring (a multiple of 4)")->capture_default_str();
     cmd->add_option("--range", a->range, "--online: the sensors' maximum range (default 10 r)");

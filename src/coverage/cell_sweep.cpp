@@ -46,7 +46,7 @@ Chain make_chain(const BoustrophedonDecomposition& b, const std::vector<ExactPoi
 
 struct Sweeper {
   const BoustrophedonDecomposition& b;
-  const BoustrophedonCell& cell;
+  const std::vector<std::uint32_t>& trapezoids;  // the region's, left to right
   std::vector<SweepPoint> out;
 
   void add(const Point& p, Move m, std::uint32_t vertex = CellChains::kNoVertex, std::uint32_t edge = CellChains::kNoVertex) {
@@ -57,12 +57,12 @@ struct Sweeper {
     if (f.at_point) add(c, f.k, m);
     else add(f.p, m, CellChains::kNoVertex, f.edge);
   }
-  // Trapezoid of the cell whose x-range holds x (x is not an event there).
+  // Trapezoid of the region whose x-range holds x (x is not an event there).
   std::uint32_t at(double x) const {
     const auto& T = b.trapezoids().cells();
-    for (auto t : cell.trapezoids)
+    for (auto t : trapezoids)
       if (T[t].x_left <= x && x <= T[t].x_right) return t;
-    return cell.trapezoids.back();
+    return trapezoids.back();
   }
   Foot foot(const Chain& c, double x, bool floor) const {
     auto it = std::upper_bound(c.pts.begin(), c.pts.end(), x, [](double v, const Point& p) { return v < p.x(); });
@@ -103,7 +103,7 @@ double chain_y(const Chain& c, double x) {
   return a.y() + (x - a.x()) / (b.x() - a.x()) * (b.y() - a.y());
 }
 
-std::vector<double> lap_positions(const Chain& floor, const Chain& ceiling, double w) {
+std::vector<double> lap_positions(const Chain& floor, const Chain& ceiling, double w, std::size_t* left_out = nullptr) {
   const double xl = floor.pts.front().x(), xr = floor.pts.back().x(), half = w / 2;
   std::vector<Point> samples;
   for (const Chain* c : {&floor, &ceiling})
@@ -136,6 +136,7 @@ std::vector<double> lap_positions(const Chain& floor, const Chain& ceiling, doub
   // order of the right end of their range, an uncovered sample gets a lap at that right end
   // (the greedy that stabs intervals with the fewest points).
   std::vector<std::pair<double, std::size_t>> by_right;
+  if (left_out) *left_out = 0;
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const Point& v = samples[i];
     const double hi = std::min(v.x() + half, last_x), lo = std::max(v.x() - half, first_x);
@@ -146,6 +147,7 @@ std::vector<double> lap_positions(const Chain& floor, const Chain& ceiling, doub
         break;
       }
     }  // a sample no lap covers (met by the slice only at an end of the cell) is left out
+    if (left_out && (by_right.empty() || by_right.back().second != i)) ++*left_out;
   }
   std::sort(by_right.begin(), by_right.end());
   // Left to right: the next lap goes at the earliest right end among the samples still
@@ -174,12 +176,12 @@ std::vector<double> lap_positions(const Chain& floor, const Chain& ceiling, doub
 
 }  // namespace
 
-std::vector<SweepPoint> sweep_cell(const BoustrophedonDecomposition& b, std::size_t index, double w, bool from_right,
-                                   bool first_down, std::size_t* laps) {
-  const CellChains ch = b.chains(index);
+std::vector<SweepPoint> sweep_cell(const BoustrophedonDecomposition& b, const std::vector<std::uint32_t>& trapezoids, double w,
+                                   bool from_right, bool first_down, std::size_t* laps) {
+  const CellChains ch = b.chains(trapezoids);
   const Chain floor = make_chain(b, ch.floor, ch.floor_vertex, ch.floor_edge, true);
   const Chain ceiling = make_chain(b, ch.ceiling, ch.ceiling_vertex, ch.ceiling_edge, false);
-  Sweeper s{b, b.cells()[index], {}};
+  Sweeper s{b, trapezoids, {}};
   std::vector<double> xs = lap_positions(floor, ceiling, w);
   if (from_right) std::reverse(xs.begin(), xs.end());
   bool up = !first_down;
@@ -201,6 +203,13 @@ std::vector<SweepPoint> sweep_cell(const BoustrophedonDecomposition& b, std::siz
   }
   if (laps) *laps = xs.size();
   return std::move(s.out);
+}
+
+std::vector<double> lap_positions(const BoustrophedonDecomposition& b, const std::vector<std::uint32_t>& trapezoids, double w,
+                                  std::size_t* left_out) {
+  const CellChains ch = b.chains(trapezoids);
+  return lap_positions(make_chain(b, ch.floor, ch.floor_vertex, ch.floor_edge, true),
+                       make_chain(b, ch.ceiling, ch.ceiling_vertex, ch.ceiling_edge, false), w, left_out);
 }
 
 double Polyline::length() const {

@@ -39,11 +39,19 @@ struct SweepPoint {
   Move move = Move::Transit;
 };
 
-/// Laps at spacing w across cell `cell`, from its left end (or right end when from_right),
-/// the first lap going up (or down when first_down), joined by boundary following along the
-/// floor or ceiling chain. Sweep-frame coordinates.
-std::vector<SweepPoint> sweep_cell(const BoustrophedonDecomposition& b, std::size_t cell, double w, bool from_right,
-                                   bool first_down, std::size_t* laps);
+/// Laps at spacing w across a region of b: the trapezoids of a cell, or of cells merged
+/// into one x-monotone region (cell_merging.hpp), left to right. From its left end (or
+/// right end when from_right), the first lap going up (or down when first_down), joined by
+/// boundary following along the floor or ceiling chain. Sweep-frame coordinates.
+std::vector<SweepPoint> sweep_cell(const BoustrophedonDecomposition& b, const std::vector<std::uint32_t>& trapezoids, double w,
+                                   bool from_right, bool first_down, std::size_t* laps);
+
+/// The abscissae of the laps sweep_cell puts across that region (sweep frame); left_out:
+/// how many of the boundary samples they are placed to cover no lap within the region's
+/// ends can reach (a cell's side met only at its end; in a merged region, a step of the
+/// boundary next to an end).
+std::vector<double> lap_positions(const BoustrophedonDecomposition& b, const std::vector<std::uint32_t>& trapezoids, double w,
+                                  std::size_t* left_out = nullptr);
 
 /// A polyline in the input frame with the move of each segment.
 struct Polyline {

@@ -131,15 +131,17 @@ void BoustrophedonDecomposition::vertices_on_line(double c, const ExactFT& lo, c
   if (hi < lo) std::reverse(out.begin() + static_cast<std::ptrdiff_t>(first), out.end());
 }
 
-CellChains BoustrophedonDecomposition::chains(std::size_t c) const {
+CellChains BoustrophedonDecomposition::chains(std::size_t c) const { return chains(cells_[c].trapezoids); }
+
+CellChains BoustrophedonDecomposition::chains(const std::vector<std::uint32_t>& ts) const {
   const auto& T = trap_->cells();
-  const auto& ts = cells_[c].trapezoids;
   const Environment& E = *rotated_;
   CellChains out;
   std::vector<std::uint32_t> between;
   // One chain: the floor (or ceiling) edge of each trapezoid from its left side to its
   // right side; where two trapezoids meet on a line x = c and their floors do not, the
-  // boundary runs along that line (it is a wall: free on one side only), through every
+  // boundary runs along that line (inside a cell it is a wall, free on one side only;
+  // between merged cells also the side of a cell the union leaves out), through every
   // environment vertex on it.
   auto build = [&](bool floor, std::vector<ExactPoint>& pts, std::vector<std::uint32_t>& ids, std::vector<std::uint32_t>& edges) {
     auto push = [&](const ExactPoint& p, std::uint32_t id, std::uint32_t edge) {

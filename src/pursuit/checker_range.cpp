@@ -16,7 +16,9 @@
 
 namespace preimage::pursuit {
 
+using geometry::ExactFT;
 using geometry::ExactKernel;
+using geometry::Point;
 
 std::vector<Point> range_sensor(double range, std::size_t sides) {
   if (!(range > 0) || !std::isfinite(range)) throw InputError("range: must be a finite number > 0, not " + geometry::format_number(range));

@@ -371,6 +371,7 @@ PYBIND11_MODULE(preimage, m) {
     d["turns"] = rep.turns;
     d["turns_over_15_deg"] = rep.sharp_turns;
     d["turned_cells"] = rep.turned_cells;
+    d["merged_cells"] = rep.merged_cells;
     d["rotation_deg"] = rep.rotation_deg;
     d["touch_ups"] = rep.touch_ups;
     d["arcs"] = rep.arcs.size();

@@ -48,6 +48,7 @@ def test_cover_matches_cli():
     assert r["length"] == pytest.approx(c["length"], rel=1e-12)
     assert r["moves"] == c["moves"]
     assert r["covered_fraction"] == pytest.approx(c["metrics"]["covered_fraction"])
+    assert (r["merged_cells"], r["turned_cells"]) == (c["merged_cells"], c["turned_cells"])
 
 
 def test_cover_with_a_turning_radius_matches_cli():

@@ -66,6 +66,10 @@ struct CoverageOptions {
   // chords of an arc) becomes fewer corners where that adds at most this much path per
   // turn saved. 0: transits stay shortest paths, follow moves hug the boundary.
   double turn_cost = 0.1;
+  // Boustrophedon with the order optimised, for a robot that turns in place: also plan
+  // each direction with adjacent cells merged into monotone regions where that saves laps
+  // (cell_merging.hpp), and keep the cheaper path.
+  bool merge_cells = true;
 };
 
 /// What a path segment is doing (for figures and metrics); Turn: a chord of an arc a
@@ -112,13 +116,18 @@ struct CoverageReport {
   // (decomposed again on their own there), because that needs fewer laps; `cells` counts
   // the cells swept.
   std::size_t turned_cells = 0;
+  // With the order optimised: cells swept as one region with the cell before them, because
+  // their union is still monotone in the sweep direction and needs fewer laps; `cells`
+  // counts the regions swept.
+  std::size_t merged_cells = 0;
   // Heading changes over 1 degree, and over 15 degrees; a curvature-limited path changes
   // heading only along arcs, so there each arc (a run turning one way) is one turn.
   std::size_t turns = 0, sharp_turns = 0;
   double length = 0, transit_length = 0, rotation_deg = 0;  // rotation: sum of heading changes
-  // Cells in the order covered: the decomposition's, numbered in its order; with turned
-  // cells (turned_cells), the turned cells' own cells come first, then the decomposition's
-  // other cells.
+  // Regions in the order covered: the decomposition's cells, numbered in its order; with
+  // turned cells (turned_cells), the turned cells' own cells come first, then the
+  // decomposition's other cells; with merged cells (merged_cells), a region of several
+  // cells is numbered where its first cell would be.
   std::vector<std::uint32_t> cell_order;
   std::vector<std::uint8_t> sweeps;       // per covered cell: 0..3 (bit 0: from the right end, bit 1: first lap down)
   bool order_optimal = false;             // exact GTSP solution (small instances)
@@ -135,6 +144,11 @@ struct CoverageReport {
 /// 0 when the radius is positive), a start the robot does not fit at, or a robot that fits
 /// nowhere. Throws std::logic_error if a segment fails certification (a bug).
 CoverageReport plan_coverage(const Environment& env, const CoverageOptions& options);
+
+/// What boustrophedon's candidate paths (directions, cells turned or merged) are compared
+/// by: the length, plus `turn_cost` per turn over 1 degree and once more per turn over 15
+/// degrees, where a robot that turns in place stops.
+double path_cost(const CoverageReport& report, double turn_cost);
 
 /// Rasterised quality of a coverage path (floating point: a measurement, not a decision):
 /// the target is the configuration space component the path runs in, sampled on a square

@@ -62,6 +62,11 @@ class BoustrophedonDecomposition {
 
   /// Floor and ceiling chains of a cell (sweep coordinates, exact).
   CellChains chains(std::size_t cell) const;
+  /// The same for a run of trapezoids left to right, each meeting the next across an event
+  /// line on a common piece of it: a cell, or cells merged across critical slices where
+  /// the union stays x-monotone. Where two floors (or ceilings) do not meet on the line,
+  /// the chain runs along it through every environment vertex between them.
+  CellChains chains(const std::vector<std::uint32_t>& trapezoids) const;
   /// Cell outline, counter-clockwise, exact, in sweep coordinates: the floor chain, the
   /// right side, the ceiling chain backwards, the left side; every environment vertex on the
   /// cell's boundary is a vertex of it (points inside edges appear only at the corners).
