@@ -112,7 +112,8 @@ TEST(SweepOrder, LocalSearchIsCloseToTheOptimumAndItsBoundIsBelowIt) {
     EXPECT_LE(heur.cost, 1.35 * opt.cost) << "trial " << trial;
     ratio_sum += heur.cost / opt.cost, ++trials;
   }
-  EXPECT_LE(ratio_sum / trials, 1.05) << "the local search averages far from the optimum";
+  // 1.016 before the double bridges (iterated local search), 1.0002 with them.
+  EXPECT_LE(ratio_sum / trials, 1.005) << "the local search averages far from the optimum";
 }
 
 TEST(SweepOrder, LargeInstancesGiveAValidWalkBetterThanTheInputOrder) {

@@ -9,7 +9,8 @@
 // kExactClusters cells. Beyond: a nearest-neighbour start improved by Or-opt and bounded
 // 2-opt moves on candidate lists (the nearest cells), each move re-choosing the sweeps of the
 // cells it touches, all sweeps re-chosen for the order (a layered shortest path) when no
-// move is left. Transit costs are settled lazily: the search runs on straight-line
+// move is left; then iterated: a few dozen double bridges, each followed by the local
+// search, the walk kept when it gets cheaper. Transit costs are settled lazily: the search runs on straight-line
 // estimates (lower bounds) and true costs of the pairs its answer uses, for a few rounds;
 // the cost returned is always the true cost of the walk. The lower bound reported counts
 // every cell's cheapest sweep and every transit at its cheapest straight line.
