@@ -69,9 +69,9 @@ std::vector<SweepRegion> merge_monotone_cells(const decompose::BoustrophedonDeco
   };
   for (const auto& [neg, l, r, pair_laps, pair_out] : ranked) {
     if (next[l] != kNone || prev[r] != kNone) continue;
-    std::vector<std::uint32_t> left = chain_through(l), right = chain_through(r);
-    std::vector<std::uint32_t> both = left;
-    both.insert(both.end(), right.begin(), right.end());
+    std::vector<std::uint32_t> both = chain_through(l);
+    const std::vector<std::uint32_t> after = chain_through(r);
+    both.insert(both.end(), after.begin(), after.end());
     std::size_t out = pair_out, merged = pair_laps;  // two cells: counted above
     if (both.size() > 2) merged = lap_positions(b, run(both), w, &out).size();
     if (merged + 1 > region_laps[head(l)] + region_laps[head(r)] || out > region_left[head(l)] + region_left[head(r)]) continue;

@@ -519,8 +519,8 @@ SweepOrder order_sweeps(const std::vector<std::vector<Sweep>>& cells, const std:
     settle_tour(C, t);
   };
   improve();
-  // Iterated local search: Or-opt and 2-opt stop in a local optimum. A double bridge (three
-  // consecutive stretches B C D of the order become C B D) is a move neither undoes; after
+  // Iterated local search: Or-opt and 2-opt stop in a local optimum. A double bridge (the
+  // order A B C D becomes A C B D, B and C short) is a move neither undoes; after
   // each, the local search runs again where the order was cut, and the walk is kept when
   // its true cost (every cost it uses settled) drops. kKicks of them, from a generator
   // seeded by N, so the answer is reproducible. Up to kMaxKickCells cells (floor plans
