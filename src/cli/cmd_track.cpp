@@ -352,17 +352,15 @@ void run_evaluate(const std::vector<std::string>& files, const EvaluationParams&
   std::cout << "(" << ep.seeds << " seeds per cell, " << ep.steps / 10.0 << " s each; a run never lost counts "
             << ep.steps / 10.0 << " s; starts spread " << ep.start_spread << " m and " << ep.heading_spread * 180 / M_PI
             << " deg; dynamics: accel " << ep.accel << " m/s^2, alpha " << ep.alpha << " rad/s^2";
-  const auto dyn = std::find_if(cells.begin(), cells.end(), [](const CellResult& c) { return c.observer_dynamics; });
   if (game) {
     std::cout << "; winnable: the start, snapped to the visibility game's " << ep.game_resolution
               << " m grid, is kept forever in the game at speed ratio " << ep.speed_ratio;
+    const auto dyn = std::find_if(cells.begin(), cells.end(), [](const CellResult& c) { return c.observer_dynamics; });
     if (dyn != cells.end())
       std::cout << "; with dynamics, in the game with the observer's velocity in the state (constant acceleration "
                 << ep.accel << " m/s^2 per axis, at rest at the start) on a " << dyn->game_resolution << " m grid";
-    std::cout << ")\n";
   }
-  else
-    std::cout << ")\n";
+  std::cout << ")\n";
 }
 
 struct GameOptions {

@@ -56,17 +56,16 @@ std::vector<SweepRegion> merge_monotone_cells(const decompose::BoustrophedonDeco
   }
   std::sort(ranked.begin(), ranked.end());
   std::vector<std::uint32_t> next(n, kNone), prev(n, kNone);
-  auto chain_through = [&](std::uint32_t c) {
-    while (prev[c] != kNone) c = prev[c];
-    std::vector<std::uint32_t> chain;
-    for (; c != kNone; c = next[c]) chain.push_back(c);
-    return chain;
-  };
-  std::vector<std::size_t> region_laps = laps, region_left = left;  // of the region a cell heads
   auto head = [&](std::uint32_t c) {
     while (prev[c] != kNone) c = prev[c];
     return c;
   };
+  auto chain_through = [&](std::uint32_t c) {
+    std::vector<std::uint32_t> chain;
+    for (c = head(c); c != kNone; c = next[c]) chain.push_back(c);
+    return chain;
+  };
+  std::vector<std::size_t> region_laps = laps, region_left = left;  // of the region a cell heads
   for (const auto& [neg, l, r, pair_laps, pair_out] : ranked) {
     if (next[l] != kNone || prev[r] != kNone) continue;
     std::vector<std::uint32_t> both = chain_through(l);

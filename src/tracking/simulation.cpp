@@ -242,9 +242,9 @@ class World {
     return target_step(t, d <= step ? goal : offset(t, (vec(goal) - vec(t)) * (step / d)));
   }
 
-  // The world-frame velocity a pose and an executed command give after one period.
-  Vec2 world_velocity_after(const Observer& o, const Command& u) const {
-    const double th = o.pose.heading + u.omega * sp_.dt, c = std::cos(th), s = std::sin(th);
+  // The world-frame velocity of a command (forward v, sideways lateral) at a heading.
+  static Vec2 world_velocity(double heading, const Command& u) {
+    const double c = std::cos(heading), s = std::sin(heading);
     return Vec2{c * u.v - s * u.lateral, s * u.v + c * u.lateral};
   }
   // The acceleration is a vector: a robot at speed v turning at omega accelerates by
@@ -255,9 +255,8 @@ class World {
   // period's command turns too fast (the speed grew), the turn rate is eased towards 0.
   void bound_acceleration(const Observer& o, Command& u) const {
     const double limit = sp_.accel * sp_.dt;
-    const double c0 = std::cos(o.pose.heading), s0 = std::sin(o.pose.heading);
-    const Vec2 w0{c0 * o.velocity.v - s0 * o.velocity.lateral, s0 * o.velocity.v + c0 * o.velocity.lateral};
-    auto within = [&](const Command& c) { return (world_velocity_after(o, c) - w0).norm() <= limit; };
+    const Vec2 w0 = world_velocity(o.pose.heading, o.velocity);  // now; after one period at the new heading:
+    auto within = [&](const Command& c) { return (world_velocity(o.pose.heading + c.omega * sp_.dt, c) - w0).norm() <= limit; };
     if (within(u)) return;
     const Command from = o.velocity;
     auto blend = [&](double k) {
